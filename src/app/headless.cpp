@@ -1,0 +1,63 @@
+#include "app/headless.h"
+
+#include <cstdio>
+#include <memory>
+
+#include "app/frame_writer.h"
+#include "app/progress.h"
+#include "base/log.h"
+#include "io/video.h"
+#include "scene/scene.h"
+
+namespace tidepool {
+
+int renderHeadless(const RenderJob& job) {
+  const Scene scene = loadScene(resolveScenePath(job.scene));
+  const int frames = job.frames.value_or(scene.clip.frames);
+  const int width = job.width.value_or(scene.clip.width);
+  const int height = job.height.value_or(scene.clip.height);
+  if (frames <= 0) throw Error("--frames must be at least 1");
+  if (job.outDir.empty() && job.video.empty()) throw Error("nothing to write: give --out DIR and/or --video FILE");
+
+  std::unique_ptr<io::VideoWriter> video;
+  if (!job.video.empty()) video = std::make_unique<io::VideoWriter>(job.video, width, height, scene.clip.fps);
+  if (!job.outDir.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(job.outDir, ec);
+    if (ec) throw Error("cannot create output folder '" + job.outDir.string() + "': " + ec.message());
+  }
+
+  auto context = gl::createHeadlessContext({job.backend, job.debugGl});
+  gl::ShaderLibrary shaders(gl::ShaderLibrary::findRoot());
+  auto stage = createStage(scene, shaders);
+  RenderTarget target(width, height);
+  gl::GpuProfiler profiler;
+  FrameWriter writer;
+  Progress progress("rendering " + scene.name, frames, job.progress);
+
+  for (int i = 0; i < frames; ++i) {
+    // Frame i shows the state after i steps: frame 0 is the initial state.
+    profiler.beginFrame();
+    if (i > 0) stage->step(1.0 / scene.clip.fps, profiler);
+    stage->render(target, profiler);
+    profiler.endFrame();
+    std::vector<std::uint8_t> pixels = target.readRgba8();
+    if (video) video->write(pixels);
+    if (!job.outDir.empty()) {
+      char name[32];
+      std::snprintf(name, sizeof name, "frame_%05d.png", i);
+      writer.write(job.outDir / name, io::Image{width, height, std::move(pixels)});
+    }
+    progress.update(i + 1);
+  }
+  writer.finish();
+  if (video) video->close();
+  progress.finish();
+  if (!job.outDir.empty())
+    log::info("wrote " + std::to_string(frames) + " frames (" + std::to_string(width) + "x" + std::to_string(height) +
+              ") to " + std::filesystem::absolute(job.outDir).string() + "/frame_*.png");
+  if (video) log::info("wrote video " + std::filesystem::absolute(job.video).string());
+  return frames;
+}
+
+}  // namespace tidepool

@@ -1,0 +1,26 @@
+// Headless rendering of a scene: a clip of PNG frames and/or a video, with a progress bar.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "gl/context.h"
+
+namespace tidepool {
+
+struct RenderJob {
+  std::string scene;                       // path or bare name (assets/scenes/<name>.json)
+  std::optional<int> frames;               // default: the scene's clip.frames
+  std::optional<int> width, height;        // default: the scene's clip size
+  std::filesystem::path outDir;            // PNG frames (frame_00000.png ...); empty: none
+  std::filesystem::path video;             // .mp4 through ffmpeg; empty: none
+  gl::Backend backend = gl::Backend::Auto;
+  bool debugGl = false;
+  bool progress = true;
+};
+
+// Returns the number of frames written. Throws Error.
+int renderHeadless(const RenderJob& job);
+
+}  // namespace tidepool

@@ -1,0 +1,59 @@
+#include "app/param_editor.h"
+
+#include <imgui.h>
+
+namespace tidepool {
+
+void ParamEditor::tooltip(const ParamInfo& info) {
+  if (info.help && *info.help && ImGui::IsItemHovered()) ImGui::SetTooltip("%s  (%s)", info.help, info.key);
+}
+
+void ParamEditor::real(const ParamInfo& info, float& value, float min, float max) {
+  // Wide positive ranges (time steps, stiffnesses) are easier to tune on a log scale.
+  const ImGuiSliderFlags flags = (min > 0 && max / min > 1000.0f ? ImGuiSliderFlags_Logarithmic : 0) |
+                                 ImGuiSliderFlags_AlwaysClamp;
+  m_changed |= ImGui::SliderFloat(info.label, &value, min, max, "%.4g", flags);
+  tooltip(info);
+}
+
+void ParamEditor::integer(const ParamInfo& info, int& value, int min, int max) {
+  const ImGuiSliderFlags flags = (min > 0 && max / min > 1000 ? ImGuiSliderFlags_Logarithmic : 0) |
+                                 ImGuiSliderFlags_AlwaysClamp;
+  m_changed |= ImGui::SliderInt(info.label, &value, min, max, "%d", flags);
+  tooltip(info);
+}
+
+void ParamEditor::flag(const ParamInfo& info, bool& value) {
+  m_changed |= ImGui::Checkbox(info.label, &value);
+  tooltip(info);
+}
+
+void ParamEditor::text(const ParamInfo& info, std::string& value) {
+  ImGui::LabelText(info.label, "%s", value.c_str());
+  tooltip(info);
+}
+
+void ParamEditor::color(const ParamInfo& info, glm::vec3& value) {
+  m_changed |= ImGui::ColorEdit3(info.label, &value.x, ImGuiColorEditFlags_Float);
+  tooltip(info);
+}
+
+void ParamEditor::vector(const ParamInfo& info, glm::vec3& value, float min, float max) {
+  m_changed |= ImGui::DragFloat3(info.label, &value.x, (max - min) * 0.001f, min, max, "%.3f", ImGuiSliderFlags_AlwaysClamp);
+  tooltip(info);
+}
+
+void ParamEditor::choiceIndex(const ParamInfo& info, int& index, std::span<const char* const> names) {
+  m_changed |= ImGui::Combo(info.label, &index, names.data(), int(names.size()));
+  tooltip(info);
+}
+
+bool ParamEditor::beginGroup(const ParamInfo& info) {
+  const bool open = ImGui::TreeNodeEx(info.key, ImGuiTreeNodeFlags_DefaultOpen, "%s", info.label);
+  tooltip(info);
+  return open;
+}
+
+void ParamEditor::endGroup() { ImGui::TreePop(); }
+
+}  // namespace tidepool

@@ -1,0 +1,71 @@
+#include "app/ui_panels.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+
+#include "app/param_editor.h"
+
+namespace tidepool {
+namespace {
+
+void timingTable(const gl::GpuProfiler& profiler) {
+  const ImGuiIO& io = ImGui::GetIO();
+  ImGui::Text("%.1f FPS  (%.2f ms/frame CPU+GPU)", io.Framerate, 1000.0f / std::max(io.Framerate, 1e-3f));
+  if (ImGui::BeginTable("gpu", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
+    ImGui::TableSetupColumn("GPU pass");
+    ImGui::TableSetupColumn("ms");
+    ImGui::TableHeadersRow();
+    for (const auto& pass : profiler.passes()) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(pass.name.c_str());
+      ImGui::TableNextColumn();
+      ImGui::Text("%.3f", pass.smoothedMs);
+    }
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted("total");
+    ImGui::TableNextColumn();
+    ImGui::Text("%.3f", profiler.totalSmoothedMs());
+    ImGui::EndTable();
+  }
+}
+
+}  // namespace
+
+bool drawMainPanel(const Scene& scene, Stage& stage, const gl::GpuProfiler& profiler, UiState& ui) {
+  ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSizeConstraints(ImVec2(340, 0), ImVec2(520, 10000));
+  ImGui::Begin("tidepool", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  ImGui::Text("%s  [%s]", scene.name.c_str(), scene.model.c_str());
+  if (const std::string s = stage.status(); !s.empty()) ImGui::TextDisabled("%s", s.c_str());
+  ImGui::Text("simulated time %.3f s", stage.simTime());
+  timingTable(profiler);
+
+  ImGui::Checkbox("Pause (Space)", &ui.paused);
+  ImGui::SameLine();
+  if (ImGui::Button("Step (.)")) ui.stepOnce = true;
+  ImGui::SameLine();
+  if (ImGui::Button("Reset (R)")) ui.resetRequested = true;
+  if (ImGui::Button("Reload shaders (F5)")) ui.reloadRequested = true;
+  ImGui::SameLine();
+  if (ImGui::Button("Screenshot (F12)")) ui.screenshotRequested = true;
+  if (!ui.message.empty()) {
+    const ImVec4 colour = ui.messageIsError ? ImVec4(1.0f, 0.45f, 0.4f, 1.0f) : ImVec4(0.6f, 0.9f, 0.6f, 1.0f);
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextColored(colour, "%s", ui.message.c_str());
+    ImGui::PopTextWrapPos();
+  }
+
+  bool changed = false;
+  if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) {
+    ParamEditor editor;
+    stage.visitParams(editor);
+    changed = editor.changed();
+  }
+  ImGui::End();
+  return changed;
+}
+
+}  // namespace tidepool

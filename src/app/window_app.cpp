@@ -1,0 +1,173 @@
+#include "app/window_app.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+
+#include <chrono>
+#include <ctime>
+
+#include "app/ui_panels.h"
+#include "base/log.h"
+#include "gl/context_window.h"
+#include "io/png.h"
+
+namespace tidepool {
+namespace {
+
+// Key presses as edges (held keys do not repeat), ignored while ImGui has the keyboard.
+class Keys {
+ public:
+  explicit Keys(GLFWwindow* w) : m_window(w) {}
+  bool pressed(int key) {
+    const bool down = glfwGetKey(m_window, key) == GLFW_PRESS && !ImGui::GetIO().WantCaptureKeyboard;
+    const bool edge = down && !m_down[key];
+    m_down[key] = down;
+    return edge;
+  }
+
+ private:
+  GLFWwindow* m_window;
+  bool m_down[GLFW_KEY_LAST + 1] = {};
+};
+
+io::Image readWindow(int width, int height) {
+  io::Image img{width, height, std::vector<std::uint8_t>(std::size_t(width) * height * 4)};
+  std::vector<std::uint8_t> bottomUp(img.rgba.size());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  glReadBuffer(GL_BACK);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, bottomUp.data());
+  const std::size_t row = std::size_t(width) * 4;
+  for (int y = 0; y < height; ++y)
+    std::copy_n(&bottomUp[row * (height - 1 - y)], row, &img.rgba[row * y]);
+  for (std::size_t i = 3; i < img.rgba.size(); i += 4) img.rgba[i] = 255;  // the window is opaque
+  return img;
+}
+
+std::string timestampedName() {
+  const std::time_t t = std::time(nullptr);
+  char buf[64];
+  std::strftime(buf, sizeof buf, "screenshot_%Y%m%d_%H%M%S.png", std::localtime(&t));
+  return buf;
+}
+
+Input readInput(GLFWwindow* window, glm::vec2& lastCursor, float& scroll) {
+  Input in;
+  double x = 0, y = 0;
+  glfwGetCursorPos(window, &x, &y);
+  in.cursor = {float(x), float(y)};
+  in.cursorDelta = in.cursor - lastCursor;
+  lastCursor = in.cursor;
+  glfwGetFramebufferSize(window, &in.viewport.x, &in.viewport.y);
+  const bool free = !ImGui::GetIO().WantCaptureMouse;
+  in.left = free && glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+  in.right = free && glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
+  in.middle = free && glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS;
+  in.scroll = free ? std::exchange(scroll, 0.0f) : 0.0f;
+  return in;
+}
+
+float g_scroll = 0.0f;  // accumulated by the GLFW callback between frames
+
+}  // namespace
+
+int runWindow(const WindowJob& job) {
+  const Scene scene = loadScene(resolveScenePath(job.scene));
+  gl::WindowContext context({job.width, job.height, "tidepool - " + scene.name, job.debugGl, job.vsync, true});
+  GLFWwindow* window = context.window();
+  gl::ShaderLibrary shaders(gl::ShaderLibrary::findRoot());
+  auto stage = createStage(scene, shaders);
+
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini next to the user's files
+  ImGui::StyleColorsDark();
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplOpenGL3_Init("#version 430 core");
+  glfwSetScrollCallback(window, [](GLFWwindow* w, double dx, double dy) {
+    ImGui_ImplGlfw_ScrollCallback(w, dx, dy);
+    g_scroll += float(dy);
+  });
+
+  int fbw = 0, fbh = 0;
+  context.framebufferSize(fbw, fbh);
+  RenderTarget target(std::max(fbw, 1), std::max(fbh, 1));
+  gl::GpuProfiler profiler;
+  UiState ui;
+  Keys keys(window);
+  glm::vec2 lastCursor{0.0f};
+  constexpr double kFrameSeconds = 1.0 / 60.0;  // simulated time per displayed frame
+
+  for (int frame = 0; !context.shouldClose(); ++frame) {
+    glfwPollEvents();
+    if (keys.pressed(GLFW_KEY_ESCAPE)) glfwSetWindowShouldClose(window, GLFW_TRUE);
+    if (keys.pressed(GLFW_KEY_SPACE)) ui.paused = !ui.paused;
+    if (keys.pressed(GLFW_KEY_PERIOD)) ui.stepOnce = true;
+    if (keys.pressed(GLFW_KEY_R)) ui.resetRequested = true;
+    if (keys.pressed(GLFW_KEY_F5)) ui.reloadRequested = true;
+    if (keys.pressed(GLFW_KEY_F12)) ui.screenshotRequested = true;
+    if (keys.pressed(GLFW_KEY_H)) ui.showUi = !ui.showUi;
+
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    if (ui.showUi) drawMainPanel(scene, *stage, profiler, ui);
+
+    if (ui.reloadRequested) {
+      ui.reloadRequested = false;
+      const auto result = shaders.reload();
+      ui.messageIsError = !result.errors.empty();
+      ui.message = result.errors.empty() ? "reloaded " + std::to_string(result.reloaded) + " programs"
+                                         : result.errors.front() + "\n(kept the previous program)";
+      for (const std::string& e : result.errors) log::error(e);
+    }
+    if (ui.resetRequested) {
+      ui.resetRequested = false;
+      stage->reset();
+    }
+    stage->input(readInput(window, lastCursor, g_scroll));
+
+    context.framebufferSize(fbw, fbh);
+    if (fbw > 0 && fbh > 0) target.resize(fbw, fbh);
+    profiler.beginFrame();
+    if (!ui.paused || std::exchange(ui.stepOnce, false)) stage->step(kFrameSeconds, profiler);
+    stage->render(target, profiler);
+    profiler.endFrame();
+
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, target.framebuffer().id());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    glBlitFramebuffer(0, 0, target.width(), target.height(), 0, 0, fbw, fbh, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, fbw, fbh);
+    ImGui::Render();
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+
+    const bool last = job.maxFrames && frame + 1 >= *job.maxFrames;
+    if (ui.screenshotRequested || (last && !job.screenshot.empty())) {
+      ui.screenshotRequested = false;
+      const std::filesystem::path path = last && !job.screenshot.empty() ? job.screenshot : std::filesystem::path(timestampedName());
+      try {
+        io::writePng(path, readWindow(fbw, fbh));
+        ui.message = "saved " + path.string();
+        ui.messageIsError = false;
+        log::info(ui.message);
+      } catch (const Error& e) {
+        ui.message = e.what();
+        ui.messageIsError = true;
+        if (last) throw;
+      }
+    }
+    context.swapBuffers();
+    if (last) break;
+  }
+
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+  return 0;
+}
+
+}  // namespace tidepool

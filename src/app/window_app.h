@@ -1,0 +1,22 @@
+// The interactive window: GLFW + Dear ImGui, live parameter tuning, per-pass GPU times.
+// Keys: Space pause, . single step, R reset, F5 reload shaders, F12 screenshot, H hide UI, Esc quit.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+namespace tidepool {
+
+struct WindowJob {
+  std::string scene;                    // path or bare name
+  int width = 1280, height = 720;
+  std::optional<int> maxFrames;         // close after this many frames (scripts, tests)
+  std::filesystem::path screenshot;     // written after the last frame when set
+  bool debugGl = false;
+  bool vsync = true;
+};
+
+int runWindow(const WindowJob& job);  // exit code; throws Error
+
+}  // namespace tidepool

@@ -1,0 +1,127 @@
+#include "cli/commands.h"
+
+#include <regex>
+
+#include "app/headless.h"
+#include "app/window_app.h"
+#include "base/log.h"
+#include "gl/context.h"
+#include "gl/context_window.h"
+#include "gl/info.h"
+#include "gl/selftest.h"
+#include "scene/scene.h"
+
+namespace tidepool::cli {
+namespace {
+
+const std::vector<std::string> kBackends = {"auto", "egl", "osmesa", "window"};
+
+#ifdef NDEBUG
+constexpr bool kDebugBuild = false;
+#else
+constexpr bool kDebugBuild = true;
+#endif
+
+}  // namespace
+
+void parseSize(const std::string& text, int& width, int& height) {
+  static const std::regex size(R"((\d{1,5})x(\d{1,5}))");
+  std::smatch m;
+  if (!std::regex_match(text, m, size) || std::stoi(m[1]) == 0 || std::stoi(m[2]) == 0)
+    throw Error("--size '" + text + "' is not WIDTHxHEIGHT (e.g. 1280x720)");
+  width = std::stoi(m[1]);
+  height = std::stoi(m[2]);
+}
+
+Command addInfo(CLI::App& app) {
+  auto* sub = app.add_subcommand("info", "GL vendor, renderer, version and compute limits");
+  auto backend = std::make_shared<std::string>("auto");
+  sub->add_option("--backend", *backend, "headless context: auto (EGL, then OSMesa), egl or osmesa")
+      ->check(CLI::IsMember({"auto", "egl", "osmesa"}));
+  return {sub, [backend] {
+            auto context = gl::createHeadlessContext({gl::parseBackend(*backend), false});
+            std::printf("backend                   %s\n%s", context->description().c_str(),
+                        gl::formatInfo(gl::queryInfo()).c_str());
+            gl::ShaderLibrary shaders(gl::ShaderLibrary::findRoot());
+            const std::string failure = gl::computeSelfTest(shaders);
+            std::printf("compute self-test         %s\n", failure.empty() ? "ok" : ("FAILED: " + failure).c_str());
+            return failure.empty() ? 0 : 1;
+          }};
+}
+
+Command addRender(CLI::App& app) {
+  auto* sub = app.add_subcommand("render", "render a scene headless to PNG frames and/or a video");
+  struct Opts {
+    RenderJob job;
+    int frames = 0;
+    std::string size, backend = "auto";
+    bool quiet = false;
+  };
+  auto o = std::make_shared<Opts>();
+  sub->add_option("scene", o->job.scene, "scene file, or a name from assets/scenes (e.g. blank)")->required();
+  sub->add_option("--frames", o->frames, "number of frames (default: the scene's clip.frames)")->check(CLI::Range(1, 1000000));
+  sub->add_option("--size", o->size, "image size WIDTHxHEIGHT (default: the scene's clip size)");
+  sub->add_option("--out", o->job.outDir, "folder for frame_00000.png ...");
+  sub->add_option("--video", o->job.video, "video file written through ffmpeg (e.g. clip.mp4)");
+  sub->add_option("--backend", o->backend, "auto, egl or osmesa")->check(CLI::IsMember({"auto", "egl", "osmesa"}));
+  sub->add_flag("--debug-gl", o->job.debugGl, "log KHR_debug driver messages");
+  sub->add_flag("--quiet", o->quiet, "no progress bar");
+  return {sub, [o] {
+            RenderJob job = o->job;
+            if (o->frames > 0) job.frames = o->frames;
+            if (!o->size.empty()) {
+              int w = 0, h = 0;
+              parseSize(o->size, w, h);
+              job.width = w;
+              job.height = h;
+            }
+            job.backend = gl::parseBackend(o->backend);
+            job.debugGl |= kDebugBuild;
+            job.progress = !o->quiet;
+            renderHeadless(job);
+            return 0;
+          }};
+}
+
+Command addRun(CLI::App& app) {
+  auto* sub = app.add_subcommand("run", "open a scene in a window (headless clip when there is no display)");
+  struct Opts {
+    std::string scene = "default", size = "1280x720", backend = "auto", screenshot, out = "out";
+    int frames = 0;
+    bool noVsync = false, debugGl = false;
+  };
+  auto o = std::make_shared<Opts>();
+  sub->add_option("scene", o->scene, "scene file, or a name from assets/scenes (default: default)");
+  sub->add_option("--size", o->size, "window size WIDTHxHEIGHT");
+  sub->add_option("--frames", o->frames, "close after N frames (0: run until closed)")->check(CLI::Range(0, 100000000));
+  sub->add_option("--screenshot", o->screenshot, "save the window to this PNG after the last frame");
+  sub->add_option("--backend", o->backend, "auto (window if there is a display), window, egl or osmesa")
+      ->check(CLI::IsMember(kBackends));
+  sub->add_option("--out", o->out, "folder for the headless clip when there is no display");
+  sub->add_flag("--no-vsync", o->noVsync, "render as fast as possible");
+  sub->add_flag("--debug-gl", o->debugGl, "log KHR_debug driver messages");
+  return {sub, [o] {
+            int w = 0, h = 0;
+            parseSize(o->size, w, h);
+            const gl::Backend backend = gl::parseBackend(o->backend);
+            const bool window = backend == gl::Backend::Window || (backend == gl::Backend::Auto && gl::displayAvailable());
+            if (window) {
+              WindowJob job{o->scene, w, h, std::nullopt, o->screenshot, o->debugGl || kDebugBuild, !o->noVsync};
+              if (o->frames > 0) job.maxFrames = o->frames;
+              return runWindow(job);
+            }
+            // No display: render the scene's default clip headless and say where it went.
+            RenderJob job;
+            job.scene = o->scene;
+            const Scene scene = loadScene(resolveScenePath(o->scene));
+            job.outDir = std::filesystem::path(o->out) / std::filesystem::path(scene.file).stem();
+            if (o->frames > 0) job.frames = o->frames;
+            job.backend = backend;
+            job.debugGl = o->debugGl || kDebugBuild;
+            log::info("no display: rendering '" + scene.name + "' headless");
+            renderHeadless(job);
+            return 0;
+          }};
+}
+
+}  // namespace tidepool::cli

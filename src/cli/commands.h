@@ -1,0 +1,21 @@
+// Subcommands of the tidepool executable, each registered on the CLI11 app by one function.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <functional>
+
+namespace tidepool::cli {
+
+// Each adds its subcommand; the action runs after parsing when that subcommand was chosen.
+struct Command {
+  CLI::App* sub;
+  std::function<int()> action;  // returns the exit code; throws tidepool::Error
+};
+Command addInfo(CLI::App& app);
+Command addRender(CLI::App& app);
+Command addRun(CLI::App& app);
+
+// "1280x720" -> width, height (throws CLI::ValidationError style Error otherwise).
+void parseSize(const std::string& text, int& width, int& height);
+
+}  // namespace tidepool::cli

@@ -1,0 +1,43 @@
+// tidepool: GPU particle and water simulations with OpenGL 4.3 compute shaders.
+// Every failure ends in one clear line on stderr and a non-zero exit: 2 for usage, 1 otherwise.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <exception>
+
+#include "base/error.h"
+#include "cli/commands.h"
+
+int main(int argc, char** argv) {
+  using namespace tidepool;
+  CLI::App app{"tidepool: GPU particle and water simulations (OpenGL 4.3 compute shaders)", "tidepool"};
+  app.set_version_flag("--version", "tidepool 0.1.0");
+  app.require_subcommand(1);
+  const cli::Command commands[] = {cli::addRun(app), cli::addRender(app), cli::addInfo(app)};
+  if (argc > 1 && argv[1][0] != '-') {
+    bool known = false;
+    for (const cli::Command& c : commands) known |= c.sub->get_name() == argv[1];
+    if (!known) {
+      std::fprintf(stderr, "tidepool: unknown subcommand '%s' (expected run, render or info; see 'tidepool --help')\n", argv[1]);
+      return 2;
+    }
+  }
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::Success& e) {  // --help, --version
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "tidepool: %s (see 'tidepool --help')\n", e.what());
+    return 2;
+  }
+  try {
+    for (const cli::Command& c : commands)
+      if (c.sub->parsed()) return c.action();
+    return 2;
+  } catch (const Error& e) {
+    std::fprintf(stderr, "tidepool: error: %s\n", e.what());
+    return 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "tidepool: internal error: %s\n", e.what());
+    return 1;
+  }
+}

@@ -1,0 +1,74 @@
+#include "gl/buffer.h"
+
+#include <string>
+
+namespace tidepool::gl {
+namespace {
+GLuint genBuffer() {
+  GLuint name = 0;
+  glGenBuffers(1, &name);
+  return name;
+}
+void checkRange(std::size_t offset, std::size_t bytes, std::size_t size, const char* what) {
+  if (offset + bytes > size)
+    throw GlError(std::string("buffer ") + what + " of " + std::to_string(bytes) + " bytes at offset " +
+                  std::to_string(offset) + " overruns a buffer of " + std::to_string(size) + " bytes");
+}
+}  // namespace
+
+Buffer::Buffer(std::size_t bytes, const void* data, GLenum usage) : m_handle(genBuffer()) {
+  glBindBuffer(GL_COPY_WRITE_BUFFER, id());
+  glBufferData(GL_COPY_WRITE_BUFFER, GLsizeiptr(bytes), data, usage);
+  glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+  if (glGetError() == GL_OUT_OF_MEMORY)
+    throw GlError("out of GPU memory allocating a buffer of " + std::to_string(bytes) + " bytes");
+  m_size = bytes;
+}
+
+void Buffer::resize(std::size_t bytes, GLenum usage) { *this = Buffer(bytes, nullptr, usage); }
+
+void Buffer::upload(const void* data, std::size_t bytes, std::size_t offset) {
+  checkRange(offset, bytes, m_size, "upload");
+  if (!bytes) return;
+  glBindBuffer(GL_COPY_WRITE_BUFFER, id());
+  glBufferSubData(GL_COPY_WRITE_BUFFER, GLintptr(offset), GLsizeiptr(bytes), data);
+  glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+}
+
+void Buffer::download(void* data, std::size_t bytes, std::size_t offset) const {
+  checkRange(offset, bytes, m_size, "download");
+  if (!bytes) return;
+  // Writes by compute shaders must be visible to the read-back.
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  glBindBuffer(GL_COPY_READ_BUFFER, id());
+  glGetBufferSubData(GL_COPY_READ_BUFFER, GLintptr(offset), GLsizeiptr(bytes), data);
+  glBindBuffer(GL_COPY_READ_BUFFER, 0);
+}
+
+void Buffer::fillZero() {
+  if (!m_size) return;
+  glBindBuffer(GL_COPY_WRITE_BUFFER, id());
+  glClearBufferData(GL_COPY_WRITE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
+  glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+}
+
+void Buffer::copyTo(Buffer& dst, std::size_t bytes, std::size_t srcOffset, std::size_t dstOffset) const {
+  checkRange(srcOffset, bytes, m_size, "copy source");
+  checkRange(dstOffset, bytes, dst.m_size, "copy destination");
+  if (!bytes) return;
+  glBindBuffer(GL_COPY_READ_BUFFER, id());
+  glBindBuffer(GL_COPY_WRITE_BUFFER, dst.id());
+  glCopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, GLintptr(srcOffset), GLintptr(dstOffset),
+                      GLsizeiptr(bytes));
+  glBindBuffer(GL_COPY_READ_BUFFER, 0);
+  glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+}
+
+void Buffer::bindBase(GLenum target, GLuint index) const { glBindBufferBase(target, index, id()); }
+
+void Buffer::bindRange(GLenum target, GLuint index, std::size_t offset, std::size_t bytes) const {
+  checkRange(offset, bytes, m_size, "binding range");
+  glBindBufferRange(target, index, id(), GLintptr(offset), GLsizeiptr(bytes));
+}
+
+}  // namespace tidepool::gl

@@ -1,0 +1,29 @@
+#include "gl/handle.h"
+
+#include <atomic>
+
+namespace tidepool::gl {
+namespace {
+std::array<std::atomic<int>, static_cast<int>(Kind::Count)> g_live{};
+}
+
+int liveCount(Kind kind) { return g_live[static_cast<int>(kind)].load(); }
+
+namespace detail {
+void noteCreated(Kind kind) { ++g_live[static_cast<int>(kind)]; }
+void noteReleased(Kind kind) { --g_live[static_cast<int>(kind)]; }
+
+void release(Kind kind, GLuint name) {
+  switch (kind) {
+    case Kind::Buffer: glDeleteBuffers(1, &name); break;
+    case Kind::Texture: glDeleteTextures(1, &name); break;
+    case Kind::Framebuffer: glDeleteFramebuffers(1, &name); break;
+    case Kind::VertexArray: glDeleteVertexArrays(1, &name); break;
+    case Kind::Query: glDeleteQueries(1, &name); break;
+    case Kind::Program: glDeleteProgram(name); break;
+    case Kind::Shader: glDeleteShader(name); break;
+    case Kind::Count: break;
+  }
+}
+}  // namespace detail
+}  // namespace tidepool::gl

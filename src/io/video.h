@@ -1,0 +1,30 @@
+// Raw RGBA frames piped to ffmpeg (H.264 MP4, or whatever the output name implies).
+#pragma once
+
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <vector>
+
+namespace tidepool::io {
+
+bool ffmpegAvailable();  // ffmpeg on PATH
+
+class VideoWriter {
+ public:
+  // Throws Error when ffmpeg is not installed or cannot start.
+  VideoWriter(const std::filesystem::path& path, int width, int height, int fps);
+  ~VideoWriter();
+  VideoWriter(const VideoWriter&) = delete;
+  VideoWriter& operator=(const VideoWriter&) = delete;
+
+  void write(const std::vector<std::uint8_t>& rgbaTopDown);
+  void close();  // waits for ffmpeg; throws Error when it failed
+
+ private:
+  std::FILE* m_pipe = nullptr;
+  std::filesystem::path m_path;
+  std::size_t m_frameBytes = 0;
+};
+
+}  // namespace tidepool::io

@@ -1,0 +1,39 @@
+#include "scene/blank.h"
+
+#include "scene/param_json.h"
+
+namespace tidepool {
+namespace {
+
+class BlankStage final : public Stage {
+ public:
+  explicit BlankStage(const BlankParams& p) : m_params(p) {}
+  void visitParams(ParamVisitor& v) override { visit(v, m_params); }
+  void reset() override { m_time = 0; }
+  void step(double frameSeconds, gl::GpuProfiler&) override { m_time += frameSeconds; }
+  void render(RenderTarget& target, gl::GpuProfiler& profiler) override {
+    auto scope = profiler.scope("blank.clear");
+    target.bind();
+    glClearColor(m_params.color.r, m_params.color.g, m_params.color.b, 1.0f);
+    glClearDepth(1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  }
+  double simTime() const override { return m_time; }
+  std::string status() const override { return "no model: blank scene"; }
+
+ private:
+  BlankParams m_params;
+  double m_time = 0;
+};
+
+}  // namespace
+
+void visit(ParamVisitor& v, BlankParams& p) { v.color({"color", "Colour", "clear colour, linear RGB"}, p.color); }
+
+std::unique_ptr<Stage> createBlankStage(const io::Json& params, const std::string& where, gl::ShaderLibrary&) {
+  BlankParams p;
+  readParams(params, [&](ParamVisitor& v) { visit(v, p); }, where);
+  return std::make_unique<BlankStage>(p);
+}
+
+}  // namespace tidepool

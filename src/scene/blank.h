@@ -1,0 +1,16 @@
+// The "blank" model: no simulation state at all; its renderer clears the image to a colour.
+// It exists so the shell (window, headless renderer, CLI) can run before any real model.
+#pragma once
+
+#include "scene/stage.h"
+
+namespace tidepool {
+
+struct BlankParams {
+  glm::vec3 color{0.05f, 0.09f, 0.14f};  // linear RGB clear colour
+};
+void visit(ParamVisitor& v, BlankParams& p);
+
+std::unique_ptr<Stage> createBlankStage(const io::Json& params, const std::string& where, gl::ShaderLibrary& shaders);
+
+}  // namespace tidepool

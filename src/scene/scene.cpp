@@ -1,0 +1,78 @@
+#include "scene/scene.h"
+
+#include <unistd.h>
+
+#include <cstdlib>
+
+#include "scene/param_json.h"
+
+namespace tidepool {
+namespace fs = std::filesystem;
+
+void visit(ParamVisitor& v, Scene& s) {
+  v.text({"name", "Name", "shown in the window title"}, s.name);
+  v.text({"description", "Description", "what the scene shows"}, s.description);
+  v.text({"model", "Model", "blank (more models land with their issues)"}, s.model);
+  if (v.beginGroup({"clip", "Clip", "default headless clip"})) {
+    v.integer({"frames", "Frames", "frames rendered headless"}, s.clip.frames, 1, 1000000);
+    v.integer({"fps", "FPS", "frames per simulated second"}, s.clip.fps, 1, 1000);
+    v.integer({"width", "Width", "pixels"}, s.clip.width, 1, 16384);
+    v.integer({"height", "Height", "pixels"}, s.clip.height, 1, 16384);
+    v.endGroup();
+  }
+}
+
+fs::path findAssetDir() {
+  if (const char* env = std::getenv("TIDEPOOL_ASSET_DIR")) {
+    std::error_code ec;
+    if (!fs::is_directory(env, ec)) throw Error(std::string("asset directory '") + env + "' (from TIDEPOOL_ASSET_DIR) not found");
+    return env;
+  }
+  std::error_code ec;
+  const fs::path exeDir = fs::read_symlink("/proc/self/exe", ec).parent_path();
+  for (const fs::path& c : {exeDir / "assets", exeDir / ".." / "assets", fs::path(TIDEPOOL_SOURCE_DIR) / "assets"})
+    if (fs::is_directory(c / "scenes", ec)) return fs::weakly_canonical(c);
+  throw Error("asset directory not found next to the executable or in the source tree; set TIDEPOOL_ASSET_DIR");
+}
+
+fs::path resolveScenePath(const std::string& arg) {
+  const fs::path given(arg);
+  std::error_code ec;
+  if (fs::exists(given, ec) || given.has_parent_path() || given.has_extension()) return given;
+  const fs::path named = findAssetDir() / "scenes" / (arg + ".json");
+  if (fs::exists(named, ec)) return named;
+  std::string known;
+  for (const auto& entry : fs::directory_iterator(findAssetDir() / "scenes", ec))
+    if (entry.path().extension() == ".json") known += (known.empty() ? "" : ", ") + entry.path().stem().string();
+  throw Error("scene '" + arg + "' not found: neither a file nor a name in assets/scenes (known: " + known + ")");
+}
+
+Scene parseScene(const io::Json& json, const std::string& where) {
+  if (!json.is_object()) throw Error(where + ": a scene must be a JSON object {...}");
+  Scene scene;
+  io::Json header = json;
+  if (auto it = header.find("params"); it != header.end()) {
+    scene.params = *it;
+    header.erase("params");
+  }
+  readParams(header, [&](ParamVisitor& v) { visit(v, scene); }, where + ": scene");
+  return scene;
+}
+
+Scene loadScene(const fs::path& file) {
+  Scene scene = parseScene(io::readJsonFile(file), file.string());
+  scene.file = file;
+  if (scene.name.empty()) scene.name = file.stem().string();
+  return scene;
+}
+
+std::unique_ptr<Stage> createStage(const Scene& scene, gl::ShaderLibrary& shaders) {
+  std::string known;
+  for (const ModelEntry& m : models()) {
+    if (scene.model == m.name) return m.create(scene.params, scene.file.string() + ": params", shaders);
+    known += (known.empty() ? "" : ", ") + std::string(m.name);
+  }
+  throw Error(scene.file.string() + ": scene.model = '" + scene.model + "' is not a model (known: " + known + ")");
+}
+
+}  // namespace tidepool

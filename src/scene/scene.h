@@ -1,0 +1,48 @@
+// Scene files: JSON data naming the model, its parameters and the default clip to render.
+//
+//   { "name": "Blank", "description": "...", "model": "blank",
+//     "params": { "color": [0.1, 0.2, 0.3] },
+//     "clip": { "frames": 90, "fps": 30, "width": 960, "height": 540 } }
+//
+// The window, the headless renderer, benchmarks and tests load the same files.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "io/json.h"
+#include "scene/stage.h"
+
+namespace tidepool {
+
+struct ClipSettings {
+  int frames = 90;  // frames rendered by `tidepool render` unless --frames says otherwise
+  int fps = 30;     // video frame rate; also the simulated time per frame (1/fps s)
+  int width = 960, height = 540;
+};
+
+struct Scene {
+  std::filesystem::path file;  // where it was loaded from
+  std::string name, description;
+  std::string model = "blank";
+  io::Json params;             // the model's parameters, validated when the stage is created
+  ClipSettings clip;
+};
+
+void visit(ParamVisitor& v, Scene& scene);  // every key except "params"
+
+// Folder of assets (scenes, textures, meshes, rules): $TIDEPOOL_ASSET_DIR, next to the
+// executable, or the source tree.
+std::filesystem::path findAssetDir();
+
+// A path as given, or a bare name such as "blank" looked up as assets/scenes/<name>.json.
+std::filesystem::path resolveScenePath(const std::string& nameOrPath);
+
+Scene loadScene(const std::filesystem::path& file);  // throws Error naming file and key
+Scene parseScene(const io::Json& json, const std::string& where);
+
+// Builds the named model's stage; unknown models list the known ones.
+std::unique_ptr<Stage> createStage(const Scene& scene, gl::ShaderLibrary& shaders);
+
+}  // namespace tidepool

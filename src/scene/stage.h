@@ -1,0 +1,41 @@
+// A running scene: one model (which owns its buffers and compute passes) and the renderer that
+// reads it. The window app, the headless renderer, the benchmarks and the tests drive stages
+// the same way: step() advances one frame of simulated time, render() draws it.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "gl/gpu_profiler.h"
+#include "gl/shader_library.h"
+#include "io/json.h"
+#include "render/target.h"
+#include "scene/input.h"
+#include "scene/param.h"
+
+namespace tidepool {
+
+class Stage {
+ public:
+  virtual ~Stage() = default;
+  virtual void visitParams(ParamVisitor& v) = 0;  // the model's and the view's Params
+  virtual void reset() = 0;                       // back to the initial state (same parameters)
+  virtual void step(double frameSeconds, gl::GpuProfiler& profiler) = 0;  // one frame of simulated time
+  virtual void render(RenderTarget& target, gl::GpuProfiler& profiler) = 0;
+  virtual void input(const Input&) {}
+  virtual double simTime() const = 0;             // simulated seconds since reset
+  virtual std::string status() const { return ""; }  // one line for the UI (counts, warnings)
+};
+
+struct ModelEntry {
+  const char* name;
+  const char* summary;
+  // Builds the stage from the scene's "params" object (validated; `where` prefixes errors).
+  std::function<std::unique_ptr<Stage>(const io::Json& params, const std::string& where, gl::ShaderLibrary&)> create;
+};
+
+const std::vector<ModelEntry>& models();  // every model a scene may name
+
+}  // namespace tidepool

@@ -1,0 +1,52 @@
+// The window path under Xvfb: a real GLFW window (GL from llvmpipe through GLX) opens, draws
+// frames with the ImGui panel and saves a screenshot.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include "io/png.h"
+#include "support/gl_test.h"
+#include "support/run_process.h"
+
+using namespace tidepool;
+
+namespace {
+bool onPath(const std::string& tool) {
+  return test::runProcess({"sh", "-c", "command -v " + tool}).exitCode == 0;
+}
+}  // namespace
+
+TEST(Window, OpensDrawsAndTakesAScreenshotUnderXvfb) {
+  ASSERT_TRUE(onPath("xvfb-run")) << "xvfb-run is needed for the window test (scripts/install-deps.sh installs it)";
+  test::TempDir dir;
+  dir.write("green.json", R"({"name": "Green", "model": "blank", "params": {"color": [0, 1, 0]}})");
+  const std::string shot = (dir / "shot.png").string();
+  auto r = test::runProcess({"xvfb-run", "-a", "-s", "-screen 0 800x600x24", TIDEPOOL_EXE, "run",
+                             (dir / "green.json").string(), "--backend", "window", "--size", "640x480", "--frames",
+                             "3", "--screenshot", shot});
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  io::Image img = io::readPng(shot);
+  ASSERT_EQ(img.width, 640);
+  ASSERT_EQ(img.height, 480);
+  // The scene colour fills the window away from the UI panel (bottom-right corner)...
+  const uint8_t* corner = &img.rgba[(std::size_t(475) * 640 + 635) * 4];
+  EXPECT_EQ(corner[0], 0);
+  EXPECT_EQ(corner[1], 255);
+  EXPECT_EQ(corner[2], 0);
+  // ...and the ImGui panel covers the top-left with other colours.
+  int nonGreen = 0;
+  for (int y = 10; y < 60; ++y)
+    for (int x = 10; x < 200; ++x) {
+      const uint8_t* p = &img.rgba[(std::size_t(y) * 640 + x) * 4];
+      nonGreen += !(p[0] == 0 && p[1] == 255 && p[2] == 0);
+    }
+  EXPECT_GT(nonGreen, 1000) << "the UI panel should be drawn over the scene";
+}
+
+TEST(Window, NoDisplayGivesAClearError) {
+  auto r = test::runTidepool({"run", "blank", "--backend", "window", "--frames", "1"}, {"DISPLAY=", "WAYLAND_DISPLAY="});
+  EXPECT_FALSE(r.signaled);
+  EXPECT_EQ(r.exitCode, 1);
+  ASSERT_EQ(r.errLines().size(), 1u) << r.err;
+  EXPECT_NE(r.err.find("cannot open"), std::string::npos) << r.err;
+}

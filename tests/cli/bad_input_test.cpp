@@ -1,0 +1,84 @@
+// Bad input gets one clear line naming what is wrong and a non-zero exit, never a crash.
+#include <gtest/gtest.h>
+
+#include "support/gl_test.h"
+#include "support/run_process.h"
+
+using namespace tidepool;
+using test::runTidepool;
+
+namespace {
+
+// Runs tidepool, expects a normal non-zero exit and a single stderr line containing `expected`.
+void expectOneLineError(const std::vector<std::string>& args, const std::string& expected, int code,
+                        const std::vector<std::string>& env = {}) {
+  auto r = runTidepool(args, env);
+  EXPECT_FALSE(r.signaled) << "crashed: " << r.err;
+  EXPECT_EQ(r.exitCode, code) << r.err;
+  const auto lines = r.errLines();
+  ASSERT_EQ(lines.size(), 1u) << "expected one line, got:\n" << r.err;
+  EXPECT_NE(lines[0].find(expected), std::string::npos) << lines[0];
+}
+
+}  // namespace
+
+TEST(BadInput, MissingSceneFile) {
+  expectOneLineError({"render", "/nonexistent/scene.json", "--out", "/tmp/x"}, "file not found: '/nonexistent/scene.json'", 1);
+  expectOneLineError({"render", "nosuchscene", "--out", "/tmp/x"}, "scene 'nosuchscene' not found", 1);
+}
+
+TEST(BadInput, MalformedJsonNamesLineAndColumn) {
+  test::TempDir dir;
+  dir.write("bad.json", "{\n  \"model\": \"blank\",\n  \"params\": {\"color\": [1, 0, 0}\n}\n");
+  expectOneLineError({"render", (dir / "bad.json").string(), "--out", (dir / "o").string()},
+                     (dir / "bad.json").string() + ":3:", 1);
+  auto r = runTidepool({"render", (dir / "bad.json").string(), "--out", (dir / "o").string()});
+  EXPECT_NE(r.err.find("malformed JSON"), std::string::npos);
+}
+
+TEST(BadInput, InvalidSceneValues) {
+  test::TempDir dir;
+  dir.write("range.json", R"({"model": "blank", "params": {"color": [2, 0, 0]}})");
+  expectOneLineError({"render", (dir / "range.json").string(), "--out", (dir / "o").string()},
+                     "params.color[0] = 2 is out of range [0, 1]", 1);
+  dir.write("model.json", R"({"model": "nope"})");
+  expectOneLineError({"render", (dir / "model.json").string(), "--out", (dir / "o").string()}, "is not a model", 1);
+}
+
+TEST(BadInput, UnknownSubcommandOrOption) {
+  expectOneLineError({"frobnicate"}, "unknown subcommand 'frobnicate'", 2);
+  expectOneLineError({"render", "blank", "--colour", "red"}, "--colour", 2);
+  expectOneLineError({}, "subcommand is required", 2);
+  expectOneLineError({"render", "blank", "--frames", "0", "--out", "/tmp/x"}, "--frames", 2);
+  expectOneLineError({"info", "--backend", "vulkan"}, "--backend", 2);
+  expectOneLineError({"render", "blank", "--size", "12x", "--out", "/tmp/x"}, "--size '12x' is not WIDTHxHEIGHT", 1);
+  expectOneLineError({"render", "blank"}, "nothing to write: give --out DIR and/or --video FILE", 1);
+}
+
+TEST(BadInput, UnreadableShaderDirectory) {
+  expectOneLineError({"render", "blank", "--frames", "1", "--out", "/tmp/tidepool-x"},
+                     "shader directory '/nonexistent/shaders' (from TIDEPOOL_SHADER_DIR) is not a readable directory", 1,
+                     {"TIDEPOOL_SHADER_DIR=/nonexistent/shaders"});
+}
+
+TEST(BadInput, ShaderThatFailsToCompileNamesFileAndLine) {
+  // A copy of the shader folder whose self-test kernel is broken on line 14.
+  test::TempDir dir;
+  std::filesystem::copy(std::filesystem::path(TIDEPOOL_SOURCE_DIR) / "shaders", dir / "shaders",
+                        std::filesystem::copy_options::recursive);
+  dir.write("shaders/selftest/fill.comp",
+            "#version 430 core\nlayout(local_size_x = 64) in;\n#include \"common/index.glsl\"\n"
+            "layout(std430, binding = 0) buffer Out { uint values[]; };\nuniform uint uCount;\nuniform uint uMul;\n"
+            "void main() {\n  const uint i = globalIndex();\n  if (i >= uCount) return;\n\n\n\n\n"
+            "  values[i] = i * uMul + undefined_name;\n}\n");
+  auto r = runTidepool({"info"}, {"TIDEPOOL_SHADER_DIR=" + (dir / "shaders").string()});
+  EXPECT_FALSE(r.signaled);
+  EXPECT_EQ(r.exitCode, 1);
+  const auto lines = r.errLines();
+  ASSERT_FALSE(lines.empty());
+  EXPECT_NE(lines[0].find("failed to compile at selftest/fill.comp:14"), std::string::npos) << r.err;
+}
+
+TEST(BadInput, UnwritableOutputFolder) {
+  expectOneLineError({"render", "blank", "--frames", "1", "--out", "/proc/tidepool-out"}, "cannot create output folder", 1);
+}

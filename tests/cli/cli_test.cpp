@@ -1,0 +1,72 @@
+// The executable end to end: info, headless render (PNG frames with the scene's colour), run
+// without a display, the OSMesa fallback, and the README's quick-start path.
+#include <gtest/gtest.h>
+
+#include "io/png.h"
+#include "support/gl_test.h"
+#include "support/run_process.h"
+
+using namespace tidepool;
+using test::runTidepool;
+
+TEST(Cli, InfoReportsGl43OrNewerAndComputeLimits) {
+  auto r = runTidepool({"info", "--backend", "egl"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("GL_RENDERER"), std::string::npos);
+  EXPECT_NE(r.out.find("compute work-group size"), std::string::npos);
+  EXPECT_NE(r.out.find("compute self-test         ok"), std::string::npos) << r.out;
+  const std::size_t at = r.out.find("context version");
+  ASSERT_NE(at, std::string::npos);
+  const int major = std::stoi(r.out.substr(at + 26, 1)), minor = std::stoi(r.out.substr(at + 28, 1));
+  EXPECT_TRUE(major > 4 || (major == 4 && minor >= 3)) << r.out;
+}
+
+TEST(Cli, OsMesaFallbackCreatesAGl43Context) {
+  auto r = runTidepool({"info", "--backend", "osmesa"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("backend                   osmesa"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("compute self-test         ok"), std::string::npos) << r.out;
+}
+
+TEST(Cli, RenderWritesFramesOfTheRequestedSizeAndColour) {
+  test::TempDir dir;
+  dir.write("red.json", R"({"model": "blank", "params": {"color": [1, 0, 0]}, "clip": {"frames": 7}})");
+  auto r = runTidepool({"render", (dir / "red.json").string(), "--frames", "3", "--size", "48x20", "--out",
+                        (dir / "frames").string(), "--quiet"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("wrote 3 frames (48x20)"), std::string::npos) << r.err;
+  for (int i = 0; i < 3; ++i) {
+    io::Image img = io::readPng(dir / ("frames/frame_0000" + std::to_string(i) + ".png"));
+    EXPECT_EQ(img.width, 48);
+    EXPECT_EQ(img.height, 20);
+    EXPECT_EQ(img.rgba[0], 255);
+    EXPECT_EQ(img.rgba[1], 0);
+    EXPECT_EQ(img.rgba[2], 0);
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir / "frames/frame_00003.png"));
+}
+
+TEST(Cli, RunWithoutADisplayRendersTheClipHeadlessAndSaysWhere) {
+  test::TempDir dir;
+  auto r = runTidepool({"run", "default", "--frames", "2", "--out", dir.path().string()}, {"DISPLAY=", "WAYLAND_DISPLAY="});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("no display"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(dir.path().string() + "/default/frame_*.png"), std::string::npos) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(dir / "default/frame_00001.png"));
+}
+
+TEST(Cli, VideoWithoutFfmpegIsAClearError) {
+  test::TempDir dir;
+  auto r = runTidepool({"render", "blank", "--frames", "2", "--video", (dir / "c.mp4").string()}, {"PATH=/nonexistent"});
+  EXPECT_EQ(r.exitCode, 1);
+  ASSERT_EQ(r.errLines().size(), 1u) << r.err;
+  EXPECT_NE(r.err.find("--video needs ffmpeg"), std::string::npos) << r.err;
+}
+
+TEST(Cli, HelpAndVersionSucceed) {
+  EXPECT_EQ(runTidepool({"--help"}).exitCode, 0);
+  EXPECT_EQ(runTidepool({"render", "--help"}).exitCode, 0);
+  auto v = runTidepool({"--version"});
+  EXPECT_EQ(v.exitCode, 0);
+  EXPECT_NE(v.out.find("tidepool"), std::string::npos);
+}
