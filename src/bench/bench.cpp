@@ -1,0 +1,86 @@
+#include "bench/bench.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "base/error.h"
+
+namespace tidepool::bench {
+
+void Table::print() const {
+  std::vector<std::size_t> width(m_columns.size());
+  for (std::size_t c = 0; c < m_columns.size(); ++c) {
+    width[c] = m_columns[c].size();
+    for (const auto& r : m_rows)
+      if (c < r.size()) width[c] = std::max(width[c], r[c].size());
+  }
+  auto line = [&](const std::vector<std::string>& cells) {
+    std::string out;
+    for (std::size_t c = 0; c < m_columns.size(); ++c) {
+      const std::string& v = c < cells.size() ? cells[c] : "";
+      out += (c ? "  " : "") + std::string(width[c] - v.size(), ' ') + v;
+    }
+    std::printf("%s\n", out.c_str());
+  };
+  line(m_columns);
+  for (const auto& r : m_rows) line(r);
+  std::fflush(stdout);
+}
+
+void Table::writeCsv(const std::string& path) const {
+  std::ofstream out(path);
+  if (!out) throw Error("cannot write CSV '" + path + "'");
+  auto row = [&](const std::vector<std::string>& cells) {
+    for (std::size_t c = 0; c < cells.size(); ++c) out << (c ? "," : "") << cells[c];
+    out << "\n";
+  };
+  row(m_columns);
+  for (const auto& r : m_rows) row(r);
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+std::string fixed(double value, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, value);
+  return buf;
+}
+
+std::vector<std::size_t> parseSizes(const std::string& text) {
+  static const std::regex number(R"((\d+)([kKmM]?))");
+  static const std::regex power(R"(2\^(\d+))");
+  static const std::regex range(R"(2\^(\d+)\.\.2\^(\d+))");
+  auto one = [&](const std::string& token) -> std::size_t {
+    std::smatch m;
+    if (std::regex_match(token, m, power) && std::stoi(m[1]) < 40) return std::size_t(1) << std::stoi(m[1]);
+    if (std::regex_match(token, m, number)) {
+      std::size_t v = std::stoull(m[1]);
+      if (m[2] == "k" || m[2] == "K") v <<= 10;
+      if (m[2] == "m" || m[2] == "M") v <<= 20;
+      return v;
+    }
+    throw Error("size '" + token + "' is not a number like 65536, 64k, 16M or 2^20");
+  };
+  std::vector<std::size_t> out;
+  std::stringstream ss(text);
+  for (std::string token; std::getline(ss, token, ',');) {
+    std::smatch m;
+    if (std::regex_match(token, m, range)) {
+      for (int k = std::stoi(m[1]); k <= std::stoi(m[2]) && k < 40; ++k) out.push_back(std::size_t(1) << k);
+    } else {
+      out.push_back(one(token));
+    }
+  }
+  if (out.empty()) throw Error("no sizes given");
+  return out;
+}
+
+}  // namespace tidepool::bench

@@ -1,0 +1,58 @@
+// Benchmarks: `tidepool bench <name> [options]`. Each benchmark registers one sub-subcommand and
+// prints a compact table (and optional CSV). Timings come from GL timer queries, reported as
+// medians over repeats; nothing here is ever asserted in a test.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "gl/context.h"
+#include "gl/shader_library.h"
+
+namespace tidepool::bench {
+
+// Options every benchmark shares.
+struct Common {
+  std::string backend = "auto";
+  std::string csv;   // write the table as CSV here too
+  int repeats = 20;  // timed repeats per configuration (medians are reported)
+  int warmup = 3;
+};
+
+struct Env {
+  const Common& common;
+  gl::ShaderLibrary& shaders;
+  std::string device;  // GL_RENDERER, for tables and CSV
+};
+
+struct Benchmark {
+  CLI::App* sub;
+  std::function<int(Env&)> run;
+};
+
+// Each benchmark's registration function (bench/<name>_bench.cpp).
+using Registrar = Benchmark (*)(CLI::App& bench);
+const std::vector<Registrar>& registrars();
+
+// A table printed with aligned columns and optionally written as CSV.
+class Table {
+ public:
+  explicit Table(std::vector<std::string> columns) : m_columns(std::move(columns)) {}
+  void add(std::vector<std::string> row) { m_rows.push_back(std::move(row)); }
+  void print() const;                      // to stdout
+  void writeCsv(const std::string& path) const;  // throws Error
+
+ private:
+  std::vector<std::string> m_columns;
+  std::vector<std::vector<std::string>> m_rows;
+};
+
+double median(std::vector<double> values);
+std::string fixed(double value, int decimals);
+// "65536,1M,16M" or "2^16..2^24" -> sizes; throws Error naming the bad token.
+std::vector<std::size_t> parseSizes(const std::string& text);
+
+}  // namespace tidepool::bench
