@@ -15,7 +15,7 @@ struct UiState {
   bool reloadRequested = false;
   bool screenshotRequested = false;
   bool showUi = true;
-  std::string message;       // last action's result (reload, screenshot)
+  std::string message;  // last action's result (reload, screenshot)
   bool messageIsError = false;
 };
 

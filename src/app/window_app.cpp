@@ -2,9 +2,9 @@
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
-#include <imgui.h>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
 
 #include <chrono>
 #include <ctime>
@@ -41,8 +41,7 @@ io::Image readWindow(int width, int height) {
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, bottomUp.data());
   const std::size_t row = std::size_t(width) * 4;
-  for (int y = 0; y < height; ++y)
-    std::copy_n(&bottomUp[row * (height - 1 - y)], row, &img.rgba[row * y]);
+  for (int y = 0; y < height; ++y) std::copy_n(&bottomUp[row * (height - 1 - y)], row, &img.rgba[row * y]);
   for (std::size_t i = 3; i < img.rgba.size(); i += 4) img.rgba[i] = 255;  // the window is opaque
   return img;
 }
@@ -148,7 +147,8 @@ int runWindow(const WindowJob& job) {
     const bool last = job.maxFrames && frame + 1 >= *job.maxFrames;
     if (ui.screenshotRequested || (last && !job.screenshot.empty())) {
       ui.screenshotRequested = false;
-      const std::filesystem::path path = last && !job.screenshot.empty() ? job.screenshot : std::filesystem::path(timestampedName());
+      const std::filesystem::path path =
+          last && !job.screenshot.empty() ? job.screenshot : std::filesystem::path(timestampedName());
       try {
         io::writePng(path, readWindow(fbw, fbh));
         ui.message = "saved " + path.string();

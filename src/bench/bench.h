@@ -42,7 +42,7 @@ class Table {
  public:
   explicit Table(std::vector<std::string> columns) : m_columns(std::move(columns)) {}
   void add(std::vector<std::string> row) { m_rows.push_back(std::move(row)); }
-  void print() const;                      // to stdout
+  void print() const;                            // to stdout
   void writeCsv(const std::string& path) const;  // throws Error
 
  private:

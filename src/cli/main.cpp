@@ -17,7 +17,9 @@ int main(int argc, char** argv) {
     bool known = false;
     for (const cli::Command& c : commands) known |= c.sub->get_name() == argv[1];
     if (!known) {
-      std::fprintf(stderr, "tidepool: unknown subcommand '%s' (expected run, render, info or bench; see 'tidepool --help')\n", argv[1]);
+      std::fprintf(stderr,
+                   "tidepool: unknown subcommand '%s' (expected run, render, info or bench; see 'tidepool --help')\n",
+                   argv[1]);
       return 2;
     }
   }

@@ -20,12 +20,12 @@ namespace tidepool {
 class Stage {
  public:
   virtual ~Stage() = default;
-  virtual void visitParams(ParamVisitor& v) = 0;  // the model's and the view's Params
-  virtual void reset() = 0;                       // back to the initial state (same parameters)
+  virtual void visitParams(ParamVisitor& v) = 0;                          // the model's and the view's Params
+  virtual void reset() = 0;                                               // back to the initial state (same parameters)
   virtual void step(double frameSeconds, gl::GpuProfiler& profiler) = 0;  // one frame of simulated time
   virtual void render(RenderTarget& target, gl::GpuProfiler& profiler) = 0;
   virtual void input(const Input&) {}
-  virtual double simTime() const = 0;             // simulated seconds since reset
+  virtual double simTime() const = 0;                // simulated seconds since reset
   virtual std::string status() const { return ""; }  // one line for the UI (counts, warnings)
 };
 

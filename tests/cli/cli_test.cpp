@@ -48,7 +48,8 @@ TEST(Cli, RenderWritesFramesOfTheRequestedSizeAndColour) {
 
 TEST(Cli, RunWithoutADisplayRendersTheClipHeadlessAndSaysWhere) {
   test::TempDir dir;
-  auto r = runTidepool({"run", "default", "--frames", "2", "--out", dir.path().string()}, {"DISPLAY=", "WAYLAND_DISPLAY="});
+  auto r =
+      runTidepool({"run", "default", "--frames", "2", "--out", dir.path().string()}, {"DISPLAY=", "WAYLAND_DISPLAY="});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.err.find("no display"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find(dir.path().string() + "/default/frame_*.png"), std::string::npos) << r.err;
@@ -57,7 +58,8 @@ TEST(Cli, RunWithoutADisplayRendersTheClipHeadlessAndSaysWhere) {
 
 TEST(Cli, VideoWithoutFfmpegIsAClearError) {
   test::TempDir dir;
-  auto r = runTidepool({"render", "blank", "--frames", "2", "--video", (dir / "c.mp4").string()}, {"PATH=/nonexistent"});
+  auto r =
+      runTidepool({"render", "blank", "--frames", "2", "--video", (dir / "c.mp4").string()}, {"PATH=/nonexistent"});
   EXPECT_EQ(r.exitCode, 1);
   ASSERT_EQ(r.errLines().size(), 1u) << r.err;
   EXPECT_NE(r.err.find("--video needs ffmpeg"), std::string::npos) << r.err;
