@@ -72,3 +72,17 @@ TEST(Cli, HelpAndVersionSucceed) {
   EXPECT_EQ(v.exitCode, 0);
   EXPECT_NE(v.out.find("tidepool"), std::string::npos);
 }
+
+TEST(Cli, VideoFramesArePipedToFfmpeg) {
+  // A stand-in ffmpeg on PATH that stores the raw RGBA stream in the output file.
+  test::TempDir dir;
+  dir.write("bin/ffmpeg", "#!/bin/sh\nfor last; do :; done\ncat > \"$last\"\n");
+  std::filesystem::permissions(dir / "bin/ffmpeg", std::filesystem::perms::owner_all);
+  const std::string path = std::string(std::getenv("PATH"));
+  auto r = runTidepool(
+      {"render", "blank", "--frames", "4", "--size", "30x10", "--video", (dir / "c.mp4").string(), "--quiet"},
+      {"PATH=" + (dir / "bin").string() + ":" + path});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(std::filesystem::file_size(dir / "c.mp4"), 4u * 30 * 10 * 4) << "4 raw RGBA frames";
+  EXPECT_NE(r.err.find("wrote video"), std::string::npos) << r.err;
+}
