@@ -1,5 +1,6 @@
 // The table of models a scene can name. Each model adds one line here when it lands.
 #include "scene/blank.h"
+#include "scene/ripples_stage.h"
 #include "scene/stage.h"
 
 namespace tidepool {
@@ -7,6 +8,7 @@ namespace tidepool {
 const std::vector<ModelEntry>& models() {
   static const std::vector<ModelEntry> table = {
       {"blank", "no simulation: clears to a colour (the shell before any model)", createBlankStage},
+      {"ripples", "heightfield water: wave equation or the seed's spring model, 2D refraction view", createRipplesStage},
   };
   return table;
 }

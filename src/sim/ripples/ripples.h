@@ -1,0 +1,55 @@
+// Heightfield water ("ripples"): height and vertical velocity on a grid, advanced by the wave
+// equation (5-point Laplacian, symplectic Euler) or by water-simulation-gpu's spring + tension
+// model. Owns its state buffers (ping-pong) and compute passes; renderers read state().
+//   After water-simulation-gpu (Piellard, 2016) and Müller, "Fast Water Simulation for Games
+//   Using Height Fields" (GDC 2008).
+#pragma once
+
+#include <random>
+#include <string>
+
+#include "gl/buffer.h"
+#include "gl/gpu_profiler.h"
+#include "gl/shader_library.h"
+#include "sim/ripples/ripples_params.h"
+
+namespace tidepool::ripples {
+
+class Ripples {
+ public:
+  Ripples(gl::ShaderLibrary& shaders, const Params& params);  // throws Error when too large
+
+  Params& params() { return m_params; }  // edits apply at the next step (size changes re-allocate)
+  const Params& params() const { return m_params; }
+
+  void reset();                                             // flat water at rest
+  void step(double frameSeconds, gl::GpuProfiler& profiler);  // one frame = substepsFor() steps
+  void stepOnce(double dt);                                 // exactly one step of dt seconds
+  // Adds the cosine bump at (x, y) in [0,1]^2 of the grid; depth in metres, radius in grid widths.
+  void touch(float x, float y, float radius, float depth);
+
+  const gl::Buffer& state() const { return m_state[m_current]; }  // vec2 (h, v) per cell
+  void upload(const std::vector<float>& heightAndVelocity);        // 2 floats per cell
+  std::vector<float> download() const;                             // 2 floats per cell
+  double time() const { return m_time; }
+  int lastSubsteps() const { return m_lastSubsteps; }
+  float lastCourant() const { return m_lastCourant; }  // wave rule, of the last step
+  std::string status() const;                            // one line: size, substeps, C, warnings
+
+ private:
+  void allocate();
+  gl::Program& stepProgram();
+
+  gl::ShaderLibrary& m_shaders;
+  Params m_params;
+  int m_width = 0, m_height = 0;  // allocated size
+  gl::Buffer m_state[2];
+  int m_current = 0;
+  double m_time = 0;
+  int m_lastSubsteps = 0;
+  float m_lastCourant = 0;
+  double m_rainDebt = 0;
+  std::mt19937 m_rng{12345};
+};
+
+}  // namespace tidepool::ripples
