@@ -51,8 +51,16 @@ class Table {
 };
 
 double median(std::vector<double> values);
+
+// Median GPU milliseconds (GL_TIME_ELAPSED) of `work` over common.repeats runs, after
+// common.warmup untimed runs. `work` must not open GpuProfiler scopes (queries cannot nest).
+double gpuMedianMs(const Common& common, const std::function<void()>& work);
+
+// A line to print under tables measured on a software renderer, whose timer queries do not
+// measure execution (empty for hardware).
+std::string timingCaveat(const std::string& device);
 std::string fixed(double value, int decimals);
-// "65536,1M,16M" or "2^16..2^24" -> sizes; throws Error naming the bad token.
+// "65536,1M,16M", "2^16..2^24" or "512..4096" (doubling) -> sizes; throws Error naming the bad token.
 std::vector<std::size_t> parseSizes(const std::string& text);
 
 }  // namespace tidepool::bench

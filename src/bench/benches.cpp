@@ -3,8 +3,10 @@
 
 namespace tidepool::bench {
 
+Benchmark addRipplesBench(CLI::App& bench);
+
 const std::vector<Registrar>& registrars() {
-  static const std::vector<Registrar> table = {};
+  static const std::vector<Registrar> table = {addRipplesBench};
   return table;
 }
 

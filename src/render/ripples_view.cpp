@@ -28,7 +28,8 @@ void RipplesView::coverMapping(glm::ivec2 viewport, glm::ivec2 grid, glm::vec2& 
   // Fill the viewport, cropping the grid's longer side, with square cells on screen.
   const float screenAspect = float(viewport.x) / float(std::max(viewport.y, 1));
   const float gridAspect = float(grid.x) / float(grid.y);
-  scale = screenAspect > gridAspect ? glm::vec2(1.0f, gridAspect / screenAspect) : glm::vec2(screenAspect / gridAspect, 1.0f);
+  scale = screenAspect > gridAspect ? glm::vec2(1.0f, gridAspect / screenAspect)
+                                    : glm::vec2(screenAspect / gridAspect, 1.0f);
   offset = 0.5f * (1.0f - scale);
 }
 

@@ -8,7 +8,8 @@ namespace tidepool {
 const std::vector<ModelEntry>& models() {
   static const std::vector<ModelEntry> table = {
       {"blank", "no simulation: clears to a colour (the shell before any model)", createBlankStage},
-      {"ripples", "heightfield water: wave equation or the seed's spring model, 2D refraction view", createRipplesStage},
+      {"ripples", "heightfield water: wave equation or the seed's spring model, 2D refraction view",
+       createRipplesStage},
   };
   return table;
 }

@@ -62,7 +62,8 @@ class RipplesStage final : public Stage {
 
 }  // namespace
 
-std::unique_ptr<Stage> createRipplesStage(const io::Json& params, const std::string& where, gl::ShaderLibrary& shaders) {
+std::unique_ptr<Stage> createRipplesStage(const io::Json& params, const std::string& where,
+                                          gl::ShaderLibrary& shaders) {
   ripples::Params model;
   RipplesViewParams view;
   std::vector<Drop> drops;
@@ -87,15 +88,16 @@ std::unique_ptr<Stage> createRipplesStage(const io::Json& params, const std::str
     rest.erase("drops");
   }
   if (params.is_null()) rest = nullptr;
-  readParams(rest,
-             [&](ParamVisitor& v) {
-               ripples::visit(v, model);
-               if (v.beginGroup({"view", "View", ""})) {
-                 visit(v, view);
-                 v.endGroup();
-               }
-             },
-             where);
+  readParams(
+      rest,
+      [&](ParamVisitor& v) {
+        ripples::visit(v, model);
+        if (v.beginGroup({"view", "View", ""})) {
+          visit(v, view);
+          v.endGroup();
+        }
+      },
+      where);
   return std::make_unique<RipplesStage>(shaders, model, view, std::move(drops));
 }
 

@@ -95,9 +95,10 @@ void Ripples::step(double frameSeconds, gl::GpuProfiler& profiler) {
   }
   m_lastSubsteps = substeps;
   if (m_params.rule == Rule::Wave && wasStable && m_lastCourant > kCourantLimit2D)
-    log::warn(fmt("ripples: Courant number C = %.3f exceeds the 2D stability limit 1/sqrt(2) = %.3f: the surface will blow up "
-                  "(more substeps, a smaller wave speed or larger cells)",
-                  m_lastCourant, kCourantLimit2D));
+    log::warn(fmt(
+        "ripples: Courant number C = %.3f exceeds the 2D stability limit 1/sqrt(2) = %.3f: the surface will blow up "
+        "(more substeps, a smaller wave speed or larger cells)",
+        m_lastCourant, kCourantLimit2D));
 }
 
 void Ripples::touch(float x, float y, float radius, float depth) {

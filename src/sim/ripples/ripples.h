@@ -22,19 +22,19 @@ class Ripples {
   Params& params() { return m_params; }  // edits apply at the next step (size changes re-allocate)
   const Params& params() const { return m_params; }
 
-  void reset();                                             // flat water at rest
+  void reset();                                               // flat water at rest
   void step(double frameSeconds, gl::GpuProfiler& profiler);  // one frame = substepsFor() steps
-  void stepOnce(double dt);                                 // exactly one step of dt seconds
+  void stepOnce(double dt);                                   // exactly one step of dt seconds
   // Adds the cosine bump at (x, y) in [0,1]^2 of the grid; depth in metres, radius in grid widths.
   void touch(float x, float y, float radius, float depth);
 
   const gl::Buffer& state() const { return m_state[m_current]; }  // vec2 (h, v) per cell
-  void upload(const std::vector<float>& heightAndVelocity);        // 2 floats per cell
-  std::vector<float> download() const;                             // 2 floats per cell
+  void upload(const std::vector<float>& heightAndVelocity);       // 2 floats per cell
+  std::vector<float> download() const;                            // 2 floats per cell
   double time() const { return m_time; }
   int lastSubsteps() const { return m_lastSubsteps; }
   float lastCourant() const { return m_lastCourant; }  // wave rule, of the last step
-  std::string status() const;                            // one line: size, substeps, C, warnings
+  std::string status() const;                          // one line: size, substeps, C, warnings
 
  private:
   void allocate();

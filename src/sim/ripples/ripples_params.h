@@ -22,20 +22,20 @@ struct Params {
   float velDamping = 0.3f;        // 1/s: v *= max(0, 1 - velDamping·dt)
   float posDamping = 0.0f;        // 1/s: h += (mean4 - h)·min(posDamping·dt, 1)
   Boundary boundary = Boundary::Reflecting;
-  int spongeCells = 24;           // absorbing boundary width, cells
-  float spongeDamping = 20.0f;    // 1/s at the outermost cell
-  bool autoSubsteps = true;       // pick substeps so that C <= courantTarget · 1/√2
-  float courantTarget = 0.5f;     // fraction of the 2D limit used by autoSubsteps
-  int substeps = 4;               // per frame when autoSubsteps is off
+  int spongeCells = 24;         // absorbing boundary width, cells
+  float spongeDamping = 20.0f;  // 1/s at the outermost cell
+  bool autoSubsteps = true;     // pick substeps so that C <= courantTarget · 1/√2
+  float courantTarget = 0.5f;   // fraction of the 2D limit used by autoSubsteps
+  int substeps = 4;             // per frame when autoSubsteps is off
   // The seed rule (water-simulation-gpu), in its own units: heights in "range units", dt = timeScale·frame s.
   float seedElasticity = 0.7f;    // k: spring toward the rest height
   float seedPropagation = 20.0f;  // c: pull toward the mean of the 4 neighbours
   float seedFriction = 0.995f;    // velocity factor per step
   float seedTimeScale = 10.0f;    // seed: dt = 10·frameSeconds
   // Interaction (mouse, drops): the seed's cosine bump.
-  float touchRadius = 0.03f;      // fraction of the grid width
-  float touchDepth = -0.04f;      // m; dragging uses a tenth of it per frame
-  float rainRate = 0.0f;          // random drops per second
+  float touchRadius = 0.03f;  // fraction of the grid width
+  float touchDepth = -0.04f;  // m; dragging uses a tenth of it per frame
+  float rainRate = 0.0f;      // random drops per second
 };
 
 void visit(ParamVisitor& v, Params& p);

@@ -16,7 +16,8 @@ struct State {
 };
 
 inline State fromInterleaved(int width, int height, const std::vector<float>& hv) {
-  State s{width, height, std::vector<double>(std::size_t(width) * height), std::vector<double>(std::size_t(width) * height)};
+  State s{width, height, std::vector<double>(std::size_t(width) * height),
+          std::vector<double>(std::size_t(width) * height)};
   for (std::size_t i = 0; i < s.h.size(); ++i) {
     s.h[i] = hv[2 * i];
     s.v[i] = hv[2 * i + 1];
