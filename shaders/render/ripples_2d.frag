@@ -4,15 +4,11 @@
 // uFloorDepth, water colour deepens with the refracted path length, plus a specular glint.
 // The state SSBO is read directly; normals come from central differences interpolated
 // bilinearly between cells, so the picture stays smooth when a cell covers several pixels.
-#include "ripples/bindings.glsl"
+#include "render/ripples_surface.glsl"
 
-layout(std430, binding = RIPPLES_STATE_IN) readonly buffer State { vec2 state[]; };
-
-uniform ivec2 uSize;         // cells
 uniform vec2 uUvScale;       // screen uv -> grid uv (aspect-preserving "cover")
 uniform vec2 uUvOffset;
 uniform float uSlopeScale;   // exaggerates slopes: 1 = physical (height m / cell size m)
-uniform float uCellSize;     // m
 uniform float uFloorDepth;   // in grid widths
 uniform float uEta;          // refraction index ratio air/water (seed: 0.9)
 uniform vec3 uWaterColor;
@@ -24,21 +20,9 @@ uniform sampler2D uFloor;
 in vec2 vUv;
 out vec4 fragColor;
 
-float heightAt(ivec2 p) { return state[clamp(p.y, 0, uSize.y - 1) * uSize.x + clamp(p.x, 0, uSize.x - 1)].x; }
-
-vec2 gradientAt(ivec2 p) {
-  return vec2(heightAt(p + ivec2(1, 0)) - heightAt(p - ivec2(1, 0)),
-              heightAt(p + ivec2(0, 1)) - heightAt(p - ivec2(0, 1))) / (2.0 * uCellSize);
-}
-
 void main() {
   const vec2 uv = vUv * uUvScale + uUvOffset;
-  const vec2 g = uv * vec2(uSize) - 0.5;
-  const ivec2 c = ivec2(floor(g));
-  const vec2 f = g - vec2(c);
-  const vec2 grad = mix(mix(gradientAt(c), gradientAt(c + ivec2(1, 0)), f.x),
-                        mix(gradientAt(c + ivec2(0, 1)), gradientAt(c + ivec2(1, 1)), f.x), f.y);
-  const vec3 n = normalize(vec3(-grad * uSlopeScale, 1.0));
+  const vec3 n = normalize(vec3(-slopeBilinear(uv) * uSlopeScale, 1.0));
   const vec3 eye = vec3(0.0, 0.0, -1.0);
   vec3 r = refract(eye, n, uEta);
   vec3 color = uWaterColor;

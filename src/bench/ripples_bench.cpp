@@ -1,5 +1,6 @@
 // `tidepool bench ripples --size 512..4096`: ms per wave step and effective GB/s against a
-// glCopyBufferSubData of the same state bytes measured in the same run, plus the 2D view at 1080p.
+// glCopyBufferSubData of the same state bytes measured in the same run, plus both views at 1080p
+// (the 3D frame includes the caustics pass).
 #include <cmath>
 #include <cstdio>
 
@@ -7,6 +8,7 @@
 #include "gl/buffer.h"
 #include "gl/framebuffer.h"
 #include "render/ripples_view.h"
+#include "render/ripples_view3d.h"
 #include "sim/ripples/ripples.h"
 
 namespace tidepool::bench {
@@ -16,9 +18,10 @@ int run(Env& env, const std::string& sizes) {
   constexpr int kStepsPerSample = 10;
   std::printf("ripples benchmark on %s (wave rule, C = 0.5, %d steps per sample, medians of %d)\n", env.device.c_str(),
               kStepsPerSample, env.common.repeats);
-  Table table({"cells", "ms/step", "GB/s", "copy GB/s", "% of copy", "view 1080p ms"});
+  Table table({"cells", "ms/step", "GB/s", "copy GB/s", "% of copy", "2D view 1080p ms", "3D+caustics 1080p ms"});
   RenderTarget target(1920, 1080);
   RipplesView view(env.shaders);
+  RipplesView3D view3d(env.shaders);
   gl::GpuProfiler noProfiler;
   noProfiler.setEnabled(false);
   for (std::size_t size : parseSizes(sizes)) {
@@ -28,18 +31,21 @@ int run(Env& env, const std::string& sizes) {
     ripples::Ripples model(env.shaders, p);
     model.touch(0.5f, 0.5f, 0.1f, -0.05f);
     const double dt = 0.5 * p.cellSize / p.waveSpeed;
-    const double stepMs = gpuMedianMs(env.common, [&] {
-                            for (int i = 0; i < kStepsPerSample; ++i) model.stepOnce(dt);
-                          }) / kStepsPerSample;
+    const double stepMs = gpuMedianMs(env.common,
+                                      [&] {
+                                        for (int i = 0; i < kStepsPerSample; ++i) model.stepOnce(dt);
+                                      }) /
+                          kStepsPerSample;
     // One step reads and writes the (h, v) state once: 16 bytes per cell.
     const double bytes = double(size) * size * 16.0;
     const gl::Buffer& state = model.state();
     gl::Buffer copy(state.size());
     const double copyMs = gpuMedianMs(env.common, [&] { state.copyTo(copy, state.size()); });
     const double viewMs = gpuMedianMs(env.common, [&] { view.render(model, target, noProfiler); });
+    const double view3dMs = gpuMedianMs(env.common, [&] { view3d.render(model, target, noProfiler); });
     const double gbps = bytes / (stepMs * 1e6), copyGbps = bytes / (copyMs * 1e6);
     table.add({std::to_string(size) + "^2", fixed(stepMs, 4), fixed(gbps, 1), fixed(copyGbps, 1),
-               fixed(100.0 * gbps / copyGbps, 1), fixed(viewMs, 4)});
+               fixed(100.0 * gbps / copyGbps, 1), fixed(viewMs, 4), fixed(view3dMs, 4)});
   }
   table.print();
   if (const std::string caveat = timingCaveat(env.device); !caveat.empty()) std::printf("%s\n", caveat.c_str());

@@ -1,8 +1,7 @@
 #include "render/ripples_view.h"
 
-#include "io/png.h"
+#include "render/textures.h"
 #include "ripples/bindings.glsl"
-#include "scene/scene.h"
 
 namespace tidepool {
 
@@ -16,13 +15,7 @@ void visit(ParamVisitor& v, RipplesViewParams& p) {
   v.real({"tile_repeat", "Tile repeat", "floor tiles across the grid"}, p.tileRepeat, 0.25f, 64.0f);
 }
 
-RipplesView::RipplesView(gl::ShaderLibrary& shaders) : m_shaders(shaders) {
-  const io::Image tiles = io::readPng(findAssetDir() / "textures" / "tiles.png");
-  m_floor = gl::Texture2D(tiles.width, tiles.height, GL_RGBA8, 1 + int(std::log2(std::max(tiles.width, tiles.height))));
-  m_floor.upload(GL_RGBA, GL_UNSIGNED_BYTE, tiles.rgba.data());
-  m_floor.generateMipmaps();
-  m_floor.setWrap(GL_REPEAT);
-}
+RipplesView::RipplesView(gl::ShaderLibrary& shaders) : m_shaders(shaders), m_floor(loadRepeatingTexture("tiles.png")) {}
 
 void RipplesView::coverMapping(glm::ivec2 viewport, glm::ivec2 grid, glm::vec2& scale, glm::vec2& offset) const {
   // Fill the viewport, cropping the grid's longer side, with square cells on screen.

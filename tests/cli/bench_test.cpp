@@ -9,8 +9,8 @@ using test::runTidepool;
 
 TEST(Bench, RipplesPrintsItsTableAndCsv) {
   test::TempDir dir;
-  auto r = runTidepool({"bench", "ripples", "--size", "32,64", "--repeats", "2", "--warmup", "0", "--csv",
-                        (dir / "r.csv").string()});
+  auto r = runTidepool(
+      {"bench", "ripples", "--size", "32,64", "--repeats", "2", "--warmup", "0", "--csv", (dir / "r.csv").string()});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("ms/step"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("64^2"), std::string::npos) << r.out;
