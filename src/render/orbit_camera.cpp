@@ -35,8 +35,8 @@ void OrbitCamera::handle(const Input& in) {
 
 glm::vec3 OrbitCamera::eye() const {
   const float c = std::cos(m_params.pitch);
-  return m_params.target +
-         m_params.distance * glm::vec3(c * std::cos(m_params.yaw), c * std::sin(m_params.yaw), std::sin(m_params.pitch));
+  return m_params.target + m_params.distance * glm::vec3(c * std::cos(m_params.yaw), c * std::sin(m_params.yaw),
+                                                         std::sin(m_params.pitch));
 }
 
 glm::mat4 OrbitCamera::view() const { return glm::lookAt(eye(), m_params.target, glm::vec3(0, 0, 1)); }

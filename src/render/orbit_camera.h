@@ -11,11 +11,11 @@
 namespace tidepool {
 
 struct OrbitCameraParams {
-  glm::vec3 target{0.5f, 0.5f, 0.15f}; // world point the camera orbits
-  float distance = 1.6f;               // from the target, world units
-  float yaw = -0.785f;                 // radians around z
-  float pitch = 0.62f;                 // radians above the horizon
-  float fovDegrees = 45.0f;            // vertical
+  glm::vec3 target{0.5f, 0.5f, 0.15f};  // world point the camera orbits
+  float distance = 1.6f;                // from the target, world units
+  float yaw = -0.785f;                  // radians around z
+  float pitch = 0.62f;                  // radians above the horizon
+  float fovDegrees = 45.0f;             // vertical
 };
 void visit(ParamVisitor& v, OrbitCameraParams& p);
 

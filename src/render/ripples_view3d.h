@@ -15,16 +15,16 @@
 namespace tidepool {
 
 struct RipplesView3DParams {
-  float exaggeration = 4.0f;                   // heights and slopes (1 = physical)
-  float waterLevel = 0.3f;                     // rest surface above the floor, tank widths
-  int meshCells = 256;                         // surface quads along x
-  int lightGrid = 512;                         // caustic light points along x
-  int causticsSize = 256;                      // caustics texels along x
-  glm::vec3 sunDir{0.25f, 0.35f, 1.0f};        // towards the sun
-  float ambient = 0.3f;                        // floor light without sun
-  glm::vec3 waterColor{0.03f, 0.17f, 0.24f};   // linear RGB, what deep water tends to
-  float viewDistance = 0.5f;                   // tank widths of water that absorb ~63%
-  float tileRepeat = 4.0f;                     // floor tiles across the tank
+  float exaggeration = 4.0f;                  // heights and slopes (1 = physical)
+  float waterLevel = 0.3f;                    // rest surface above the floor, tank widths
+  int meshCells = 256;                        // surface quads along x
+  int lightGrid = 512;                        // caustic light points along x
+  int causticsSize = 256;                     // caustics texels along x
+  glm::vec3 sunDir{0.25f, 0.35f, 1.0f};       // towards the sun
+  float ambient = 0.3f;                       // floor light without sun
+  glm::vec3 waterColor{0.03f, 0.17f, 0.24f};  // linear RGB, what deep water tends to
+  float viewDistance = 0.5f;                  // tank widths of water that absorb ~63%
+  float tileRepeat = 4.0f;                    // floor tiles across the tank
   bool caustics = true;
 };
 void visit(ParamVisitor& v, RipplesView3DParams& p);

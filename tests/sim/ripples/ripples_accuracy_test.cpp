@@ -124,6 +124,53 @@ TEST_F(RipplesAccuracy, PhaseSpeedAlongTheDiagonalLagsLess) {
   EXPECT_GT(measured, predictedPhaseRatio(std::hypot(k, k), 0.0, 0.5)) << "an axis wave of the same length lags more";
 }
 
+// Radius (cells) of the outgoing ring's crest: radially averaged height, maximum beyond `minRadius`,
+// refined by a parabola through the three bins around it.
+double crestRadius(const std::vector<float>& hv, int n, double minRadius) {
+  std::vector<double> sum(std::size_t(n), 0.0), count(std::size_t(n), 0.0);
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      const double r = std::hypot(x + 0.5 - 0.5 * n, y + 0.5 - 0.5 * n);
+      const std::size_t bin = std::size_t(std::lround(r));
+      if (bin >= sum.size()) continue;
+      sum[bin] += hv[2 * (std::size_t(y) * n + x)];
+      count[bin] += 1;
+    }
+  std::size_t best = std::size_t(minRadius);
+  for (std::size_t b = best; b + 1 < sum.size(); ++b)
+    if (count[b] > 0 && sum[b] / count[b] > sum[best] / count[best]) best = b;
+  const double a = sum[best - 1] / count[best - 1], m = sum[best] / count[best], c = sum[best + 1] / count[best + 1];
+  return double(best) + 0.5 * (a - c) / (a - 2 * m + c);
+}
+
+TEST_F(RipplesAccuracy, GaussianRingFrontTravelsAtTheNumericalPhaseSpeed) {
+  // A Gaussian bump of width sigma = 4 cells: its spectrum peaks near 2*pi*sigma = 25 cells per
+  // wavelength (>= 10). The ring crest is timed between two radii well after it has separated.
+  const int n = 256;
+  const double sigma = 4.0, courantNumber = 0.5;
+  Params p = periodicGrid(n, n);
+  Ripples r(shaders(), p);
+  std::vector<float> hv(std::size_t(n) * n * 2, 0.0f);
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      const double d2 = std::pow(x + 0.5 - 0.5 * n, 2) + std::pow(y + 0.5 - 0.5 * n, 2);
+      hv[2 * (std::size_t(y) * n + x)] = float(0.01 * std::exp(-d2 / (2 * sigma * sigma)));
+    }
+  r.upload(hv);
+  const double dt = courantNumber * p.cellSize / p.waveSpeed;
+  const int steps1 = 80, steps2 = 200;  // crest near 40 and 100 cells
+  for (int i = 0; i < steps1; ++i) r.stepOnce(dt);
+  const double r1 = crestRadius(r.download(), n, 20);
+  for (int i = steps1; i < steps2; ++i) r.stepOnce(dt);
+  const double r2 = crestRadius(r.download(), n, 60);
+  const double measured = (r2 - r1) / ((steps2 - steps1) * courantNumber);  // c̃/c
+  const double k = 1.0 / sigma;  // dominant wavenumber of the Gaussian (rad/cell)
+  const double predicted = predictedPhaseRatio(k, 0.0, courantNumber);
+  std::printf("ring crest: r = %.2f -> %.2f cells, speed %.4f c, predicted phase speed %.4f c\n", r1, r2, measured,
+              predicted);
+  EXPECT_NEAR(measured / predicted, 1.0, 0.01);
+}
+
 TEST_F(RipplesAccuracy, WaveRuleStabilityLimitIsOneOverSqrtTwo) {
   const Params p = periodicGrid(32, 32);
   const double limit = 1.0 / std::sqrt(2.0);
