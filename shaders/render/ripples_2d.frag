@@ -16,6 +16,7 @@ uniform float uViewDistance; // refracted path length (grid widths) at which the
 uniform vec3 uLightDir;
 uniform float uTileRepeat;   // floor tiles across the grid
 uniform sampler2D uFloor;
+uniform vec4 uSphere;        // xy: centre (grid uv), z: radius (grid widths), w: centre height / radius; z = 0: none
 
 in vec2 vUv;
 out vec4 fragColor;
@@ -32,5 +33,16 @@ void main() {
     color = mix(ground, uWaterColor, clamp(length(r) / uViewDistance, 0.0, 1.0));
   }
   const float glint = smoothstep(0.98, 1.0, dot(reflect(normalize(uLightDir), n), -eye));
-  fragColor = vec4(color + vec3(glint), 1.0);
+  color += vec3(glint);
+  if (uSphere.z > 0.0) {
+    // The part of the ball above the water, seen from straight above.
+    const vec2 d = (uv - uSphere.xy) * vec2(1.0, float(uSize.y) / float(uSize.x)) / uSphere.z;
+    const float r2 = dot(d, d);
+    if (r2 < 1.0 && uSphere.w + sqrt(1.0 - r2) > 0.0) {
+      const vec3 ballNormal = vec3(d, sqrt(1.0 - r2));
+      const float light = 0.3 + 0.7 * max(dot(ballNormal, -normalize(uLightDir)), 0.0);
+      color = vec3(0.85, 0.35, 0.12) * light + vec3(0.4) * pow(max(ballNormal.z, 0.0), 60.0);
+    }
+  }
+  fragColor = vec4(color, 1.0);
 }

@@ -53,6 +53,13 @@ void RipplesView::render(const ripples::Ripples& model, RenderTarget& target, gl
   p.set("uLightDir", m_params.lightDir);
   p.set("uTileRepeat", m_params.tileRepeat);
   p.set("uFloor", 0);
+  glm::vec4 sphere(0.0f);
+  if (model.sphereActive()) {
+    const float width = float(mp.width) * mp.cellSize, height = float(mp.height) * mp.cellSize;
+    const glm::vec3 c = model.sphereCentre();
+    sphere = glm::vec4(c.x / width, c.y / height, mp.sphereRadius / width, c.z / mp.sphereRadius);
+  }
+  p.set("uSphere", sphere);
   m_floor.bind(0);
   model.state().bindBase(GL_SHADER_STORAGE_BUFFER, RIPPLES_STATE_IN);
   target.bind();

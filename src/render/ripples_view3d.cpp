@@ -99,6 +99,23 @@ void RipplesView3D::render(const ripples::Ripples& model, RenderTarget& target, 
   shading(walls);
   walls.set("uWallTop", 2.0f * m_params.waterLevel);
   glDrawArrays(GL_TRIANGLES, 0, 24);
+  if (model.sphereActive()) {
+    // The ball at true scale (heights are exaggerated, the ball is not).
+    const float metresToWorld = 1.0f / (float(mp.width) * mp.cellSize);
+    const glm::vec3 c = model.sphereCentre();
+    gl::Program& ball = m_shaders.program({"render/sphere.vert", "render/sphere.frag"});
+    ball.use();
+    ball.set("uSegments", glm::ivec2(48, 24));
+    ball.set("uCentre", glm::vec3(c.x * metresToWorld, c.y * metresToWorld, m_params.waterLevel + c.z * metresToWorld));
+    ball.set("uRadius", mp.sphereRadius * metresToWorld);
+    ball.set("uViewProj", viewProj);
+    ball.set("uColor", glm::vec3(0.85f, 0.35f, 0.12f));
+    ball.set("uSunDir", glm::normalize(m_params.sunDir));
+    ball.set("uEye", m_camera.eye());
+    glCullFace(GL_FRONT);  // the generated winding faces inwards
+    glDrawArrays(GL_TRIANGLES, 0, 6 * 48 * 24);
+    glCullFace(GL_BACK);
+  }
   glDisable(GL_CULL_FACE);  // the surface is seen from both sides at grazing angles
   gl::Program& surface = m_shaders.program({"render/ripples_surface.vert", "render/ripples_surface.frag"});
   shading(surface);

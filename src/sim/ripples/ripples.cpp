@@ -47,8 +47,23 @@ gl::Program& Ripples::stepProgram() {
   return m_shaders.program({"ripples/step.comp"}, defines);
 }
 
+void Ripples::pushBody(double dt) {
+  gl::Program& p = m_shaders.program({"ripples/body.comp"});
+  p.use();
+  p.set("uSize", glm::ivec2(m_width, m_height));
+  p.set("uBefore", ripples::sphereCentre(m_params, m_time));
+  p.set("uNow", ripples::sphereCentre(m_params, m_time + dt));
+  p.set("uRadius", m_params.sphereRadius);
+  p.set("uCellSize", m_params.cellSize);
+  p.set("uCoupling", m_params.sphereCoupling);
+  m_state[m_current].bindBase(GL_SHADER_STORAGE_BUFFER, RIPPLES_STATE_OUT);
+  glDispatchCompute(GLuint((m_width + kTile - 1) / kTile), GLuint((m_height + kTile - 1) / kTile), 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
 void Ripples::stepOnce(double dt) {
   if (m_params.width != m_width || m_params.height != m_height) allocate();
+  if (m_params.sphere) pushBody(dt);
   gl::Program& p = stepProgram();
   const Params& q = m_params;
   p.use();

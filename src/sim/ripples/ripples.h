@@ -32,12 +32,15 @@ class Ripples {
   void upload(const std::vector<float>& heightAndVelocity);       // 2 floats per cell
   std::vector<float> download() const;                            // 2 floats per cell
   double time() const { return m_time; }
+  bool sphereActive() const { return m_params.sphere; }
+  glm::vec3 sphereCentre() const { return ripples::sphereCentre(m_params, m_time); }  // m, see Params
   int lastSubsteps() const { return m_lastSubsteps; }
   float lastCourant() const { return m_lastCourant; }  // wave rule, of the last step
   std::string status() const;                          // one line: size, substeps, C, warnings
 
  private:
   void allocate();
+  void pushBody(double dt);  // the sphere's displacement change over the next step
   gl::Program& stepProgram();
 
   gl::ShaderLibrary& m_shaders;

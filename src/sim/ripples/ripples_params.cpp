@@ -33,6 +33,22 @@ void visit(ParamVisitor& v, Params& p) {
     v.real({"rain", "Rain", "random drops per second"}, p.rainRate, 0.0f, 1000.0f);
     v.endGroup();
   }
+  if (v.beginGroup({"sphere", "Sphere", "a ball circling through the surface"})) {
+    v.flag({"enabled", "Enabled", ""}, p.sphere);
+    v.real({"radius", "Radius", "m"}, p.sphereRadius, 0.001f, 100.0f);
+    v.real({"height", "Height", "centre above the rest surface, m"}, p.sphereHeight, -100.0f, 100.0f);
+    v.real({"orbit", "Orbit", "path radius, grid widths"}, p.sphereOrbit, 0.0f, 0.5f);
+    v.real({"period", "Period", "seconds per round"}, p.spherePeriod, 0.1f, 1000.0f);
+    v.real({"coupling", "Coupling", "fraction of the displaced column moved per step"}, p.sphereCoupling, 0.0f, 1.0f);
+    v.endGroup();
+  }
+}
+
+glm::vec3 sphereCentre(const Params& p, double t) {
+  const double width = p.width * double(p.cellSize), height = p.height * double(p.cellSize);
+  const double angle = 2.0 * 3.14159265358979 * t / p.spherePeriod;
+  return {float(0.5 * width + p.sphereOrbit * width * std::cos(angle)),
+          float(0.5 * height + p.sphereOrbit * width * std::sin(angle)), p.sphereHeight};
 }
 
 int substepsFor(const Params& p, double frameSeconds) {

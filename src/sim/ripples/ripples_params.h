@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <glm/glm.hpp>
 
 #include "scene/param.h"
 
@@ -36,12 +37,22 @@ struct Params {
   float touchRadius = 0.03f;  // fraction of the grid width
   float touchDepth = -0.04f;  // m; dragging uses a tenth of it per frame
   float rainRate = 0.0f;      // random drops per second
+  // A sphere circling through the surface (scenes), pushing the water aside.
+  bool sphere = false;
+  float sphereRadius = 0.5f;    // m
+  float sphereHeight = 0.0f;    // centre above the rest surface, m (0: half submerged)
+  float sphereOrbit = 0.25f;    // radius of its circular path, grid widths
+  float spherePeriod = 8.0f;    // s per round
+  float sphereCoupling = 0.5f;  // fraction of the displaced column moved per step
 };
 
 void visit(ParamVisitor& v, Params& p);
 
 // Courant number C = c·dt/dx of the wave rule for a given step.
 inline float courant(const Params& p, double dt) { return float(p.waveSpeed * dt / p.cellSize); }
+
+// Centre of the sphere at time t: metres from the grid corner, z above the rest surface.
+glm::vec3 sphereCentre(const Params& p, double t);
 
 // Substeps per frame: fixed, or the fewest that keep C under courantTarget·1/√2.
 int substepsFor(const Params& p, double frameSeconds);

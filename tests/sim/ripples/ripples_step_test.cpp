@@ -131,3 +131,33 @@ TEST_F(RipplesStep, CourantAboveTheLimitIsWarnedInLogAndStatus) {
   EXPECT_NE(warnings[0].find("exceeds the 2D stability limit"), std::string::npos);
   EXPECT_NE(r.status().find("UNSTABLE"), std::string::npos) << r.status();
 }
+
+TEST_F(RipplesStep, MovingSpherePushesWaterAsideWithoutCreatingIt) {
+  Params p = small(Rule::Wave, Boundary::Reflecting);
+  p.width = p.height = 64;
+  p.velDamping = p.posDamping = 0;
+  p.waveSpeed = 0;  // isolate the body coupling from wave propagation
+  p.sphere = true;
+  p.sphereRadius = 0.2f;  // 10 cells
+  p.sphereHeight = 0.0f;
+  p.sphereOrbit = 0.2f;
+  p.spherePeriod = 1e6f;  // standing still
+  Ripples still(shaders(), p);
+  still.stepOnce(0.01);
+  for (float x : still.download()) ASSERT_EQ(x, 0.0f) << "a resting sphere moves no water";
+
+  p.spherePeriod = 4.0f;
+  Ripples moving(shaders(), p);
+  moving.stepOnce(0.05);
+  const std::vector<float> hv = moving.download();
+  double sum = 0, magnitude = 0, minH = 0, maxH = 0;
+  for (std::size_t i = 0; i < hv.size(); i += 2) {
+    sum += hv[i];
+    magnitude += std::abs(hv[i]);
+    minH = std::min(minH, double(hv[i]));
+    maxH = std::max(maxH, double(hv[i]));
+  }
+  EXPECT_LT(minH, -1e-4) << "water ahead of the sphere is pushed down";
+  EXPECT_GT(maxH, 1e-4) << "and flows back behind it";
+  EXPECT_LT(std::abs(sum), 1e-3 * magnitude) << "the same submerged volume before and after: no water created";
+}
