@@ -13,6 +13,8 @@ packages=(
   libegl-mesa0 libgl1-mesa-dri libosmesa6
   # tests: the window path runs under Xvfb; CI checks formatting
   xvfb xauth clang-format
+  # charts of speed against accuracy (tidepool sweep)
+  gnuplot-nox
 )
 missing=()
 for p in "${packages[@]}"; do
