@@ -54,10 +54,10 @@ double median(std::vector<double> values);
 
 // Median GPU milliseconds (GL_TIME_ELAPSED) of `work` over common.repeats runs, after
 // common.warmup untimed runs. `work` must not open GpuProfiler scopes (queries cannot nest).
+// On a software renderer (llvmpipe) the wall clock around glFinish is used instead.
 double gpuMedianMs(const Common& common, const std::function<void()>& work);
 
-// A line to print under tables measured on a software renderer, whose timer queries do not
-// measure execution (empty for hardware).
+// A line to print under tables measured on a software renderer (empty for hardware).
 std::string timingCaveat(const std::string& device);
 std::string fixed(double value, int decimals);
 // "65536,1M,16M", "2^16..2^24" or "512..4096" (doubling) -> sizes; throws Error naming the bad token.
