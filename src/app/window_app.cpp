@@ -125,7 +125,20 @@ int runWindow(const WindowJob& job) {
     }
     if (ui.resetRequested) {
       ui.resetRequested = false;
+      ui.divergence.clear();
       stage->reset();
+    }
+    if (ui.recoverRequested) {
+      ui.recoverRequested = false;
+      if (stage->recover()) {
+        ui.divergence.clear();
+        ui.paused = false;
+        ui.message = "resumed from the last good state with half the time step";
+        ui.messageIsError = false;
+      } else {
+        ui.message = "no good state to go back to: reset (R) instead";
+        ui.messageIsError = true;
+      }
     }
     stage->input(readInput(window, lastCursor, g_scroll));
 
@@ -135,6 +148,11 @@ int runWindow(const WindowJob& job) {
     if (!ui.paused || std::exchange(ui.stepOnce, false)) stage->step(kFrameSeconds, profiler);
     stage->render(target, profiler);
     profiler.endFrame();
+    if (const auto d = stage->divergence(); d && ui.divergence.empty()) {
+      ui.divergence = d->message;
+      log::error(d->message);
+      ui.paused = true;  // say which method failed at which dt, and wait for the user
+    }
 
     glBindFramebuffer(GL_READ_FRAMEBUFFER, target.framebuffer().id());
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);

@@ -96,6 +96,9 @@ class RipplesStage final : public Stage {
   }
   double simTime() const override { return m_model.time(); }
   std::string status() const override { return m_model.status(); }
+  std::optional<DivergenceReport> divergence() const override { return m_model.divergence(); }
+  bool recover() override { return m_model.recover(); }
+  void flushChecks() override { m_model.flushChecks(); }
 
  private:
   // The UI edits m_view; the views take their copies before drawing.

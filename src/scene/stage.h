@@ -5,6 +5,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,7 @@
 #include "render/target.h"
 #include "scene/input.h"
 #include "scene/param.h"
+#include "sim/divergence.h"
 
 namespace tidepool {
 
@@ -27,6 +29,13 @@ class Stage {
   virtual void input(const Input&) {}
   virtual double simTime() const = 0;                // simulated seconds since reset
   virtual std::string status() const { return ""; }  // one line for the UI (counts, warnings)
+
+  // Failing loudly: a model that watches itself reports a blow-up here (non-blocking, a frame or
+  // two late), can go back to its last good state with half the time step, and settles the
+  // check still in flight at the end of a headless run.
+  virtual std::optional<DivergenceReport> divergence() const { return std::nullopt; }
+  virtual bool recover() { return false; }
+  virtual void flushChecks() {}
 };
 
 struct ModelEntry {

@@ -26,9 +26,11 @@ double msPerStep(gl::ShaderLibrary& shaders, int n, double courant) {
   const double dt = courant * p.cellSize / p.waveSpeed;
   constexpr int kSteps = 20;
   const bench::Common timing{"auto", "", 5, 1};
-  return bench::gpuMedianMs(timing, [&] {
-           for (int i = 0; i < kSteps; ++i) model.stepOnce(dt);
-         }) / kSteps;
+  return bench::gpuMedianMs(timing,
+                            [&] {
+                              for (int i = 0; i < kSteps; ++i) model.stepOnce(dt);
+                            }) /
+         kSteps;
 }
 
 Result dispersion(Env& env) {
@@ -40,7 +42,8 @@ Result dispersion(Env& env) {
   r.chart.title = "ripples-dispersion: phase-speed error against cost (wave rule, 5-point Laplacian, leapfrog)";
   r.chart.xLabel = "GPU ms per simulated second (8 m pool, 1 m waves)";
   r.chart.yLabel = "phase-speed error |c̃/c - 1|";
-  const std::vector<double> courants = env.quick ? std::vector<double>{0.25, 0.5} : std::vector<double>{0.1, 0.25, 0.5, 0.7};
+  const std::vector<double> courants =
+      env.quick ? std::vector<double>{0.25, 0.5} : std::vector<double>{0.1, 0.25, 0.5, 0.7};
   const std::vector<int> cells = env.quick ? std::vector<int>{8, 16} : std::vector<int>{4, 6, 8, 12, 16, 24, 32};
   for (double c : courants)
     for (int n : cells) {
@@ -83,9 +86,8 @@ Result stability(Env& env) {
     const double growth = ripples::noiseGrowth(env.shaders, grid, c * grid.cellSize / grid.waveSpeed, 2000, kCap);
     const bool stable = std::isfinite(growth);
     const double k = 2 * std::numbers::pi / 10;
-    const double phaseError =
-        stable ? std::abs(ripples::measuredPhaseRatio(env.shaders, 20, 8, k, 0.0, c, 3.0) - 1.0)
-               : std::numeric_limits<double>::quiet_NaN();
+    const double phaseError = stable ? std::abs(ripples::measuredPhaseRatio(env.shaders, 20, 8, k, 0.0, c, 3.0) - 1.0)
+                                     : std::numeric_limits<double>::quiet_NaN();
     Row g;
     g.method = "noise growth after 2000 steps";
     g.dt = c * grid.cellSize / grid.waveSpeed;

@@ -91,13 +91,14 @@ void drawChart(const Result& result, const std::string& device, const fs::path& 
   }
   const bool software = device.find("llvmpipe") != std::string::npos || device.find("softpipe") != std::string::npos;
   const ChartSpec& c = result.chart;
-  const std::string title = c.title + "\n{/*0.8 " + device + (software ? " (software renderer: development figures)" : "") + "}";
+  const std::string title =
+      c.title + "\n{/*0.8 " + device + (software ? " (software renderer: development figures)" : "") + "}";
   const fs::path script = fs::path(TIDEPOOL_SOURCE_DIR) / "bench" / "chart.gp";
   const std::string cmd = "gnuplot -c " + quoted(script.string()) + " " + quoted(dat.string()) + " " +
                           quoted(base.string()) + " " + quoted(title) + " " + quoted(c.xLabel) + " " +
-                          quoted(c.yLabel) + " " + (c.logX ? "1" : "0") + (c.logY ? "1" : "0") + (c.pareto ? "1" : "0") +
-                          " " + std::to_string(order.size()) + " " + csvNumber(c.markerX) + " " +
-                          quoted(c.markerLabel.empty() ? "-" : c.markerLabel);
+                          quoted(c.yLabel) + " " + (c.logX ? "1" : "0") + (c.logY ? "1" : "0") +
+                          (c.pareto ? "1" : "0") + " " + std::to_string(order.size()) + " " + csvNumber(c.markerX) +
+                          " " + quoted(c.markerLabel.empty() ? "-" : c.markerLabel);
   const int status = std::system(cmd.c_str());
   fs::remove(dat, ec);
   if (status != 0) throw Error("gnuplot failed drawing '" + base.string() + ".png' (see its message above)");

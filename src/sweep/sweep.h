@@ -15,22 +15,22 @@
 namespace tidepool::sweep {
 
 struct Row {
-  std::string method;        // curve: integrator, contact model, Courant number...
-  double dt = 0;             // s (0 when not applicable)
+  std::string method;  // curve: integrator, contact model, Courant number...
+  double dt = 0;       // s (0 when not applicable)
   int substeps = 1;
-  std::string resolution;    // N, grid size or cells per wavelength
-  double costMsPerSimS = 0;  // measured GPU ms per simulated second
+  std::string resolution;       // N, grid size or cells per wavelength
+  double costMsPerSimS = 0;     // measured GPU ms per simulated second
   std::vector<double> metrics;  // in the order of Study::metrics
   bool stable = true;
-  double x = 0, y = 0;       // the chart's coordinates (usually cost and one metric)
-  bool pareto = false;       // no other row is both cheaper and more accurate
+  double x = 0, y = 0;  // the chart's coordinates (usually cost and one metric)
+  bool pareto = false;  // no other row is both cheaper and more accurate
 };
 
 struct ChartSpec {
   std::string title, xLabel, yLabel;
   bool logX = true, logY = true;
-  bool pareto = true;        // mark the Pareto front (cost-vs-error charts)
-  double markerX = 0;        // a vertical line (e.g. a theoretical limit); 0: none
+  bool pareto = true;  // mark the Pareto front (cost-vs-error charts)
+  double markerX = 0;  // a vertical line (e.g. a theoretical limit); 0: none
   std::string markerLabel;
 };
 

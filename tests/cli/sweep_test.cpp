@@ -29,8 +29,8 @@ TEST(Sweep, ParetoFrontKeepsOnlyUndominatedStableRows) {
 TEST(Sweep, RipplesStudiesWriteCsvAndCharts) {
   test::TempDir dir;
   for (const std::string study : {"ripples-stability", "ripples-dispersion"}) {
-    auto r = test::runTidepool({"sweep", study, "--quick", "--csv-dir", dir.path().string(), "--chart-dir",
-                                dir.path().string()});
+    auto r = test::runTidepool(
+        {"sweep", study, "--quick", "--csv-dir", dir.path().string(), "--chart-dir", dir.path().string()});
     ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
     std::ifstream csv(dir / (study + ".csv"));
     std::string header, line;

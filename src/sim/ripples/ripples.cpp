@@ -2,13 +2,15 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 #include "base/log.h"
 #include "ripples/bindings.glsl"
 
 namespace tidepool::ripples {
 namespace {
-constexpr int kTile = 16;  // work-group edge of step.comp and touch.comp
+constexpr int kTile = 16;          // work-group edge of step.comp and touch.comp
+constexpr int kCheckInterval = 8;  // frames between divergence checks
 
 std::string fmt(const char* format, double a, double b = 0) {
   char buf[512];
@@ -30,6 +32,9 @@ void Ripples::allocate() {
                 " grid needs " + std::to_string(bytes >> 20) + " MiB per state buffer, more than this GPU's " +
                 std::to_string(maxBlock >> 20) + " MiB storage-buffer limit");
   for (gl::Buffer& b : m_state) b = gl::Buffer(bytes);
+  m_pending = gl::Buffer(bytes);
+  m_good = gl::Buffer(bytes);
+  m_health = gl::Buffer(4 * sizeof(GLuint));
   m_width = m_params.width;
   m_height = m_params.height;
   reset();
@@ -39,6 +44,11 @@ void Ripples::reset() {
   for (gl::Buffer& b : m_state) b.fillZero();
   m_current = 0;
   m_time = 0;
+  m_hasGood = false;
+  m_divergence.reset();
+  m_framesSinceCheck = 0;
+  std::vector<std::byte> discard;
+  m_readback.wait(discard);  // a check of the old state must not judge the new one
 }
 
 gl::Program& Ripples::stepProgram() {
@@ -92,6 +102,7 @@ void Ripples::stepOnce(double dt) {
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   m_current = 1 - m_current;
   m_time += dt;
+  m_lastDt = dt;
 }
 
 void Ripples::step(double frameSeconds, gl::GpuProfiler& profiler) {
@@ -109,11 +120,89 @@ void Ripples::step(double frameSeconds, gl::GpuProfiler& profiler) {
     for (int i = 0; i < substeps; ++i) stepOnce(frameSeconds / substeps);
   }
   m_lastSubsteps = substeps;
+  watch();
   if (m_params.rule == Rule::Wave && wasStable && m_lastCourant > kCourantLimit2D)
     log::warn(fmt(
         "ripples: Courant number C = %.3f exceeds the 2D stability limit 1/sqrt(2) = %.3f: the surface will blow up "
         "(more substeps, a smaller wave speed or larger cells)",
         m_lastCourant, kCourantLimit2D));
+}
+
+double Ripples::heightBound() const {
+  // Heights beyond half the pool's width are no water surface any more.
+  return m_params.rule == Rule::Seed ? 1e4 : 0.5 * m_width * double(m_params.cellSize);
+}
+
+void Ripples::watch() {
+  std::vector<std::byte> bytes;
+  if (m_readback.poll(bytes)) {
+    GLuint v[4];
+    std::memcpy(v, bytes.data(), sizeof v);
+    float maxH = 0, maxV = 0;
+    std::memcpy(&maxH, &v[0], sizeof maxH);
+    std::memcpy(&maxV, &v[1], sizeof maxV);
+    judge({m_pendingTime, double(v[2]), double(maxH)});
+  }
+  if (m_readback.pending() || ++m_framesSinceCheck < kCheckInterval || m_divergence) return;
+  m_framesSinceCheck = 0;
+  m_health.fillZero();
+  gl::Program& p = m_shaders.program({"ripples/health.comp"});
+  p.use();
+  p.set("uCells", GLuint(m_width * m_height));
+  m_state[m_current].bindBase(GL_SHADER_STORAGE_BUFFER, RIPPLES_STATE_IN);
+  m_health.bindBase(GL_SHADER_STORAGE_BUFFER, RIPPLES_HEALTH);
+  p.dispatchThreads(std::size_t(m_width) * m_height);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  m_state[m_current].copyTo(m_pending, m_pending.size());  // the state this check judges
+  m_pendingTime = m_time;
+  m_readback.request(m_health, m_health.size());
+}
+
+void Ripples::judge(const Health& h) {
+  if (h.nanCount == 0 && h.maxMagnitude <= heightBound()) {
+    std::swap(m_pending, m_good);
+    m_goodTime = h.time;
+    m_hasGood = true;
+    return;
+  }
+  const Params& q = m_params;
+  std::string what = h.nanCount > 0 ? std::to_string(long(h.nanCount)) + " cells are NaN or infinite"
+                                    : fmt("max |h| = %.3g exceeds %.3g", h.maxMagnitude, heightBound());
+  std::string method = q.rule == Rule::Seed ? fmt("seed rule, dt = %.4g seed units", q.seedTimeScale * m_lastDt)
+                                            : fmt("wave rule, dt = %.4g s", m_lastDt);
+  if (q.rule == Rule::Wave)
+    method += fmt(", C = %.3f", m_lastCourant) +
+              (m_lastCourant > kCourantLimit2D ? fmt(" above the limit 1/sqrt(2) = %.3f", kCourantLimit2D) : "");
+  m_divergence = DivergenceReport{"ripples diverged by t = " + fmt("%.3f s: ", h.time) + what + " (" + method +
+                                      "); halve the time step and resume from the last good state" +
+                                      (m_hasGood ? fmt(" (t = %.3f s)", m_goodTime) : ""),
+                                  h.time};
+}
+
+bool Ripples::recover() {
+  if (!m_divergence || !m_hasGood) return false;
+  m_good.copyTo(m_state[m_current], m_good.size());
+  m_time = m_goodTime;
+  if (m_params.autoSubsteps && m_params.rule == Rule::Wave)
+    m_params.courantTarget *= 0.5f;
+  else
+    m_params.substeps = std::min(m_params.substeps * 2, 256);
+  m_divergence.reset();
+  m_framesSinceCheck = 0;
+  std::vector<std::byte> discard;
+  m_readback.wait(discard);
+  return true;
+}
+
+void Ripples::flushChecks() {
+  std::vector<std::byte> bytes;
+  if (!m_readback.pending()) return;
+  m_readback.wait(bytes);
+  GLuint v[4];
+  std::memcpy(v, bytes.data(), sizeof v);
+  float maxH = 0;
+  std::memcpy(&maxH, &v[0], sizeof maxH);
+  judge({m_pendingTime, double(v[2]), double(maxH)});
 }
 
 void Ripples::touch(float x, float y, float radius, float depth) {

@@ -5,12 +5,15 @@
 //   Using Height Fields" (GDC 2008).
 #pragma once
 
+#include <optional>
 #include <random>
 #include <string>
 
+#include "gl/async_readback.h"
 #include "gl/buffer.h"
 #include "gl/gpu_profiler.h"
 #include "gl/shader_library.h"
+#include "sim/divergence.h"
 #include "sim/ripples/ripples_params.h"
 
 namespace tidepool::ripples {
@@ -38,8 +41,16 @@ class Ripples {
   float lastCourant() const { return m_lastCourant; }  // wave rule, of the last step
   std::string status() const;                          // one line: size, substeps, C, warnings
 
+  // Divergence watch (see sim/divergence.h): a non-blocking health check every few frames.
+  std::optional<DivergenceReport> divergence() const { return m_divergence; }
+  bool recover();              // back to the last good state with half the time step; false if none
+  void flushChecks();          // waits for the check in flight (end of a headless run)
+  double heightBound() const;  // |h| above this counts as a blow-up (m, or seed units)
+
  private:
   void allocate();
+  void watch();  // polls the check in flight, starts the next one
+  void judge(const Health& health);
   void pushBody(double dt);  // the sphere's displacement change over the next step
   gl::Program& stepProgram();
 
@@ -52,6 +63,14 @@ class Ripples {
   int m_lastSubsteps = 0;
   float m_lastCourant = 0;
   double m_rainDebt = 0;
+  // Divergence watch: reduced values, the state copied at the check, the last state judged good.
+  gl::Buffer m_health, m_pending, m_good;
+  gl::AsyncReadback m_readback;
+  double m_pendingTime = 0, m_goodTime = 0;
+  bool m_hasGood = false;
+  int m_framesSinceCheck = 0;
+  double m_lastDt = 0;
+  std::optional<DivergenceReport> m_divergence;
   std::mt19937 m_rng{12345};
 };
 
