@@ -1,0 +1,125 @@
+#include "grid/prefix_scan.h"
+
+#include <string>
+
+#include "base/error.h"
+#include "grid/bindings.glsl"
+
+namespace tidepool::grid {
+namespace {
+constexpr std::size_t kWord = sizeof(uint32_t);
+
+std::vector<gl::ShaderDefine> scanDefines() {
+  return {{"WG", std::to_string(PrefixScan::kGroupSize)}, {"VECS", std::to_string(PrefixScan::kVecsPerThread)}};
+}
+
+std::size_t blocksOf(std::size_t n) { return std::max<std::size_t>(1, (n + PrefixScan::kBlock - 1) / PrefixScan::kBlock); }
+
+void checkSizes(const char* what, const gl::Buffer& in, const gl::Buffer& out, std::size_t n) {
+  if (n > PrefixScan::kMaxCount)
+    throw Error(std::string(what) + " of " + std::to_string(n) + " elements: at most 2^31 are supported");
+  if (in.size() < n * kWord)
+    throw Error(std::string(what) + " of " + std::to_string(n) + " elements: the input buffer holds only " +
+                std::to_string(in.size() / kWord));
+  if (out.size() < (n + 1) * kWord)
+    throw Error(std::string(what) + " of " + std::to_string(n) + " elements: the output buffer needs n + 1 = " +
+                std::to_string(n + 1) + " uints, it holds " + std::to_string(out.size() / kWord));
+  if ((n + 1) * kWord > maxStorageBlockBytes())
+    throw Error(std::string(what) + " of " + std::to_string(n) + " elements needs " +
+                std::to_string((n + 1) * kWord >> 20) + " MiB arrays, over this driver's SSBO limit of " +
+                std::to_string(maxStorageBlockBytes() >> 20) + " MiB");
+}
+}  // namespace
+
+std::size_t maxStorageBlockBytes() {
+  GLint64 bytes = 0;
+  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &bytes);
+  return std::size_t(bytes);
+}
+
+PrefixScan::PrefixScan(gl::ShaderLibrary& shaders)
+    : m_reduce(&shaders.program({"grid/scan_reduce.comp"}, scanDefines())),
+      m_block(&shaders.program({"grid/scan_block.comp"}, scanDefines())) {}
+
+void PrefixScan::reserve(std::size_t n) {
+  for (std::size_t level = 0; n > kBlock; ++level) {
+    n = blocksOf(n);
+    if (m_sums.size() <= level) m_sums.emplace_back();
+    if (m_sums[level].size() < (n + 1) * kWord) m_sums[level] = gl::Buffer((n + 1) * kWord);
+  }
+}
+
+std::size_t PrefixScan::memoryBytes() const {
+  std::size_t bytes = 0;
+  for (const gl::Buffer& b : m_sums) bytes += b.size();
+  return bytes;
+}
+
+std::size_t PrefixScan::dispatchesFor(std::size_t n) {
+  std::size_t dispatches = 1;
+  for (; n > kBlock; n = blocksOf(n)) dispatches += 2;
+  return dispatches;
+}
+
+void PrefixScan::run(const gl::Buffer& in, gl::Buffer& out, std::size_t n) {
+  checkSizes("prefix scan", in, out, n);
+  reserve(n);
+  scanLevel(in, out, n, 0);
+}
+
+void PrefixScan::scanLevel(const gl::Buffer& in, gl::Buffer& out, std::size_t n, std::size_t level) {
+  const std::size_t blocks = blocksOf(n);
+  gl::Buffer* sums = blocks > 1 ? &m_sums[level] : nullptr;
+  if (sums) {
+    in.bindBase(GL_SHADER_STORAGE_BUFFER, SCAN_IN_VEC);
+    in.bindBase(GL_SHADER_STORAGE_BUFFER, SCAN_IN_WORD);
+    sums->bindBase(GL_SHADER_STORAGE_BUFFER, SCAN_OUT_WORD);
+    m_reduce->use();
+    m_reduce->set("uCount", uint32_t(n));
+    m_reduce->dispatchThreads(blocks * kGroupSize);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    scanLevel(*sums, *sums, blocks, level + 1);  // block sums -> block offsets, in place
+  }
+  // Bindings are set again: the recursion above rebinds the same points.
+  in.bindBase(GL_SHADER_STORAGE_BUFFER, SCAN_IN_VEC);
+  in.bindBase(GL_SHADER_STORAGE_BUFFER, SCAN_IN_WORD);
+  out.bindBase(GL_SHADER_STORAGE_BUFFER, SCAN_OUT_VEC);
+  out.bindBase(GL_SHADER_STORAGE_BUFFER, SCAN_OUT_WORD);
+  (sums ? *sums : out).bindBase(GL_SHADER_STORAGE_BUFFER, SCAN_BLOCK_OFFSETS);  // unread at the top
+  m_block->use();
+  m_block->set("uCount", uint32_t(n));
+  m_block->set("uHasOffsets", sums ? 1u : 0u);
+  m_block->dispatchThreads(blocks * kGroupSize);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+NaiveScan::NaiveScan(gl::ShaderLibrary& shaders) : m_pass(&shaders.program({"grid/scan_naive.comp"})) {}
+
+std::size_t NaiveScan::passesFor(std::size_t n) {
+  std::size_t passes = 0;
+  while ((std::size_t(1) << passes) < n + 1) ++passes;
+  return std::max<std::size_t>(passes, 1);
+}
+
+void NaiveScan::run(const gl::Buffer& in, gl::Buffer& out, std::size_t n) {
+  checkSizes("naive scan", in, out, n);
+  if (in.id() == out.id()) throw Error("naive scan: input and output must be different buffers");
+  if (m_temp.size() < (n + 1) * kWord) m_temp = gl::Buffer((n + 1) * kWord);
+  const std::size_t passes = passesFor(n);
+  m_pass->use();
+  m_pass->set("uCount", uint32_t(n));
+  const gl::Buffer* src = &in;
+  for (std::size_t p = 0; p < passes; ++p) {
+    // Ping-pong so that the last pass lands in `out`.
+    const gl::Buffer* dst = (passes - 1 - p) % 2 == 0 ? &out : &m_temp;
+    src->bindBase(GL_SHADER_STORAGE_BUFFER, SCAN_NAIVE_IN);
+    dst->bindBase(GL_SHADER_STORAGE_BUFFER, SCAN_NAIVE_OUT);
+    m_pass->set("uStride", uint32_t(1) << p);
+    m_pass->set("uShift", p == 0 ? 1u : 0u);
+    m_pass->dispatchThreads(n + 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    src = dst;
+  }
+}
+
+}  // namespace tidepool::grid

@@ -1,0 +1,76 @@
+// Exclusive prefix sum of uint32 on the GPU, any size from 0 to 2^31 elements, no host round
+// trip: out[i] = in[0] + ... + in[i - 1] for i <= n, so out[n] holds the total.
+//
+//   in  = {2, 0, 3, 1}          (n = 4 uints)
+//   out = {0, 2, 2, 5, 6}       (n + 1 uints)
+//
+// PrefixScan is reduce-then-scan over blocks of kBlock = 4096 elements (one work group each):
+//   level L (n_L elements):  reduce: blockSums[b] = sum of block b     reads n_L
+//                            scan blockSums in place (level L + 1, recursively)
+//                            scan:   each block in shared memory, + blockSums[b]   reads n_L, writes n_L
+//   a level of at most kBlock elements is one work group with no offsets (the top).
+// Inside a block: 16 elements per invocation (4 coalesced uvec4 loads), a scan of the 1024
+// chunk sums, and a Blelloch up-sweep/down-sweep of the 256 invocation totals in padded shared
+// memory (shaders/grid/scan_group.glsl); no warp or subgroup size is assumed. The block offset
+// (the "uniform add") is added while storing, so level 0 moves 3 N words (the scan-then-
+// propagate order moves 4 N: it writes and re-reads the output once more). 16M elements take
+// three dispatches: reduce (4096 groups), one group over the 4096 sums, scan (4096 groups).
+//
+// NaiveScan is the log2(N)-pass Hillis-Steele scan (as in the particle-life article), kept as
+// the reference for tests and the benchmark.
+//
+// Both end every pass with glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT), so the next shader
+// may read `out`; Buffer::download adds the read-back barrier itself. Results are exact and
+// deterministic (integer adds); the sum wraps modulo 2^32 like the CPU reference.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "gl/buffer.h"
+#include "gl/shader_library.h"
+
+namespace tidepool::grid {
+
+class PrefixScan {
+ public:
+  static constexpr std::size_t kGroupSize = 256;                            // invocations per work group
+  static constexpr std::size_t kVecsPerThread = 4;                          // uvec4 loads per invocation
+  static constexpr std::size_t kBlock = kGroupSize * kVecsPerThread * 4;   // elements per work group
+  static constexpr std::size_t kMaxCount = std::size_t(1) << 31;           // uint indices in the kernels
+
+  explicit PrefixScan(gl::ShaderLibrary& shaders);
+
+  // out[0..n] = exclusive scan of in[0..n). `in` holds >= n uints, `out` >= n + 1; they may be
+  // the same buffer (in place). n = 0 writes out[0] = 0. Throws Error for bad sizes.
+  void run(const gl::Buffer& in, gl::Buffer& out, std::size_t n);
+  void reserve(std::size_t n);                     // allocates the block sums for n up front
+  std::size_t memoryBytes() const;                 // block-sum buffers (bytes)
+  static std::size_t dispatchesFor(std::size_t n); // compute dispatches one run(n) issues
+
+ private:
+  void scanLevel(const gl::Buffer& in, gl::Buffer& out, std::size_t n, std::size_t level);
+
+  gl::Program* m_reduce;
+  gl::Program* m_block;
+  std::vector<gl::Buffer> m_sums;  // m_sums[L]: block sums of level L (+1 entry for their total)
+};
+
+class NaiveScan {
+ public:
+  explicit NaiveScan(gl::ShaderLibrary& shaders);
+
+  // Same contract as PrefixScan::run, but `in` and `out` must be different buffers.
+  void run(const gl::Buffer& in, gl::Buffer& out, std::size_t n);
+  std::size_t memoryBytes() const { return m_temp.size(); }  // ping-pong buffer (bytes)
+  static std::size_t passesFor(std::size_t n);               // ceil(log2(n + 1)), at least 1
+
+ private:
+  gl::Program* m_pass;
+  gl::Buffer m_temp;
+};
+
+// GL_MAX_SHADER_STORAGE_BLOCK_SIZE in bytes (llvmpipe: 128 MiB): the largest array one kernel sees.
+std::size_t maxStorageBlockBytes();
+
+}  // namespace tidepool::grid
