@@ -3,8 +3,10 @@
 
 namespace tidepool::bench {
 
+Benchmark addGridBench(CLI::App& bench);  // grid_bench.cpp
+
 const std::vector<Registrar>& registrars() {
-  static const std::vector<Registrar> table = {};
+  static const std::vector<Registrar> table = {addGridBench};
   return table;
 }
 
