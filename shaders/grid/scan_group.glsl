@@ -15,12 +15,12 @@ void groupSync() {
   barrier();
 }
 
-// Returns the sum of `value` over the invocations before this one; `total` gets the group's sum.
-uint groupExclusiveScan(uint value, out uint total) {
+// Up-sweep: leaves partial sums at the tree's right nodes and returns the group's sum.
+uint groupUpSweep(uint value) {
   const uint t = gl_LocalInvocationID.x;
   sTree[SCAN_PAD(t)] = value;
   uint stride = 1u;
-  for (uint d = WG >> 1u; d > 0u; d >>= 1u) {  // up-sweep: partial sums at the tree's right nodes
+  for (uint d = WG >> 1u; d > 0u; d >>= 1u) {
     groupSync();
     if (t < d) {
       const uint a = stride * (2u * t + 1u) - 1u, b = a + stride;
@@ -29,9 +29,20 @@ uint groupExclusiveScan(uint value, out uint total) {
     stride <<= 1u;
   }
   groupSync();
-  total = sTree[SCAN_PAD(WG - 1u)];
-  groupSync();  // everyone has read the root before it is cleared
+  const uint total = sTree[SCAN_PAD(WG - 1u)];
+  groupSync();  // everyone has read the root before anyone changes the tree again
+  return total;
+}
+
+// Sum of `value` over the group (the same for every invocation).
+uint groupSum(uint value) { return groupUpSweep(value); }
+
+// Returns the sum of `value` over the invocations before this one; `total` gets the group's sum.
+uint groupExclusiveScan(uint value, out uint total) {
+  const uint t = gl_LocalInvocationID.x;
+  total = groupUpSweep(value);
   if (t == 0u) sTree[SCAN_PAD(WG - 1u)] = 0u;
+  uint stride = WG;
   for (uint d = 1u; d < WG; d <<= 1u) {  // down-sweep: push prefixes back to the leaves
     stride >>= 1u;
     groupSync();

@@ -18,7 +18,6 @@ void main() {
     const uvec4 v = loadChunk(block, k, partial);
     sum += v.x + v.y + v.z + v.w;
   }
-  uint total;
-  groupExclusiveScan(sum, total);
+  const uint total = groupSum(sum);
   if (gl_LocalInvocationID.x == 0u) blockSums[block] = total;
 }

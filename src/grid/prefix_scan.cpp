@@ -9,11 +9,21 @@ namespace tidepool::grid {
 namespace {
 constexpr std::size_t kWord = sizeof(uint32_t);
 
-std::vector<gl::ShaderDefine> scanDefines() {
-  return {{"WG", std::to_string(PrefixScan::kGroupSize)}, {"VECS", std::to_string(PrefixScan::kVecsPerThread)}};
+std::vector<gl::ShaderDefine> scanDefines(const PrefixScan::Config& c) {
+  const std::size_t g = c.groupSize, v = c.vecsPerThread;
+  if (g < 32 || g > 1024 || (g & (g - 1)) || v < 1 || v > 16)
+    throw Error("prefix scan: work group " + std::to_string(g) + " x " + std::to_string(v) +
+                " uvec4 is not supported (group size a power of two in 32..1024, 1..16 uvec4 per invocation)");
+  // Shared memory of scan_block.comp: chunk sums and the tree, padded one word per 32.
+  auto padded = [](std::size_t words) { return words + words / 32; };
+  const std::size_t shared = 4 * (padded(g * v) + padded(g));
+  GLint maxShared = 0;
+  glGetIntegerv(GL_MAX_COMPUTE_SHARED_MEMORY_SIZE, &maxShared);
+  if (shared > std::size_t(maxShared))
+    throw Error("prefix scan: work group " + std::to_string(g) + " x " + std::to_string(v) + " uvec4 needs " +
+                std::to_string(shared) + " bytes of shared memory, this driver offers " + std::to_string(maxShared));
+  return {{"WG", std::to_string(g)}, {"VECS", std::to_string(v)}};
 }
-
-std::size_t blocksOf(std::size_t n) { return std::max<std::size_t>(1, (n + PrefixScan::kBlock - 1) / PrefixScan::kBlock); }
 
 void checkSizes(const char* what, const gl::Buffer& in, const gl::Buffer& out, std::size_t n) {
   if (n > PrefixScan::kMaxCount)
@@ -37,12 +47,17 @@ std::size_t maxStorageBlockBytes() {
   return std::size_t(bytes);
 }
 
-PrefixScan::PrefixScan(gl::ShaderLibrary& shaders)
-    : m_reduce(&shaders.program({"grid/scan_reduce.comp"}, scanDefines())),
-      m_block(&shaders.program({"grid/scan_block.comp"}, scanDefines())) {}
+PrefixScan::PrefixScan(gl::ShaderLibrary& shaders, Config config)
+    : m_config(config),
+      m_reduce(&shaders.program({"grid/scan_reduce.comp"}, scanDefines(config))),
+      m_block(&shaders.program({"grid/scan_block.comp"}, scanDefines(config))) {}
+
+std::size_t PrefixScan::blocksOf(std::size_t n) const {
+  return std::max<std::size_t>(1, (n + m_config.block() - 1) / m_config.block());
+}
 
 void PrefixScan::reserve(std::size_t n) {
-  for (std::size_t level = 0; n > kBlock; ++level) {
+  for (std::size_t level = 0; n > m_config.block(); ++level) {
     n = blocksOf(n);
     if (m_sums.size() <= level) m_sums.emplace_back();
     if (m_sums[level].size() < (n + 1) * kWord) m_sums[level] = gl::Buffer((n + 1) * kWord);
@@ -55,9 +70,9 @@ std::size_t PrefixScan::memoryBytes() const {
   return bytes;
 }
 
-std::size_t PrefixScan::dispatchesFor(std::size_t n) {
+std::size_t PrefixScan::dispatchesFor(std::size_t n) const {
   std::size_t dispatches = 1;
-  for (; n > kBlock; n = blocksOf(n)) dispatches += 2;
+  for (; n > m_config.block(); n = blocksOf(n)) dispatches += 2;
   return dispatches;
 }
 
@@ -76,7 +91,7 @@ void PrefixScan::scanLevel(const gl::Buffer& in, gl::Buffer& out, std::size_t n,
     sums->bindBase(GL_SHADER_STORAGE_BUFFER, SCAN_OUT_WORD);
     m_reduce->use();
     m_reduce->set("uCount", uint32_t(n));
-    m_reduce->dispatchThreads(blocks * kGroupSize);
+    m_reduce->dispatchThreads(blocks * m_config.groupSize);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     scanLevel(*sums, *sums, blocks, level + 1);  // block sums -> block offsets, in place
   }
@@ -89,7 +104,7 @@ void PrefixScan::scanLevel(const gl::Buffer& in, gl::Buffer& out, std::size_t n,
   m_block->use();
   m_block->set("uCount", uint32_t(n));
   m_block->set("uHasOffsets", sums ? 1u : 0u);
-  m_block->dispatchThreads(blocks * kGroupSize);
+  m_block->dispatchThreads(blocks * m_config.groupSize);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 

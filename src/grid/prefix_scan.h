@@ -4,12 +4,12 @@
 //   in  = {2, 0, 3, 1}          (n = 4 uints)
 //   out = {0, 2, 2, 5, 6}       (n + 1 uints)
 //
-// PrefixScan is reduce-then-scan over blocks of kBlock = 4096 elements (one work group each):
+// PrefixScan is reduce-then-scan over blocks of 4096 elements by default (one work group each):
 //   level L (n_L elements):  reduce: blockSums[b] = sum of block b     reads n_L
 //                            scan blockSums in place (level L + 1, recursively)
 //                            scan:   each block in shared memory, + blockSums[b]   reads n_L, writes n_L
-//   a level of at most kBlock elements is one work group with no offsets (the top).
-// Inside a block: 16 elements per invocation (4 coalesced uvec4 loads), a scan of the 1024
+//   a level of at most one block is one work group with no offsets (the top).
+// Inside a block (default Config): 16 elements per invocation (4 coalesced uvec4 loads), a scan of the 1024
 // chunk sums, and a Blelloch up-sweep/down-sweep of the 256 invocation totals in padded shared
 // memory (shaders/grid/scan_group.glsl); no warp or subgroup size is assumed. The block offset
 // (the "uniform add") is added while storing, so level 0 moves 3 N words (the scan-then-
@@ -32,25 +32,33 @@
 
 namespace tidepool::grid {
 
+// Work-group shape of PrefixScan, compile-time defines of its kernels (one program per shape).
+struct ScanConfig {
+  std::size_t groupSize = 256;    // invocations per work group: a power of two, 32..1024
+  std::size_t vecsPerThread = 4;  // uvec4 loads per invocation: 1..16
+  std::size_t block() const { return groupSize * vecsPerThread * 4; }  // elements per work group
+};
+
 class PrefixScan {
  public:
-  static constexpr std::size_t kGroupSize = 256;                            // invocations per work group
-  static constexpr std::size_t kVecsPerThread = 4;                          // uvec4 loads per invocation
-  static constexpr std::size_t kBlock = kGroupSize * kVecsPerThread * 4;   // elements per work group
-  static constexpr std::size_t kMaxCount = std::size_t(1) << 31;           // uint indices in the kernels
+  using Config = ScanConfig;
+  static constexpr std::size_t kMaxCount = std::size_t(1) << 31;  // uint indices in the kernels
 
-  explicit PrefixScan(gl::ShaderLibrary& shaders);
+  explicit PrefixScan(gl::ShaderLibrary& shaders, Config config = {});  // throws Error for a bad shape
 
   // out[0..n] = exclusive scan of in[0..n). `in` holds >= n uints, `out` >= n + 1; they may be
   // the same buffer (in place). n = 0 writes out[0] = 0. Throws Error for bad sizes.
   void run(const gl::Buffer& in, gl::Buffer& out, std::size_t n);
-  void reserve(std::size_t n);                     // allocates the block sums for n up front
-  std::size_t memoryBytes() const;                 // block-sum buffers (bytes)
-  static std::size_t dispatchesFor(std::size_t n); // compute dispatches one run(n) issues
+  void reserve(std::size_t n);            // allocates the block sums for n up front
+  std::size_t memoryBytes() const;        // block-sum buffers (bytes)
+  std::size_t dispatchesFor(std::size_t n) const;  // compute dispatches one run(n) issues
+  const Config& config() const { return m_config; }
 
  private:
+  std::size_t blocksOf(std::size_t n) const;
   void scanLevel(const gl::Buffer& in, gl::Buffer& out, std::size_t n, std::size_t level);
 
+  Config m_config;
   gl::Program* m_reduce;
   gl::Program* m_block;
   std::vector<gl::Buffer> m_sums;  // m_sums[L]: block sums of level L (+1 entry for their total)

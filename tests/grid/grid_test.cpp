@@ -171,7 +171,7 @@ TEST_F(Grid, MemoryIsReported) {
   UniformGrid grid(shaders(), {.domainMin = {0, 0, 0}, .domainMax = {64, 64, 64}, .cellSize = 1.0f}, 1000);
   const std::size_t cells = 64 * 64 * 64;
   // counts + starts + indexInCell + scan levels (64 + 1 block sums)
-  EXPECT_EQ(grid.memoryBytes(), cells * 4 + (cells + 1) * 4 + 1000 * 4 + (cells / PrefixScan::kBlock + 1) * 4);
+  EXPECT_EQ(grid.memoryBytes(), cells * 4 + (cells + 1) * 4 + 1000 * 4 + (cells / PrefixScan::Config{}.block() + 1) * 4);
 }
 
 TEST_F(Grid, BadInputThrowsOneLineErrors) {

@@ -54,8 +54,8 @@ void expectScanMatches(ScanT& scan, std::size_t n, uint32_t seed) {
   if (n) ASSERT_EQ(inBuf.read<uint32_t>(n), in) << "n = " << n << ": the input must be left as it was";
 }
 
-std::vector<std::size_t> edgeSizes(int maxLog2) {
-  const std::size_t wg = PrefixScan::kGroupSize, block = PrefixScan::kBlock;
+std::vector<std::size_t> edgeSizes(int maxLog2, PrefixScan::Config config = {}) {
+  const std::size_t wg = config.groupSize, block = config.block();
   std::vector<std::size_t> sizes = {0, 1, 2, 3, 4, 5, wg - 1, wg, wg + 1, block - 1, block, block + 1};
   for (int k = 2; k <= maxLog2; ++k)
     for (std::size_t n : {(std::size_t(1) << k) - 1, std::size_t(1) << k, (std::size_t(1) << k) + 1}) sizes.push_back(n);
@@ -92,9 +92,29 @@ TEST_F(Scan, MatchesCpuAtRandomSizes) {
 
 TEST_F(Scan, ThreeLevelsBeyondBlockSquared) {
   PrefixScan scan(shaders());
-  const std::size_t n = PrefixScan::kBlock * PrefixScan::kBlock + PrefixScan::kBlock + 3;  // 16M + 4099
-  EXPECT_EQ(PrefixScan::dispatchesFor(n), 5u);
+  const std::size_t block = scan.config().block();
+  const std::size_t n = block * block + block + 3;  // 16M + 4099: reduce, reduce, top, scan, scan
+  EXPECT_EQ(scan.dispatchesFor(n), 5u);
   expectScanMatches(scan, n, 42);
+}
+
+TEST_F(Scan, OtherWorkGroupShapes) {
+  // Shapes smaller and larger than any subgroup: the scan must not depend on the warp size.
+  for (PrefixScan::Config config : {PrefixScan::Config{32, 1}, PrefixScan::Config{64, 3}, PrefixScan::Config{512, 2},
+                                    PrefixScan::Config{1024, 4}}) {
+    PrefixScan scan(shaders(), config);
+    uint32_t seed = 900;
+    for (std::size_t n : edgeSizes(12, config)) {
+      expectScanMatches(scan, n, seed++);
+      if (HasFatalFailure()) return;
+    }
+    const std::size_t b = config.block();
+    for (std::size_t n : {b * b - 1, b * b + 1, b * b + b + 7})  // two and three levels
+      if (n < (std::size_t(1) << 22)) expectScanMatches(scan, n, seed++);
+  }
+  EXPECT_THROW(PrefixScan(shaders(), {100, 4}), Error);
+  EXPECT_THROW(PrefixScan(shaders(), {256, 0}), Error);
+  EXPECT_THROW(PrefixScan(shaders(), {1024, 16}), Error);  // 68 KiB of shared memory
 }
 
 TEST_F(Scan, InPlaceAndZeroSize) {
