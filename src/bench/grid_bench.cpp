@@ -7,6 +7,7 @@
 //   scan     4 N read + 4 (N + 1) written (the minimum; the kernels move about 3 N words, see prefix_scan.h)
 //   reorder  per particle: 16 position (cell) + 4 indexInCell + 4 cellStart read, 16 per array read and written
 //   copy     4 N read + 4 N written
+// --scan-shapes 256x4,512x8,... adds a table of the N-uint32 scan per work-group shape.
 // Every number is the median of --repeats GL_TIME_ELAPSED queries after --warmup untimed runs.
 #include <chrono>
 #include <cmath>
@@ -27,6 +28,7 @@ struct GridOptions {
   std::string sizes = "2^16..2^24";  // particle counts N
   std::string perCell = "1,8";       // target particles per cell
   int arrays = 2;                    // vec4 arrays reordered (positions, velocities, ...)
+  std::string scanShapes = "256x4";  // PrefixScan work-group shapes; the first one is the grid's
 };
 
 // Median time (ms) of `work` over the common repeats after the warmup runs. GPU time from
@@ -85,7 +87,52 @@ std::vector<double> parsePerCell(const std::string& text) {
   return out;
 }
 
-std::vector<std::string> runRow(Env& env, const GridOptions& opt, bool wallClock, std::size_t n, double perCell) {
+// "256x4,512x8" -> scan shapes (invocations x uvec4 per invocation).
+std::vector<grid::ScanConfig> parseShapes(const std::string& text) {
+  std::vector<grid::ScanConfig> out;
+  std::stringstream ss(text);
+  for (std::string token; std::getline(ss, token, ',');) {
+    unsigned g = 0, v = 0;
+    char x = 0, rest = 0;
+    if (std::sscanf(token.c_str(), "%u%c%u%c", &g, &x, &v, &rest) != 3 || x != 'x')
+      throw Error("--scan-shapes '" + token + "' is not like 256x4 (invocations x uvec4 per invocation)");
+    out.push_back({g, v});
+  }
+  if (out.empty()) throw Error("--scan-shapes: no shapes given");
+  return out;
+}
+
+std::string shapeText(const grid::ScanConfig& c) {
+  return std::to_string(c.groupSize) + "x" + std::to_string(c.vecsPerThread);
+}
+
+// Scan of N uint32 with each shape against the copy of the same bytes (only with several shapes).
+void addShapeRows(Env& env, Table& table, bool wallClock, std::size_t n, const std::vector<grid::ScanConfig>& shapes) {
+  if ((n + 1) * 4 > grid::maxStorageBlockBytes()) return;
+  std::vector<uint32_t> values(n);
+  std::mt19937 rng{uint32_t(n)};
+  uint64_t sum = 0;
+  for (uint32_t& v : values) sum += v = rng() % 16;
+  gl::Buffer in(n * 4, values.data()), out((n + 1) * 4), copy(n * 4);
+  const double copyMs = medianMs(env.common, wallClock, [&] { in.copyTo(copy, n * 4); });
+  const double copyGbps = gbps(8.0 * n, copyMs);
+  for (const grid::ScanConfig& shape : shapes) {
+    try {
+      grid::PrefixScan scan(env.shaders, shape);
+      scan.reserve(n);
+      const double ms = medianMs(env.common, wallClock, [&] { scan.run(in, out, n); });
+      const bool right = out.read<uint32_t>(1, n)[0] == uint32_t(sum);
+      const double g = gbps(8.0 * n + 4, ms);
+      table.add({std::to_string(n), shapeText(shape), std::to_string(scan.dispatchesFor(n)), fixed(ms, 4), fixed(g, 1),
+                 fixed(copyGbps, 1), fixed(copyGbps > 0 ? 100.0 * g / copyGbps : 0, 1), right ? "" : "WRONG total"});
+    } catch (const Error& e) {
+      table.add({std::to_string(n), shapeText(shape), "", "", "", "", "", std::string("error: ") + e.what()});
+    }
+  }
+}
+
+std::vector<std::string> runRow(Env& env, const GridOptions& opt, const grid::ScanConfig& scanShape, bool wallClock,
+                                std::size_t n, double perCell) {
   const std::size_t limit = grid::maxStorageBlockBytes();
   const std::string nText = std::to_string(n);
   if (n * sizeof(glm::vec4) > limit)
@@ -125,7 +172,7 @@ std::vector<std::string> runRow(Env& env, const GridOptions& opt, bool wallClock
   uint64_t sum = 0;
   for (uint32_t& v : values) sum += v = rng() % 16;
   gl::Buffer in(n * 4, values.data()), out((n + 1) * 4), copy(n * 4);
-  grid::PrefixScan scan(env.shaders);
+  grid::PrefixScan scan(env.shaders, scanShape);
   grid::NaiveScan naive(env.shaders);
   scan.reserve(n);
   const double uscanMs = medianMs(env.common, wallClock, [&] { scan.run(in, out, n); });
@@ -160,6 +207,7 @@ std::vector<std::string> runRow(Env& env, const GridOptions& opt, bool wallClock
 int runGridBench(Env& env, const GridOptions& opt) {
   const std::vector<std::size_t> sizes = parseSizes(opt.sizes);
   const std::vector<double> perCell = parsePerCell(opt.perCell);
+  const std::vector<grid::ScanConfig> shapes = parseShapes(opt.scanShapes);
   std::printf("device: %s\n", env.device.c_str());
   const bool wallClock = timerQueriesAreBroken();
   std::printf("grid: %d vec4 arrays reordered; scanN/naive/copy on N uint32; medians of %d repeats (ms, GB/s); %s\n",
@@ -173,7 +221,7 @@ int runGridBench(Env& env, const GridOptions& opt) {
     if (n == 0 || n > grid::PrefixScan::kMaxCount) throw Error("--n: sizes must be between 1 and 2^31");
     for (double ppc : perCell) {
       try {
-        table.add(runRow(env, opt, wallClock, n, ppc));
+        table.add(runRow(env, opt, shapes[0], wallClock, n, ppc));
       } catch (const Error& e) {  // e.g. out of GPU memory: report the row, keep going
         table.add({std::to_string(n), "", fixed(ppc, 2), "", "", "", "", "", "", "", "", "", "", "", "", "",
                    std::string("error: ") + e.what()});
@@ -182,6 +230,12 @@ int runGridBench(Env& env, const GridOptions& opt) {
   }
   table.print();
   if (!env.common.csv.empty()) table.writeCsv(env.common.csv);
+  if (shapes.size() > 1) {
+    std::printf("\nscan of N uint32 by work-group shape (invocations x uvec4 per invocation)\n");
+    Table byShape({"N", "shape", "dispatches", "scan_ms", "scan_GBps", "copy_GBps", "scan/copy%", "note"});
+    for (std::size_t n : sizes) addShapeRows(env, byShape, wallClock, n, shapes);
+    byShape.print();
+  }
   return 0;
 }
 
@@ -193,6 +247,10 @@ Benchmark addGridBench(CLI::App& bench) {
   sub->add_option("--n", opt->sizes, "particle counts, e.g. 2^16..2^24 or 65536,1M")->capture_default_str();
   sub->add_option("--ppc", opt->perCell, "target particles per cell, comma separated")->capture_default_str();
   sub->add_option("--arrays", opt->arrays, "vec4 arrays to reorder")->check(CLI::Range(1, 8))->capture_default_str();
+  sub->add_option("--scan-shapes", opt->scanShapes,
+                  "scan work-group shapes, e.g. 256x4,512x4,256x8 (the first is used in the main table; "
+                  "several add a table comparing them)")
+      ->capture_default_str();
   return {sub, [opt](Env& env) { return runGridBench(env, *opt); }};
 }
 
