@@ -10,6 +10,6 @@
 #define SCAN_IN_WORD 1  // the same buffer as uint (the last, partial block)
 #define SCAN_OUT_VEC 2  // scan output as uvec4
 #define SCAN_OUT_WORD 3  // the same buffer as uint (partial block, the total, block sums)
-#define SCAN_BLOCK_OFFSETS 4  // scanned block sums of the level above
+#define SCAN_BLOCK_SUMS 4  // block sums of this level (scanned in place, they are the block offsets)
 #define SCAN_NAIVE_IN 0  // Hillis-Steele pass input
 #define SCAN_NAIVE_OUT 1  // Hillis-Steele pass output

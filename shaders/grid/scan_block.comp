@@ -1,19 +1,18 @@
 #version 430 core
-// Scan phase of the reduce-then-scan prefix sum (see src/grid/prefix_scan.h): each work group
-// scans its block of kScanBlock uints in registers and shared memory, adds the block's offset
-// (the scanned block sums of the level above: the "uniform add", fused into the store) and
-// writes the exclusive prefix sums. The last block also writes the grand total to out[uCount].
-// Safe in place (in and out the same buffer): every element is read and written by one invocation.
+// Block scan of the prefix sum (see src/grid/prefix_scan.h): each work group scans its block of
+// kScanBlock uints in registers and shared memory and writes the exclusive prefix sums.
+//   uHasOffsets = 1 (reduce-then-scan): adds blockSums[block], the block's offset from the
+//                   scanned sums of the level above, while storing (the uniform add, fused).
+//   uWriteSums = 1 (scan-then-propagate): writes the block's sum to blockSums[block] instead;
+//                   scan_add.comp adds the offsets afterwards.
+// The last block also writes its total (plus its offset) to out[uCount].
 layout(local_size_x = WG) in;
 #include "common/index.glsl"
 #include "grid/scan_group.glsl"
-#include "grid/scan_load.glsl"
+#include "grid/scan_io.glsl"
 
-layout(std430, binding = SCAN_OUT_VEC) writeonly buffer ScanOutVec { uvec4 outVec[]; };
-layout(std430, binding = SCAN_OUT_WORD) writeonly buffer ScanOutWord { uint outWord[]; };
-layout(std430, binding = SCAN_BLOCK_OFFSETS) readonly buffer BlockOffsets { uint blockOffsets[]; };
-
-uniform uint uHasOffsets;  // 0 when this level is a single block (the top of the recursion)
+uniform uint uHasOffsets;
+uniform uint uWriteSums;
 
 shared uint sChunk[SCAN_PAD(WG * VECS)];  // per-chunk sums, then per-chunk prefixes, element order
 
@@ -21,8 +20,7 @@ void main() {
   const uint block = groupIndex();
   if (block >= blockCount()) return;  // spare groups of a dispatch spilled into y (whole group)
   const uint t = gl_LocalInvocationID.x;
-  const bool last = block + 1u == blockCount();
-  const bool partial = (block + 1u) * kScanBlock > uCount;
+  const bool partial = partialBlock(block);
 
   // 1. Exclusive scan inside each 4-element chunk; chunk sums go to shared memory.
   uvec4 v[VECS];
@@ -46,16 +44,10 @@ void main() {
   groupSync();
 
   // 3. Add chunk prefix and block offset, store (coalesced, like the loads).
-  const uint offset = uHasOffsets != 0u ? blockOffsets[block] : 0u;
-  for (uint k = 0u; k < VECS; ++k) {
-    const uvec4 r = v[k] + (sChunk[SCAN_PAD(k * WG + t)] + offset);
-    const uint c = chunkIndex(block, k);
-    if (!partial) {
-      outVec[c] = r;
-    } else {
-      for (uint j = 0u; j < 4u; ++j)
-        if (4u * c + j < uCount) outWord[4u * c + j] = r[j];
-    }
+  const uint offset = uHasOffsets != 0u ? blockSums[block] : 0u;
+  for (uint k = 0u; k < VECS; ++k) storeChunk(block, k, partial, v[k] + (sChunk[SCAN_PAD(k * WG + t)] + offset));
+  if (t == 0u) {
+    if (uWriteSums != 0u) blockSums[block] = total;
+    if (block + 1u == blockCount()) outWord[uCount] = offset + total;
   }
-  if (last && t == 0u) outWord[uCount] = offset + total;
 }

@@ -87,23 +87,25 @@ std::vector<double> parsePerCell(const std::string& text) {
   return out;
 }
 
-// "256x4,512x8" -> scan shapes (invocations x uvec4 per invocation).
+// "256x4,512x8,256x4p" -> scan shapes (invocations x uvec4 per invocation; p: scan-then-propagate).
 std::vector<grid::ScanConfig> parseShapes(const std::string& text) {
   std::vector<grid::ScanConfig> out;
   std::stringstream ss(text);
   for (std::string token; std::getline(ss, token, ',');) {
     unsigned g = 0, v = 0;
-    char x = 0, rest = 0;
-    if (std::sscanf(token.c_str(), "%u%c%u%c", &g, &x, &v, &rest) != 3 || x != 'x')
-      throw Error("--scan-shapes '" + token + "' is not like 256x4 (invocations x uvec4 per invocation)");
-    out.push_back({g, v});
+    char x = 0, p = 0, rest = 0;
+    const int got = std::sscanf(token.c_str(), "%u%c%u%c%c", &g, &x, &v, &p, &rest);
+    if (!((got == 3 && x == 'x') || (got == 4 && x == 'x' && p == 'p')))
+      throw Error("--scan-shapes '" + token + "' is not like 256x4 or 256x4p (invocations x uvec4 per invocation, "
+                  "p: scan-then-propagate)");
+    out.push_back({g, v, got == 4});
   }
   if (out.empty()) throw Error("--scan-shapes: no shapes given");
   return out;
 }
 
 std::string shapeText(const grid::ScanConfig& c) {
-  return std::to_string(c.groupSize) + "x" + std::to_string(c.vecsPerThread);
+  return std::to_string(c.groupSize) + "x" + std::to_string(c.vecsPerThread) + (c.propagate ? "p" : "");
 }
 
 // Scan of N uint32 with each shape against the copy of the same bytes (only with several shapes).
@@ -231,7 +233,7 @@ int runGridBench(Env& env, const GridOptions& opt) {
   table.print();
   if (!env.common.csv.empty()) table.writeCsv(env.common.csv);
   if (shapes.size() > 1) {
-    std::printf("\nscan of N uint32 by work-group shape (invocations x uvec4 per invocation)\n");
+    std::printf("\nscan of N uint32 by work-group shape (invocations x uvec4 per invocation; p: scan-then-propagate)\n");
     Table byShape({"N", "shape", "dispatches", "scan_ms", "scan_GBps", "copy_GBps", "scan/copy%", "note"});
     for (std::size_t n : sizes) addShapeRows(env, byShape, wallClock, n, shapes);
     byShape.print();
@@ -248,8 +250,8 @@ Benchmark addGridBench(CLI::App& bench) {
   sub->add_option("--ppc", opt->perCell, "target particles per cell, comma separated")->capture_default_str();
   sub->add_option("--arrays", opt->arrays, "vec4 arrays to reorder")->check(CLI::Range(1, 8))->capture_default_str();
   sub->add_option("--scan-shapes", opt->scanShapes,
-                  "scan work-group shapes, e.g. 256x4,512x4,256x8 (the first is used in the main table; "
-                  "several add a table comparing them)")
+                  "scan work-group shapes, e.g. 256x4,512x4,256x8,256x4p (p: scan-then-propagate; the first "
+                  "is used in the main table, several add a table comparing them)")
       ->capture_default_str();
   return {sub, [opt](Env& env) { return runGridBench(env, *opt); }};
 }

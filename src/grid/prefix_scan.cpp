@@ -50,7 +50,8 @@ std::size_t maxStorageBlockBytes() {
 PrefixScan::PrefixScan(gl::ShaderLibrary& shaders, Config config)
     : m_config(config),
       m_reduce(&shaders.program({"grid/scan_reduce.comp"}, scanDefines(config))),
-      m_block(&shaders.program({"grid/scan_block.comp"}, scanDefines(config))) {}
+      m_block(&shaders.program({"grid/scan_block.comp"}, scanDefines(config))),
+      m_add(&shaders.program({"grid/scan_add.comp"}, scanDefines(config))) {}
 
 std::size_t PrefixScan::blocksOf(std::size_t n) const {
   return std::max<std::size_t>(1, (n + m_config.block() - 1) / m_config.block());
@@ -85,27 +86,35 @@ void PrefixScan::run(const gl::Buffer& in, gl::Buffer& out, std::size_t n) {
 void PrefixScan::scanLevel(const gl::Buffer& in, gl::Buffer& out, std::size_t n, std::size_t level) {
   const std::size_t blocks = blocksOf(n);
   gl::Buffer* sums = blocks > 1 ? &m_sums[level] : nullptr;
-  if (sums) {
-    in.bindBase(GL_SHADER_STORAGE_BUFFER, SCAN_IN_VEC);
-    in.bindBase(GL_SHADER_STORAGE_BUFFER, SCAN_IN_WORD);
-    sums->bindBase(GL_SHADER_STORAGE_BUFFER, SCAN_OUT_WORD);
-    m_reduce->use();
-    m_reduce->set("uCount", uint32_t(n));
-    m_reduce->dispatchThreads(blocks * m_config.groupSize);
+  const bool reduceFirst = sums && !m_config.propagate;
+  const bool propagateAfter = sums && m_config.propagate;
+  auto bind = [&](const gl::Buffer& src, const gl::Buffer& dst) {
+    src.bindBase(GL_SHADER_STORAGE_BUFFER, SCAN_IN_VEC);
+    src.bindBase(GL_SHADER_STORAGE_BUFFER, SCAN_IN_WORD);
+    dst.bindBase(GL_SHADER_STORAGE_BUFFER, SCAN_OUT_VEC);
+    dst.bindBase(GL_SHADER_STORAGE_BUFFER, SCAN_OUT_WORD);
+    (sums ? *sums : dst).bindBase(GL_SHADER_STORAGE_BUFFER, SCAN_BLOCK_SUMS);  // unused at the top
+  };
+  auto dispatch = [&](gl::Program& program) {
+    program.use();
+    program.set("uCount", uint32_t(n));
+    program.dispatchThreads(blocks * m_config.groupSize);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  };
+  if (reduceFirst) {
+    bind(in, out);
+    dispatch(*m_reduce);
     scanLevel(*sums, *sums, blocks, level + 1);  // block sums -> block offsets, in place
   }
-  // Bindings are set again: the recursion above rebinds the same points.
-  in.bindBase(GL_SHADER_STORAGE_BUFFER, SCAN_IN_VEC);
-  in.bindBase(GL_SHADER_STORAGE_BUFFER, SCAN_IN_WORD);
-  out.bindBase(GL_SHADER_STORAGE_BUFFER, SCAN_OUT_VEC);
-  out.bindBase(GL_SHADER_STORAGE_BUFFER, SCAN_OUT_WORD);
-  (sums ? *sums : out).bindBase(GL_SHADER_STORAGE_BUFFER, SCAN_BLOCK_OFFSETS);  // unread at the top
-  m_block->use();
-  m_block->set("uCount", uint32_t(n));
-  m_block->set("uHasOffsets", sums ? 1u : 0u);
-  m_block->dispatchThreads(blocks * m_config.groupSize);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  bind(in, out);  // again: the recursion rebinds the same points
+  m_block->set("uHasOffsets", reduceFirst ? 1u : 0u);
+  m_block->set("uWriteSums", propagateAfter ? 1u : 0u);
+  dispatch(*m_block);
+  if (propagateAfter) {
+    scanLevel(*sums, *sums, blocks, level + 1);
+    bind(out, out);
+    dispatch(*m_add);
+  }
 }
 
 NaiveScan::NaiveScan(gl::ShaderLibrary& shaders) : m_pass(&shaders.program({"grid/scan_naive.comp"})) {}

@@ -4,17 +4,22 @@
 //   in  = {2, 0, 3, 1}          (n = 4 uints)
 //   out = {0, 2, 2, 5, 6}       (n + 1 uints)
 //
-// PrefixScan is reduce-then-scan over blocks of 4096 elements by default (one work group each):
-//   level L (n_L elements):  reduce: blockSums[b] = sum of block b     reads n_L
-//                            scan blockSums in place (level L + 1, recursively)
-//                            scan:   each block in shared memory, + blockSums[b]   reads n_L, writes n_L
-//   a level of at most one block is one work group with no offsets (the top).
-// Inside a block (default Config): 16 elements per invocation (4 coalesced uvec4 loads), a scan of the 1024
-// chunk sums, and a Blelloch up-sweep/down-sweep of the 256 invocation totals in padded shared
-// memory (shaders/grid/scan_group.glsl); no warp or subgroup size is assumed. The block offset
-// (the "uniform add") is added while storing, so level 0 moves 3 N words (the scan-then-
-// propagate order moves 4 N: it writes and re-reads the output once more). 16M elements take
-// three dispatches: reduce (4096 groups), one group over the 4096 sums, scan (4096 groups).
+// PrefixScan works on blocks of 4096 elements by default, one work group each, in one of two orders:
+//   reduce-then-scan (default), level L of n_L elements:
+//     scan_reduce   blockSums[b] = sum of block b                         reads n_L
+//     (scan blockSums in place: level L + 1, recursively)
+//     scan_block    scan each block in shared memory, + blockSums[b]     reads n_L, writes n_L
+//   scan-then-propagate (ScanConfig::propagate, the textbook order, kept to measure against):
+//     scan_block    scan each block, write blockSums[b]                  reads n_L, writes n_L
+//     (scan blockSums in place, recursively)
+//     scan_add      out[i] += blockSums[b]  (the uniform add)             reads n_L, writes n_L
+//   A level of at most one block is a single work group with no offsets: the top.
+// Reduce-then-scan moves 3 N words at level 0 against 4 N, which is what lets the scan approach
+// copy bandwidth; its uniform add is fused into scan_block's store. 16M elements take three
+// dispatches: reduce (4096 groups), one group over the 4096 sums, scan (4096 groups).
+// Inside a block (default shape): 16 elements per invocation as 4 coalesced uvec4 loads, a scan
+// of the 1024 chunk sums, and a Blelloch up-sweep/down-sweep of the 256 invocation totals in
+// padded shared memory (shaders/grid/scan_group.glsl). No warp or subgroup size is assumed.
 //
 // NaiveScan is the log2(N)-pass Hillis-Steele scan (as in the particle-life article), kept as
 // the reference for tests and the benchmark.
@@ -36,6 +41,7 @@ namespace tidepool::grid {
 struct ScanConfig {
   std::size_t groupSize = 256;    // invocations per work group: a power of two, 32..1024
   std::size_t vecsPerThread = 4;  // uvec4 loads per invocation: 1..16
+  bool propagate = false;         // scan-then-propagate (4 N words moved) instead of reduce-then-scan (3 N)
   std::size_t block() const { return groupSize * vecsPerThread * 4; }  // elements per work group
 };
 
@@ -61,6 +67,7 @@ class PrefixScan {
   Config m_config;
   gl::Program* m_reduce;
   gl::Program* m_block;
+  gl::Program* m_add;
   std::vector<gl::Buffer> m_sums;  // m_sums[L]: block sums of level L (+1 entry for their total)
 };
 

@@ -98,10 +98,11 @@ TEST_F(Scan, ThreeLevelsBeyondBlockSquared) {
   expectScanMatches(scan, n, 42);
 }
 
-TEST_F(Scan, OtherWorkGroupShapes) {
+TEST_F(Scan, OtherWorkGroupShapesAndScanThenPropagate) {
   // Shapes smaller and larger than any subgroup: the scan must not depend on the warp size.
   for (PrefixScan::Config config : {PrefixScan::Config{32, 1}, PrefixScan::Config{64, 3}, PrefixScan::Config{512, 2},
-                                    PrefixScan::Config{1024, 4}}) {
+                                    PrefixScan::Config{1024, 4}, PrefixScan::Config{64, 1, true},
+                                    PrefixScan::Config{256, 4, true}}) {
     PrefixScan scan(shaders(), config);
     uint32_t seed = 900;
     for (std::size_t n : edgeSizes(12, config)) {
@@ -118,15 +119,18 @@ TEST_F(Scan, OtherWorkGroupShapes) {
 }
 
 TEST_F(Scan, InPlaceAndZeroSize) {
-  PrefixScan scan(shaders());
-  for (std::size_t n : {std::size_t(0), std::size_t(1), std::size_t(5000), std::size_t(70000)}) {
-    const std::vector<uint32_t> in = randomCounts(n, uint32_t(n));
-    gl::Buffer buf((n + 1) * 4);
-    const uint32_t junk = 0xFFFFFFFFu;
-    buf.upload(&junk, 4, n * 4);  // out[n] must be written even for n = 0
-    buf.upload(std::span<const uint32_t>(in));
-    scan.run(buf, buf, n);
-    EXPECT_EQ(firstDifference(buf.readAll<uint32_t>(), reference::exclusiveScan(in)), "") << "n = " << n;
+  PrefixScan scan(shaders()), propagate(shaders(), {.propagate = true});
+  for (PrefixScan* s : {&scan, &propagate}) {
+    for (std::size_t n : {std::size_t(0), std::size_t(1), std::size_t(5000), std::size_t(70000)}) {
+      const std::vector<uint32_t> in = randomCounts(n, uint32_t(n));
+      gl::Buffer buf((n + 1) * 4);
+      const uint32_t junk = 0xFFFFFFFFu;
+      buf.upload(&junk, 4, n * 4);  // out[n] must be written even for n = 0
+      buf.upload(std::span<const uint32_t>(in));
+      s->run(buf, buf, n);
+      EXPECT_EQ(firstDifference(buf.readAll<uint32_t>(), reference::exclusiveScan(in)), "")
+          << "n = " << n << (s->config().propagate ? " (scan-then-propagate)" : "");
+    }
   }
 }
 
