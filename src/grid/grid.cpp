@@ -49,12 +49,13 @@ UniformGrid::UniformGrid(gl::ShaderLibrary& shaders, const GridParams& params, s
     : m_params(params),
       m_shape(shapeOf(params)),
       m_shaders(&shaders),
+      m_maxBlockBytes(maxStorageBlockBytes()),
       m_countPass(&shaders.program({"grid/grid_count.comp"})),
       m_scan(shaders) {
   const std::size_t startBytes = (cells() + 1) * kWord;
-  if (startBytes > maxStorageBlockBytes())
+  if (startBytes > m_maxBlockBytes)
     throw Error("grid of " + std::to_string(cells()) + " cells needs " + std::to_string(startBytes >> 20) +
-                " MiB per cell array, over this driver's SSBO limit of " + std::to_string(maxStorageBlockBytes() >> 20) +
+                " MiB per cell array, over this driver's SSBO limit of " + std::to_string(m_maxBlockBytes >> 20) +
                 " MiB: use a larger cell size");
   m_cellCount = gl::Buffer(cells() * kWord);
   m_cellStart = gl::Buffer(startBytes);
@@ -75,9 +76,9 @@ void UniformGrid::build(const gl::Buffer& positions, std::size_t count) {
 
 void UniformGrid::countParticles(const gl::Buffer& positions, std::size_t count) {
   checkArray(&positions, count * kVec4, std::to_string(count) + " positions");
-  if (count * kVec4 > maxStorageBlockBytes())
+  if (count * kVec4 > m_maxBlockBytes)
     throw Error("grid: " + std::to_string(count) + " positions need " + std::to_string(count * kVec4 >> 20) +
-                " MiB, over this driver's SSBO limit of " + std::to_string(maxStorageBlockBytes() >> 20) + " MiB");
+                " MiB, over this driver's SSBO limit of " + std::to_string(m_maxBlockBytes >> 20) + " MiB");
   if (m_indexInCell.size() < count * kWord) m_indexInCell = gl::Buffer(count * kWord);
   m_count = count;
   // The previous count pass wrote cellCount with atomics; the clear must see those writes done.

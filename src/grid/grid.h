@@ -16,8 +16,10 @@
 // border cells (never dropped, never written out of bounds); a position exactly on a cell border
 // belongs to the cell above it, one exactly on the domain max to the last cell. The cell math is
 // shaders/common/grid.glsl (setUniforms() feeds it to any kernel) and its CPU twin
-// grid_reference.h. Every pass ends with the glMemoryBarrier its readers need; callers only make
-// sure their own writes to the positions are visible (GL_SHADER_STORAGE_BARRIER_BIT).
+// grid_reference.h. Every pass ends with GL_SHADER_STORAGE_BARRIER_BIT, so later kernels may read
+// its output (Buffer::download adds its own read-back barrier); callers make their own writes to
+// the positions visible the same way, and add GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT if they draw the
+// reordered arrays as vertex attributes.
 //
 //   UniformGrid grid(shaders, {.domainMin = {0, 0, 0}, .domainMax = {4, 4, 4}, .cellSize = 0.5f});
 //   grid.build(pos, n);                                    // count + scan
@@ -85,6 +87,7 @@ class UniformGrid {
   GridParams m_params;
   reference::GridShape m_shape;
   gl::ShaderLibrary* m_shaders;
+  std::size_t m_maxBlockBytes;  // GL_MAX_SHADER_STORAGE_BLOCK_SIZE, queried once
   gl::Program* m_countPass;
   gl::Program* m_reorderPass[GRID_REORDER_MAX_ARRAYS + 1][2] = {};  // [arrays][writes permutation], made on use
   PrefixScan m_scan;

@@ -25,7 +25,7 @@ std::vector<gl::ShaderDefine> scanDefines(const PrefixScan::Config& c) {
   return {{"WG", std::to_string(g)}, {"VECS", std::to_string(v)}};
 }
 
-void checkSizes(const char* what, const gl::Buffer& in, const gl::Buffer& out, std::size_t n) {
+void checkSizes(const char* what, const gl::Buffer& in, const gl::Buffer& out, std::size_t n, std::size_t limit) {
   if (n > PrefixScan::kMaxCount)
     throw Error(std::string(what) + " of " + std::to_string(n) + " elements: at most 2^31 are supported");
   if (in.size() < n * kWord)
@@ -34,10 +34,10 @@ void checkSizes(const char* what, const gl::Buffer& in, const gl::Buffer& out, s
   if (out.size() < (n + 1) * kWord)
     throw Error(std::string(what) + " of " + std::to_string(n) + " elements: the output buffer needs n + 1 = " +
                 std::to_string(n + 1) + " uints, it holds " + std::to_string(out.size() / kWord));
-  if ((n + 1) * kWord > maxStorageBlockBytes())
+  if ((n + 1) * kWord > limit)
     throw Error(std::string(what) + " of " + std::to_string(n) + " elements needs " +
                 std::to_string((n + 1) * kWord >> 20) + " MiB arrays, over this driver's SSBO limit of " +
-                std::to_string(maxStorageBlockBytes() >> 20) + " MiB");
+                std::to_string(limit >> 20) + " MiB");
 }
 }  // namespace
 
@@ -49,6 +49,7 @@ std::size_t maxStorageBlockBytes() {
 
 PrefixScan::PrefixScan(gl::ShaderLibrary& shaders, Config config)
     : m_config(config),
+      m_maxBlockBytes(maxStorageBlockBytes()),
       m_reduce(&shaders.program({"grid/scan_reduce.comp"}, scanDefines(config))),
       m_block(&shaders.program({"grid/scan_block.comp"}, scanDefines(config))),
       m_add(&shaders.program({"grid/scan_add.comp"}, scanDefines(config))) {}
@@ -78,7 +79,7 @@ std::size_t PrefixScan::dispatchesFor(std::size_t n) const {
 }
 
 void PrefixScan::run(const gl::Buffer& in, gl::Buffer& out, std::size_t n) {
-  checkSizes("prefix scan", in, out, n);
+  checkSizes("prefix scan", in, out, n, m_maxBlockBytes);
   reserve(n);
   scanLevel(in, out, n, 0);
 }
@@ -117,7 +118,8 @@ void PrefixScan::scanLevel(const gl::Buffer& in, gl::Buffer& out, std::size_t n,
   }
 }
 
-NaiveScan::NaiveScan(gl::ShaderLibrary& shaders) : m_pass(&shaders.program({"grid/scan_naive.comp"})) {}
+NaiveScan::NaiveScan(gl::ShaderLibrary& shaders)
+    : m_maxBlockBytes(maxStorageBlockBytes()), m_pass(&shaders.program({"grid/scan_naive.comp"})) {}
 
 std::size_t NaiveScan::passesFor(std::size_t n) {
   std::size_t passes = 0;
@@ -126,7 +128,7 @@ std::size_t NaiveScan::passesFor(std::size_t n) {
 }
 
 void NaiveScan::run(const gl::Buffer& in, gl::Buffer& out, std::size_t n) {
-  checkSizes("naive scan", in, out, n);
+  checkSizes("naive scan", in, out, n, m_maxBlockBytes);
   if (in.id() == out.id()) throw Error("naive scan: input and output must be different buffers");
   if (m_temp.size() < (n + 1) * kWord) m_temp = gl::Buffer((n + 1) * kWord);
   const std::size_t passes = passesFor(n);

@@ -65,6 +65,7 @@ class PrefixScan {
   void scanLevel(const gl::Buffer& in, gl::Buffer& out, std::size_t n, std::size_t level);
 
   Config m_config;
+  std::size_t m_maxBlockBytes;  // queried once: glGet may sync a threaded driver
   gl::Program* m_reduce;
   gl::Program* m_block;
   gl::Program* m_add;
@@ -81,6 +82,7 @@ class NaiveScan {
   static std::size_t passesFor(std::size_t n);               // ceil(log2(n + 1)), at least 1
 
  private:
+  std::size_t m_maxBlockBytes;
   gl::Program* m_pass;
   gl::Buffer m_temp;
 };
