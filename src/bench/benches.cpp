@@ -3,10 +3,11 @@
 
 namespace tidepool::bench {
 
-Benchmark addRipplesBench(CLI::App& bench);
+Benchmark addGridBench(CLI::App& bench);     // grid_bench.cpp
+Benchmark addRipplesBench(CLI::App& bench);  // ripples_bench.cpp
 
 const std::vector<Registrar>& registrars() {
-  static const std::vector<Registrar> table = {addRipplesBench};
+  static const std::vector<Registrar> table = {addGridBench, addRipplesBench};
   return table;
 }
 
