@@ -4,7 +4,9 @@
 //   in  = {2, 0, 3, 1}          (n = 4 uints)
 //   out = {0, 2, 2, 5, 6}       (n + 1 uints)
 //
-// PrefixScan works on blocks of 4096 elements by default, one work group each, in one of two orders:
+// PrefixScan works on blocks of 4096 elements by default, one work group each, in one of two orders
+// (reduce-then-scan: Merrill & Grimshaw 2009; scan-then-propagate: Harris, Sengupta & Owens,
+// GPU Gems 3 ch. 39, 2007):
 //   reduce-then-scan (default), level L of n_L elements:
 //     scan_reduce   blockSums[b] = sum of block b                         reads n_L
 //     (scan blockSums in place: level L + 1, recursively)
