@@ -98,7 +98,8 @@ std::vector<grid::ScanConfig> parseShapes(const std::string& text) {
     char x = 0, p = 0, rest = 0;
     const int got = std::sscanf(token.c_str(), "%u%c%u%c%c", &g, &x, &v, &p, &rest);
     if (!((got == 3 && x == 'x') || (got == 4 && x == 'x' && p == 'p')))
-      throw Error("--scan-shapes '" + token + "' is not like 256x4 or 256x4p (invocations x uvec4 per invocation, "
+      throw Error("--scan-shapes '" + token +
+                  "' is not like 256x4 or 256x4p (invocations x uvec4 per invocation, "
                   "p: scan-then-propagate)");
     out.push_back({g, v, got == 4});
   }
@@ -161,12 +162,28 @@ std::vector<std::string> runRow(Env& env, const GridOptions& opt, const grid::Sc
   const std::size_t limit = grid::maxStorageBlockBytes();
   const std::string nText = std::to_string(n);
   if (n * sizeof(glm::vec4) > limit)
-    return {nText, "", "", "", "", "", "", "", "", "", "", "", "", "", "", "",
-            "skipped: " + std::to_string(n * sizeof(glm::vec4) >> 20) + " MiB of positions exceed this driver's SSBO limit of " +
-                std::to_string(limit >> 20) + " MiB"};
+    return {nText,
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "skipped: " + std::to_string(n * sizeof(glm::vec4) >> 20) +
+                " MiB of positions exceed this driver's SSBO limit of " + std::to_string(limit >> 20) + " MiB"};
   // A cube of side s cells of size 1 holding about perCell particles per cell.
   const uint32_t side = std::max<uint32_t>(1, uint32_t(std::lround(std::cbrt(double(n) / perCell))));
-  grid::UniformGrid grid(env.shaders, {.domainMin = glm::vec3(0.0f), .domainMax = glm::vec3(float(side)), .cellSize = 1.0f}, n);
+  grid::UniformGrid grid(env.shaders,
+                         {.domainMin = glm::vec3(0.0f), .domainMax = glm::vec3(float(side)), .cellSize = 1.0f}, n);
   const std::size_t cells = grid.cells();
 
   std::mt19937 rng(uint32_t(n) ^ uint32_t(perCell * 1000));
@@ -240,8 +257,8 @@ int runGridBench(Env& env, const GridOptions& opt) {
               wallClock ? "WALL CLOCK around glFinish (this driver's GL timer queries are not meaningful)"
                         : "GL_TIME_ELAPSED queries");
   std::fflush(stdout);
-  Table table({"N", "cells", "ppc", "count_ms", "scan_ms", "reorder_ms", "total_ms", "scanN_ms", "naive_ms",
-               "copy_ms", "scan_GBps", "reorder_GBps", "copy_GBps", "scan/copy%", "naive/scan_x", "grid_MiB", "note"});
+  Table table({"N", "cells", "ppc", "count_ms", "scan_ms", "reorder_ms", "total_ms", "scanN_ms", "naive_ms", "copy_ms",
+               "scan_GBps", "reorder_GBps", "copy_GBps", "scan/copy%", "naive/scan_x", "grid_MiB", "note"});
   for (std::size_t n : sizes) {
     if (n == 0 || n > grid::PrefixScan::kMaxCount) throw Error("--n: sizes must be between 1 and 2^31");
     for (double ppc : perCell) {
@@ -256,7 +273,8 @@ int runGridBench(Env& env, const GridOptions& opt) {
   table.print();
   if (!env.common.csv.empty()) table.writeCsv(env.common.csv);
   if (shapes.size() > 1) {
-    std::printf("\nscan of N uint32 by work-group shape (invocations x uvec4 per invocation; p: scan-then-propagate)\n");
+    std::printf(
+        "\nscan of N uint32 by work-group shape (invocations x uvec4 per invocation; p: scan-then-propagate)\n");
     Table byShape({"N", "shape", "dispatches", "scan_ms", "scan_GBps", "copy_GBps", "scan/copy%", "note"});
     for (std::size_t n : sizes) addShapeRows(env, byShape, wallClock, n, shapes);
     byShape.print();

@@ -57,8 +57,8 @@ class PrefixScan {
   // out[0..n] = exclusive scan of in[0..n). `in` holds >= n uints, `out` >= n + 1; they may be
   // the same buffer (in place). n = 0 writes out[0] = 0. Throws Error for bad sizes.
   void run(const gl::Buffer& in, gl::Buffer& out, std::size_t n);
-  void reserve(std::size_t n);            // allocates the block sums for n up front
-  std::size_t memoryBytes() const;        // block-sum buffers (bytes)
+  void reserve(std::size_t n);                     // allocates the block sums for n up front
+  std::size_t memoryBytes() const;                 // block-sum buffers (bytes)
   std::size_t dispatchesFor(std::size_t n) const;  // compute dispatches one run(n) issues
   const Config& config() const { return m_config; }
 
