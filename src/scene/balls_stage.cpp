@@ -58,7 +58,8 @@ class BallsStage final : public Stage {
   double simTime() const override { return m_model.time(); }
   std::string status() const override {
     char buf[256];
-    std::snprintf(buf, sizeof buf, "%zu balls + %zu fixed, r = %.4g m; KE %.4g, PE %.4g; overlap max %.1f%% mean %.2f%% of r",
+    std::snprintf(buf, sizeof buf,
+                  "%zu balls + %zu fixed, r = %.4g m; KE %.4g, PE %.4g; overlap max %.1f%% mean %.2f%% of r",
                   m_model.count(), m_model.obstacleCount(), m_model.radius(), m_stats.kinetic, m_stats.potential,
                   100.0 * m_stats.maxOverlap, 100.0 * m_stats.meanOverlap);
     return buf;
@@ -77,7 +78,8 @@ class BallsStage final : public Stage {
 std::unique_ptr<Stage> createBallsStage(const io::Json& params, const std::string& where, gl::ShaderLibrary& shaders) {
   balls::Params model;
   ViewSettings view;
-  readParams(params, [&](ParamVisitor& v) { visitAll(v, model, view); }, where);
+  readParams(
+      params, [&](ParamVisitor& v) { visitAll(v, model, view); }, where);
   return std::make_unique<BallsStage>(shaders, model, view);
 }
 
