@@ -3,11 +3,12 @@
 
 namespace tidepool::bench {
 
+Benchmark addBallsBench(CLI::App& bench);    // balls_bench.cpp
 Benchmark addGridBench(CLI::App& bench);     // grid_bench.cpp
 Benchmark addRipplesBench(CLI::App& bench);  // ripples_bench.cpp
 
 const std::vector<Registrar>& registrars() {
-  static const std::vector<Registrar> table = {addGridBench, addRipplesBench};
+  static const std::vector<Registrar> table = {addBallsBench, addGridBench, addRipplesBench};
   return table;
 }
 

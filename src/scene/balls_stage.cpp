@@ -75,6 +75,15 @@ class BallsStage final : public Stage {
 
 }  // namespace
 
+balls::Params ballsParams(const Scene& scene) {
+  if (scene.model != "balls") throw Error(scene.file.string() + ": not a balls scene (model " + scene.model + ")");
+  balls::Params model;
+  ViewSettings view;
+  readParams(
+      scene.params, [&](ParamVisitor& v) { visitAll(v, model, view); }, scene.file.string() + ": params");
+  return model;
+}
+
 std::unique_ptr<Stage> createBallsStage(const io::Json& params, const std::string& where, gl::ShaderLibrary& shaders) {
   balls::Params model;
   ViewSettings view;

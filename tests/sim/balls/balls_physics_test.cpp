@@ -42,8 +42,10 @@ std::pair<double, int> bounce(gl::ShaderLibrary& shaders, Integrator integrator,
   for (int i = 0; i < 20 * stepsPerContact; ++i) {
     b.stepOnce();
     const glm::vec4 x = b.downloadPositions()[0];
-    if (x.z < p.radius) ++inContact;
-    else if (inContact > 0) return {double(b.downloadVelocities()[0].z) / 1.0, inContact};
+    if (x.z < p.radius)
+      ++inContact;
+    else if (inContact > 0)
+      return {double(b.downloadVelocities()[0].z) / 1.0, inContact};
   }
   return {-1.0, inContact};
 }
