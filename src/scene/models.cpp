@@ -1,12 +1,14 @@
 // The table of models a scene can name. Each model adds one line here when it lands.
 #include "scene/blank.h"
 #include "scene/stage.h"
+#include "scene/swarm_stage.h"
 
 namespace tidepool {
 
 const std::vector<ModelEntry>& models() {
   static const std::vector<ModelEntry> table = {
       {"blank", "no simulation: clears to a colour (the shell before any model)", createBlankStage},
+      {"swarm", "millions of 2D particles pulled by animated attractors, one following the mouse", createSwarmStage},
   };
   return table;
 }

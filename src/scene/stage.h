@@ -25,6 +25,7 @@ class Stage {
   virtual void step(double frameSeconds, gl::GpuProfiler& profiler) = 0;  // one frame of simulated time
   virtual void render(RenderTarget& target, gl::GpuProfiler& profiler) = 0;
   virtual void input(const Input&) {}
+  virtual bool dropFile(const std::string& /*path*/) { return false; }  // a file dropped on the window; true: used
   virtual double simTime() const = 0;             // simulated seconds since reset
   virtual std::string status() const { return ""; }  // one line for the UI (counts, warnings)
 };
