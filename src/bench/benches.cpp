@@ -3,8 +3,10 @@
 
 namespace tidepool::bench {
 
+Benchmark addSwarmBench(CLI::App& bench);  // bench/swarm_bench.cpp
+
 const std::vector<Registrar>& registrars() {
-  static const std::vector<Registrar> table = {};
+  static const std::vector<Registrar> table = {addSwarmBench};
   return table;
 }
 
