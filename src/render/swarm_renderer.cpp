@@ -24,6 +24,8 @@ void visit(ParamVisitor& v, SwarmViewParams& p) {
   v.flag({"blend", "Blending", "additive with opacity; off: opaque"}, p.blend);
   v.real({"opacity", "Opacity", "weight of one particle when blending"}, p.opacity, 0.001f, 1.0f);
   v.flag({"high_quality", "High quality", "count particles per pixel and tone map: no saturation"}, p.highQuality);
+  v.flag({"compute_points", "Compute points", "1-px points splatted with atomics by a compute pass (fast); off: GL_POINTS"},
+         p.computePoints);
   v.flag({"show_attractors", "Show attractors", "rings at the attractors"}, p.showAttractors);
 }
 
@@ -105,10 +107,50 @@ void SwarmRenderer::drawMarkers(std::span<const SwarmMarker> markers) {
   glBindVertexArray(0);
 }
 
+void SwarmRenderer::splatPoints(const sim::Swarm& swarm, const SwarmViewParams& view, glm::vec3 singleColor,
+                                RenderTarget& target, gl::GpuProfiler& profiler) {
+  const glm::ivec2 size(target.width(), target.height());
+  const std::size_t bytes = std::size_t(size.x) * std::size_t(size.y) * 16;
+  const bool perParticle = view.colorMode == SwarmColorMode::Image && hasColors(swarm);
+  const int colorMode = perParticle ? 1 : view.colorMode == SwarmColorMode::Velocity ? 2 : 0;
+  {
+    auto scope = profiler.scope("swarm.splat");
+    if (m_splat.size() != bytes) m_splat = gl::Buffer(bytes);
+    m_splat.fillZero();
+    gl::Program& p = m_shaders.program({"render/swarm_splat.comp"}, storageDefine(swarm));
+    p.use();
+    p.set("uCount", unsigned(swarm.count()));
+    p.set("uSize", size);
+    p.set("uColorMode", colorMode);
+    swarm.state().bindBase(GL_SHADER_STORAGE_BUFFER, SWARM_STATE_BINDING);
+    if (perParticle) m_colors.bindBase(GL_SHADER_STORAGE_BUFFER, SWARM_COLOR_BINDING);
+    m_splat.bindBase(GL_SHADER_STORAGE_BUFFER, SWARM_SPLAT_BINDING);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);  // the clear before the atomics
+    p.dispatchThreads(swarm.count());
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  }
+  auto scope = profiler.scope("swarm.resolve");
+  target.bind();
+  glDisable(GL_BLEND);
+  gl::Program& p = m_shaders.program({"render/fullscreen_triangle.vert", "render/swarm_splat_resolve.frag"});
+  p.use();
+  p.set("uSize", size);
+  p.set("uMode", !view.blend ? 1 : view.highQuality ? 2 : 0);
+  p.set("uSingle", colorMode == 0 ? 1 : 0);
+  p.set("uColor", singleColor);
+  p.set("uOpacity", view.opacity);
+  m_splat.bindBase(GL_SHADER_STORAGE_BUFFER, SWARM_SPLAT_BINDING);
+  m_empty.bind();
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+}
+
 void SwarmRenderer::render(const sim::Swarm& swarm, const SwarmViewParams& view, glm::vec3 singleColor,
                            std::span<const SwarmMarker> markers, RenderTarget& target, gl::GpuProfiler& profiler) {
   glDisable(GL_DEPTH_TEST);
-  if (view.highQuality) {
+  if (view.pointSize == 1 && view.computePoints) {
+    splatPoints(swarm, view, singleColor, target, profiler);
+  } else if (view.highQuality) {
     {
       auto scope = profiler.scope("swarm.accumulate");
       if (m_accum.width() != target.width() || m_accum.height() != target.height()) {

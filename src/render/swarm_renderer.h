@@ -4,6 +4,9 @@
 //   - additive blending (src * opacity + dst) or opaque overwrite, into the RenderTarget;
 //   - high quality: accumulate per-pixel (sum of colours, count) in an RGBA32F image, then tone
 //     map brightness = 1 - exp(-opacity * count), so dense regions never clip at 255.
+// 1-px points go through a compute splat by default (atomic per-pixel counters, then a resolve
+// pass with the same three looks; opaque shows the pixel's mean colour): it skips the raster
+// pipeline, the bottleneck for tens of millions of points. Sprites always use the raster path.
 // Colours: one colour (fixed, or hue cycling once a minute), per particle from an image sampled
 // at its start position (colorFromImage, after each reset), or from the velocity direction.
 #pragma once
@@ -34,6 +37,7 @@ struct SwarmViewParams {
   bool blend = true;                       // additive with opacity, else opaque
   float opacity = 0.1f;                    // per-particle weight when blending
   bool highQuality = false;                // count per pixel and tone map (no saturation)
+  bool computePoints = true;               // 1-px points: compute splat instead of GL_POINTS
   bool showAttractors = true;              // rings at the attractors
 };
 void visit(ParamVisitor& v, SwarmViewParams& p);
@@ -62,6 +66,8 @@ class SwarmRenderer {
  private:
   void drawPoints(const sim::Swarm& swarm, const SwarmViewParams& view, glm::vec3 singleColor, bool accumulate);
   void drawMarkers(std::span<const SwarmMarker> markers);
+  void splatPoints(const sim::Swarm& swarm, const SwarmViewParams& view, glm::vec3 singleColor, RenderTarget& target,
+                   gl::GpuProfiler& profiler);
 
   gl::ShaderLibrary& m_shaders;
   gl::VertexArray m_points, m_empty;
@@ -69,6 +75,7 @@ class SwarmRenderer {
   std::size_t m_colorCount = 0;
   gl::Texture2D m_accum;  // high quality: RGBA32F (sum of rgb, count)
   gl::Framebuffer m_accumFbo;
+  gl::Buffer m_splat;     // compute points: (count, r, g, b) uints per pixel
 };
 
 }  // namespace tidepool

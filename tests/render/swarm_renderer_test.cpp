@@ -2,6 +2,8 @@
 // high-quality mode that keeps counting past 255 particles per pixel.
 #include <gtest/gtest.h>
 
+#include <random>
+
 #include "render/swarm_renderer.h"
 #include "support/gl_test.h"
 
@@ -11,6 +13,7 @@ using namespace tidepool::sim;
 namespace {
 
 class SwarmRendering : public test::GlTest {};
+class SwarmPointPaths : public test::GlTest, public ::testing::WithParamInterface<bool> {};  // computePoints
 
 // NDC of the centre of pixel (px, py) of a w x h image, py counted from the top row.
 glm::vec2 pixelCentre(int px, int py, int w, int h) {
@@ -44,7 +47,7 @@ TEST_F(SwarmRendering, ParticleStartingAtAPixelCentreGetsThatPixelsColour) {
   }
 }
 
-TEST_F(SwarmRendering, PointsLandOnTheirPixelsTopRowFirst) {
+TEST_P(SwarmPointPaths, PointsLandOnTheirPixelsTopRowFirst) {
   SwarmParams params;
   params.particles = 2;
   Swarm swarm(shaders(), params);
@@ -55,6 +58,7 @@ TEST_F(SwarmRendering, PointsLandOnTheirPixelsTopRowFirst) {
   SwarmViewParams view;
   view.blend = false;
   view.showAttractors = false;
+  view.computePoints = GetParam();
   renderer.render(swarm, view, {1.0f, 0.5f, 0.0f}, {}, target, profiler);
   const std::vector<std::uint8_t> px = target.readRgba8();
   int lit = 0;
@@ -79,7 +83,7 @@ TEST_F(SwarmRendering, PointsLandOnTheirPixelsTopRowFirst) {
   EXPECT_EQ(at(22, 14), 0) << "sprites are round";
 }
 
-TEST_F(SwarmRendering, HighQualityKeepsCountingPast255ParticlesPerPixel) {
+TEST_P(SwarmPointPaths, HighQualityKeepsCountingPast255ParticlesPerPixel) {
   // 300 particles on one pixel, 600 on another; opacity 0.002: brightness 1 - exp(-0.002 n).
   std::vector<SwarmParticle> pile(900, SwarmParticle{pixelCentre(4, 4, 16, 8), {0, 0}});
   for (std::size_t i = 300; i < 900; ++i) pile[i].pos = pixelCentre(10, 4, 16, 8);
@@ -94,10 +98,60 @@ TEST_F(SwarmRendering, HighQualityKeepsCountingPast255ParticlesPerPixel) {
   view.highQuality = true;
   view.opacity = 0.002f;
   view.showAttractors = false;
+  view.computePoints = GetParam();
   renderer.render(swarm, view, {1.0f, 1.0f, 1.0f}, {}, target, profiler);
   const std::vector<std::uint8_t> px = target.readRgba8();
   const int a = px[std::size_t(4 * 16 + 4) * 4], b = px[std::size_t(4 * 16 + 10) * 4];
   EXPECT_NEAR(a, 255.0 * (1.0 - std::exp(-0.6)), 1.5);
   EXPECT_NEAR(b, 255.0 * (1.0 - std::exp(-1.2)), 1.5);
   EXPECT_EQ(px[std::size_t(0) * 4], 0);
+}
+
+INSTANTIATE_TEST_SUITE_P(RasterAndCompute, SwarmPointPaths, ::testing::Values(false, true),
+                         [](const auto& info) { return std::string(info.param ? "compute" : "raster"); });
+
+// The compute splat must look like GL_POINTS in every colour mode and look: the raster path
+// rounds each blend to 8 bits, the splat rounds colours to 1/255 once, hence a few steps apart.
+// Particles sit on pixel centres: a point within 1/256 px of a pixel edge may land on either
+// side in the rasterizer's fixed-point snapping, and that is not what is compared here.
+TEST_F(SwarmRendering, ComputeSplatMatchesRasterPoints) {
+  std::mt19937 rng(5);
+  std::uniform_int_distribution<int> px(0, 63), py(0, 31);
+  std::normal_distribution<float> vel(0.0f, 1.0f);
+  std::vector<SwarmParticle> particles(6000);
+  for (auto& p : particles) p = {pixelCentre(px(rng), py(rng), 64, 32), {vel(rng), vel(rng)}};
+  SwarmParams params;
+  params.particles = int(particles.size());
+  Swarm swarm(shaders(), params);
+  swarm.upload(particles);
+  SwarmRenderer renderer(shaders());
+  io::Image image{2, 2, {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 0, 255}};
+  renderer.colorFromImage(swarm, image);
+  RenderTarget target(64, 32);
+  gl::GpuProfiler profiler;
+  for (SwarmColorMode mode : {SwarmColorMode::Single, SwarmColorMode::Image, SwarmColorMode::Velocity})
+    for (int look = 0; look < 3; ++look) {  // additive, high quality, opaque
+      SCOPED_TRACE(std::string(kSwarmColorModeNames[int(mode)]) + " look " + std::to_string(look));
+      SwarmViewParams view;
+      view.colorMode = mode;
+      view.opacity = 0.2f;
+      view.highQuality = look == 1;
+      view.blend = look != 2;
+      view.showAttractors = false;
+      std::vector<std::uint8_t> images[2];
+      for (int path = 0; path < 2; ++path) {
+        view.computePoints = path == 1;
+        renderer.render(swarm, view, {0.3f, 0.6f, 0.9f}, {}, target, profiler);
+        images[path] = target.readRgba8();
+      }
+      int worst = 0, lit = 0;
+      for (std::size_t i = 0; i < images[0].size(); ++i) {
+        if (look == 2 && mode != SwarmColorMode::Single) continue;  // opaque: last particle vs mean colour
+        const int d = std::abs(int(images[0][i]) - int(images[1][i]));
+        worst = std::max(worst, d);
+        lit += i % 4 == 3 && (images[1][i - 1] > 0 || images[1][i - 2] > 0 || images[1][i - 3] > 0);
+      }
+      EXPECT_LE(worst, look == 0 ? 6 : 2);
+      if (look != 2 || mode == SwarmColorMode::Single) EXPECT_GT(lit, 500);
+    }
 }
