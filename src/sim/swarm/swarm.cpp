@@ -61,7 +61,7 @@ void visit(ParamVisitor& v, SwarmParams& p) {
   v.choice({"preset", "Attractors", "animated attractor preset"}, p.preset, kPresetNames);
   v.real({"mouse_strength", "Mouse strength", "attractor at the cursor while the left button is held; < 0 repels"},
          p.mouseStrength, -10.0f, 10.0f);
-  v.integer({"seed", "Seed", "random initial positions"}, p.seed, 0, 1 << 30);
+  v.integer({"seed", "Seed", "random initial positions"}, p.seed, 0, 1000000);
 }
 
 Swarm::Swarm(gl::ShaderLibrary& shaders, const SwarmParams& params) : m_shaders(shaders), m_params(params) {
