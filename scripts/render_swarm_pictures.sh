@@ -13,3 +13,4 @@ for scene in orbit sines central-attractive central-repulsive none image; do
   cp "$tmp/$scene/$last" "docs/images/swarm-$scene.png"
 done
 rm -rf "$tmp"
+python3 scripts/shrink_png.py docs/images/swarm-*.png

@@ -48,39 +48,43 @@ TEST_F(SwarmRendering, ParticleStartingAtAPixelCentreGetsThatPixelsColour) {
 }
 
 TEST_P(SwarmPointPaths, PointsLandOnTheirPixelsTopRowFirst) {
-  SwarmParams params;
-  params.particles = 2;
-  Swarm swarm(shaders(), params);
-  swarm.upload(std::vector<SwarmParticle>{{pixelCentre(3, 1, 32, 16), {0, 0}}, {pixelCentre(20, 12, 32, 16), {0, 0}}});
-  SwarmRenderer renderer(shaders());
-  RenderTarget target(32, 16);
-  gl::GpuProfiler profiler;
-  SwarmViewParams view;
-  view.blend = false;
-  view.showAttractors = false;
-  view.computePoints = GetParam();
-  renderer.render(swarm, view, {1.0f, 0.5f, 0.0f}, {}, target, profiler);
-  const std::vector<std::uint8_t> px = target.readRgba8();
-  int lit = 0;
-  for (int y = 0; y < 16; ++y)
-    for (int x = 0; x < 32; ++x) {
-      const std::uint8_t* p = &px[std::size_t(y * 32 + x) * 4];
-      if (p[0] == 0) continue;
-      ++lit;
-      EXPECT_TRUE((x == 3 && y == 1) || (x == 20 && y == 12)) << "lit at " << x << "," << y;
-      EXPECT_EQ(p[0], 255);
-      EXPECT_NEAR(p[1], 128, 1);
-    }
-  EXPECT_EQ(lit, 2);
+  for (Storage storage : {Storage::Fp32, Storage::Fp16}) {  // fp16: the state read as 4 x GL_HALF_FLOAT
+    SCOPED_TRACE(kStorageNames[int(storage)]);
+    SwarmParams params;
+    params.particles = 2;
+    params.storage = storage;
+    Swarm swarm(shaders(), params);
+    swarm.upload(std::vector<SwarmParticle>{{pixelCentre(3, 1, 32, 16), {0, 0}}, {pixelCentre(20, 12, 32, 16), {0, 0}}});
+    SwarmRenderer renderer(shaders());
+    RenderTarget target(32, 16);
+    gl::GpuProfiler profiler;
+    SwarmViewParams view;
+    view.blend = false;
+    view.showAttractors = false;
+    view.computePoints = GetParam();
+    renderer.render(swarm, view, {1.0f, 0.5f, 0.0f}, {}, target, profiler);
+    const std::vector<std::uint8_t> px = target.readRgba8();
+    int lit = 0;
+    for (int y = 0; y < 16; ++y)
+      for (int x = 0; x < 32; ++x) {
+        const std::uint8_t* p = &px[std::size_t(y * 32 + x) * 4];
+        if (p[0] == 0) continue;
+        ++lit;
+        EXPECT_TRUE((x == 3 && y == 1) || (x == 20 && y == 12)) << "lit at " << x << "," << y;
+        EXPECT_EQ(p[0], 255);
+        EXPECT_NEAR(p[1], 128, 1);
+      }
+    EXPECT_EQ(lit, 2);
 
-  view.pointSize = 5;  // round sprite: 5 px across, corners cut
-  renderer.render(swarm, view, {1.0f, 1.0f, 1.0f}, {}, target, profiler);
-  const std::vector<std::uint8_t> sprite = target.readRgba8();
-  auto at = [&](int x, int y) { return sprite[std::size_t(y * 32 + x) * 4]; };
-  EXPECT_EQ(at(20, 12), 255);
-  EXPECT_EQ(at(22, 12), 255);
-  EXPECT_EQ(at(20, 14), 255);
-  EXPECT_EQ(at(22, 14), 0) << "sprites are round";
+    view.pointSize = 5;  // round sprite: 5 px across, corners cut
+    renderer.render(swarm, view, {1.0f, 1.0f, 1.0f}, {}, target, profiler);
+    const std::vector<std::uint8_t> sprite = target.readRgba8();
+    auto at = [&](int x, int y) { return sprite[std::size_t(y * 32 + x) * 4]; };
+    EXPECT_EQ(at(20, 12), 255);
+    EXPECT_EQ(at(22, 12), 255);
+    EXPECT_EQ(at(20, 14), 255);
+    EXPECT_EQ(at(22, 14), 0) << "sprites are round";
+  }
 }
 
 TEST_P(SwarmPointPaths, HighQualityKeepsCountingPast255ParticlesPerPixel) {
