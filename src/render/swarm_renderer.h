@@ -11,6 +11,7 @@
 // at its start position (colorFromImage, after each reset), or from the velocity direction.
 #pragma once
 
+#include <array>
 #include <span>
 #include <string>
 
