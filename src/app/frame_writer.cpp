@@ -12,7 +12,8 @@ void FrameWriter::write(std::filesystem::path path, io::Image image) {
     m_pending.front().get();
     m_pending.pop_front();
   }
-  m_pending.push_back(std::async(std::launch::async, [p = std::move(path), img = std::move(image)] { io::writePng(p, img); }));
+  m_pending.push_back(
+      std::async(std::launch::async, [p = std::move(path), img = std::move(image)] { io::writePng(p, img); }));
 }
 
 void FrameWriter::finish() {

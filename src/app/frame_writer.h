@@ -16,7 +16,7 @@ class FrameWriter {
   explicit FrameWriter(std::size_t maxInFlight = 4) : m_maxInFlight(maxInFlight) {}
   ~FrameWriter();
   void write(std::filesystem::path path, io::Image image);  // blocks while too many are in flight
-  void finish();                                             // waits; rethrows the first error
+  void finish();                                            // waits; rethrows the first error
 
  private:
   std::size_t m_maxInFlight;

@@ -39,6 +39,7 @@ int renderHeadless(const RenderJob& job) {
     // Frame i shows the state after i steps: frame 0 is the initial state.
     profiler.beginFrame();
     if (i > 0) stage->step(1.0 / scene.clip.fps, profiler);
+    if (const auto d = stage->divergence()) throw Error(d->message);
     stage->render(target, profiler);
     profiler.endFrame();
     std::vector<std::uint8_t> pixels = target.readRgba8();
@@ -51,6 +52,8 @@ int renderHeadless(const RenderJob& job) {
     progress.update(i + 1);
   }
   writer.finish();
+  stage->flushChecks();
+  if (const auto d = stage->divergence()) throw Error(d->message);
   if (video) video->close();
   progress.finish();
   if (!job.outDir.empty())

@@ -10,11 +10,11 @@
 namespace tidepool {
 
 struct RenderJob {
-  std::string scene;                       // path or bare name (assets/scenes/<name>.json)
-  std::optional<int> frames;               // default: the scene's clip.frames
-  std::optional<int> width, height;        // default: the scene's clip size
-  std::filesystem::path outDir;            // PNG frames (frame_00000.png ...); empty: none
-  std::filesystem::path video;             // .mp4 through ffmpeg; empty: none
+  std::string scene;                 // path or bare name (assets/scenes/<name>.json)
+  std::optional<int> frames;         // default: the scene's clip.frames
+  std::optional<int> width, height;  // default: the scene's clip size
+  std::filesystem::path outDir;      // PNG frames (frame_00000.png ...); empty: none
+  std::filesystem::path video;       // .mp4 through ffmpeg; empty: none
   gl::Backend backend = gl::Backend::Auto;
   bool debugGl = false;
   bool progress = true;

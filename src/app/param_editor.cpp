@@ -10,15 +10,15 @@ void ParamEditor::tooltip(const ParamInfo& info) {
 
 void ParamEditor::real(const ParamInfo& info, float& value, float min, float max) {
   // Wide positive ranges (time steps, stiffnesses) are easier to tune on a log scale.
-  const ImGuiSliderFlags flags = (min > 0 && max / min > 1000.0f ? ImGuiSliderFlags_Logarithmic : 0) |
-                                 ImGuiSliderFlags_AlwaysClamp;
+  const ImGuiSliderFlags flags =
+      (min > 0 && max / min > 1000.0f ? ImGuiSliderFlags_Logarithmic : 0) | ImGuiSliderFlags_AlwaysClamp;
   m_changed |= ImGui::SliderFloat(info.label, &value, min, max, "%.4g", flags);
   tooltip(info);
 }
 
 void ParamEditor::integer(const ParamInfo& info, int& value, int min, int max) {
-  const ImGuiSliderFlags flags = (min > 0 && max / min > 1000 ? ImGuiSliderFlags_Logarithmic : 0) |
-                                 ImGuiSliderFlags_AlwaysClamp;
+  const ImGuiSliderFlags flags =
+      (min > 0 && max / min > 1000 ? ImGuiSliderFlags_Logarithmic : 0) | ImGuiSliderFlags_AlwaysClamp;
   m_changed |= ImGui::SliderInt(info.label, &value, min, max, "%d", flags);
   tooltip(info);
 }
@@ -39,7 +39,8 @@ void ParamEditor::color(const ParamInfo& info, glm::vec3& value) {
 }
 
 void ParamEditor::vector(const ParamInfo& info, glm::vec3& value, float min, float max) {
-  m_changed |= ImGui::DragFloat3(info.label, &value.x, (max - min) * 0.001f, min, max, "%.3f", ImGuiSliderFlags_AlwaysClamp);
+  m_changed |=
+      ImGui::DragFloat3(info.label, &value.x, (max - min) * 0.001f, min, max, "%.3f", ImGuiSliderFlags_AlwaysClamp);
   tooltip(info);
 }
 

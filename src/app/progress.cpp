@@ -7,7 +7,10 @@
 namespace tidepool {
 
 Progress::Progress(std::string label, int total, bool enabled)
-    : m_label(std::move(label)), m_total(total), m_enabled(enabled), m_tty(isatty(STDERR_FILENO)),
+    : m_label(std::move(label)),
+      m_total(total),
+      m_enabled(enabled),
+      m_tty(isatty(STDERR_FILENO)),
       m_start(std::chrono::steady_clock::now()) {}
 
 void Progress::update(int done) {

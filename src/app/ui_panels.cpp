@@ -51,6 +51,12 @@ bool drawMainPanel(const Scene& scene, Stage& stage, const gl::GpuProfiler& prof
   if (ImGui::Button("Reload shaders (F5)")) ui.reloadRequested = true;
   ImGui::SameLine();
   if (ImGui::Button("Screenshot (F12)")) ui.screenshotRequested = true;
+  if (!ui.divergence.empty()) {
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.3f, 1.0f), "%s", ui.divergence.c_str());
+    ImGui::PopTextWrapPos();
+    if (ImGui::Button("Halve dt and resume from the last good state")) ui.recoverRequested = true;
+  }
   if (!ui.message.empty()) {
     const ImVec4 colour = ui.messageIsError ? ImVec4(1.0f, 0.45f, 0.4f, 1.0f) : ImVec4(0.6f, 0.9f, 0.6f, 1.0f);
     ImGui::PushTextWrapPos(0.0f);

@@ -15,7 +15,9 @@ struct UiState {
   bool reloadRequested = false;
   bool screenshotRequested = false;
   bool showUi = true;
-  std::string message;       // last action's result (reload, screenshot)
+  bool recoverRequested = false;
+  std::string divergence;  // the model\'s blow-up report; the run is paused while it is set
+  std::string message;     // last action's result (reload, screenshot)
   bool messageIsError = false;
 };
 

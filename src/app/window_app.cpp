@@ -2,9 +2,9 @@
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
-#include <imgui.h>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
 
 #include <chrono>
 #include <ctime>
@@ -41,8 +41,7 @@ io::Image readWindow(int width, int height) {
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, bottomUp.data());
   const std::size_t row = std::size_t(width) * 4;
-  for (int y = 0; y < height; ++y)
-    std::copy_n(&bottomUp[row * (height - 1 - y)], row, &img.rgba[row * y]);
+  for (int y = 0; y < height; ++y) std::copy_n(&bottomUp[row * (height - 1 - y)], row, &img.rgba[row * y]);
   for (std::size_t i = 3; i < img.rgba.size(); i += 4) img.rgba[i] = 255;  // the window is opaque
   return img;
 }
@@ -70,7 +69,7 @@ Input readInput(GLFWwindow* window, glm::vec2& lastCursor, float& scroll) {
   return in;
 }
 
-float g_scroll = 0.0f;  // accumulated by the GLFW callback between frames
+float g_scroll = 0.0f;               // accumulated by the GLFW callback between frames
 std::vector<std::string> g_dropped;  // files dropped on the window since the last frame
 
 }  // namespace
@@ -130,7 +129,20 @@ int runWindow(const WindowJob& job) {
     }
     if (ui.resetRequested) {
       ui.resetRequested = false;
+      ui.divergence.clear();
       stage->reset();
+    }
+    if (ui.recoverRequested) {
+      ui.recoverRequested = false;
+      if (stage->recover()) {
+        ui.divergence.clear();
+        ui.paused = false;
+        ui.message = "resumed from the last good state with half the time step";
+        ui.messageIsError = false;
+      } else {
+        ui.message = "no good state to go back to: reset (R) instead";
+        ui.messageIsError = true;
+      }
     }
     stage->input(readInput(window, lastCursor, g_scroll));
     for (const std::string& path : std::exchange(g_dropped, {})) {
@@ -144,6 +156,11 @@ int runWindow(const WindowJob& job) {
     if (!ui.paused || std::exchange(ui.stepOnce, false)) stage->step(kFrameSeconds, profiler);
     stage->render(target, profiler);
     profiler.endFrame();
+    if (const auto d = stage->divergence(); d && ui.divergence.empty()) {
+      ui.divergence = d->message;
+      log::error(d->message);
+      ui.paused = true;  // say which method failed at which dt, and wait for the user
+    }
 
     glBindFramebuffer(GL_READ_FRAMEBUFFER, target.framebuffer().id());
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
@@ -156,7 +173,8 @@ int runWindow(const WindowJob& job) {
     const bool last = job.maxFrames && frame + 1 >= *job.maxFrames;
     if (ui.screenshotRequested || (last && !job.screenshot.empty())) {
       ui.screenshotRequested = false;
-      const std::filesystem::path path = last && !job.screenshot.empty() ? job.screenshot : std::filesystem::path(timestampedName());
+      const std::filesystem::path path =
+          last && !job.screenshot.empty() ? job.screenshot : std::filesystem::path(timestampedName());
       try {
         io::writePng(path, readWindow(fbw, fbh));
         ui.message = "saved " + path.string();

@@ -9,10 +9,10 @@
 namespace tidepool {
 
 struct WindowJob {
-  std::string scene;                    // path or bare name
+  std::string scene;  // path or bare name
   int width = 1280, height = 720;
-  std::optional<int> maxFrames;         // close after this many frames (scripts, tests)
-  std::filesystem::path screenshot;     // written after the last frame when set
+  std::optional<int> maxFrames;      // close after this many frames (scripts, tests)
+  std::filesystem::path screenshot;  // written after the last frame when set
   bool debugGl = false;
   bool vsync = true;
 };

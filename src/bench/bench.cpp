@@ -1,12 +1,14 @@
 #include "bench/bench.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <regex>
 #include <sstream>
 
 #include "base/error.h"
+#include "gl/framebuffer.h"
 
 namespace tidepool::bench {
 
@@ -48,6 +50,45 @@ double median(std::vector<double> v) {
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
+bool softwareRenderer() {
+  const GLubyte* r = glGetString(GL_RENDERER);
+  const std::string renderer = r ? reinterpret_cast<const char*>(r) : "";
+  return renderer.find("llvmpipe") != std::string::npos || renderer.find("softpipe") != std::string::npos;
+}
+
+double gpuMedianMs(const Common& c, const std::function<void()>& work) {
+  // A software renderer's timer queries do not measure its execution: time it on the wall clock
+  // between two glFinish calls instead.
+  static const bool software = softwareRenderer();
+  gl::Query query = gl::Query::create();
+  for (int i = 0; i < c.warmup; ++i) work();
+  std::vector<double> ms;
+  for (int i = 0; i < c.repeats; ++i) {
+    if (software) {
+      glFinish();
+      const auto start = std::chrono::steady_clock::now();
+      work();
+      glFinish();
+      ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+      continue;
+    }
+    glBeginQuery(GL_TIME_ELAPSED, query.id());
+    work();
+    glEndQuery(GL_TIME_ELAPSED);
+    GLuint64 ns = 0;
+    glGetQueryObjectui64v(query.id(), GL_QUERY_RESULT, &ns);
+    ms.push_back(double(ns) * 1e-6);
+  }
+  return median(ms);
+}
+
+std::string timingCaveat(const std::string& device) {
+  if (device.find("llvmpipe") == std::string::npos && device.find("softpipe") == std::string::npos) return "";
+  return "note: " + device +
+         " is a software renderer: times are wall-clock around glFinish, for development "
+         "only (GPU figures: docs/PERFORMANCE.md)";
+}
+
 std::string fixed(double value, int decimals) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.*f", decimals, value);
@@ -58,6 +99,7 @@ std::vector<std::size_t> parseSizes(const std::string& text) {
   static const std::regex number(R"((\d+)([kKmM]?))");
   static const std::regex power(R"(2\^(\d+))");
   static const std::regex range(R"(2\^(\d+)\.\.2\^(\d+))");
+  static const std::regex doubling(R"((\d+[kKmM]?)\.\.(\d+[kKmM]?))");
   auto one = [&](const std::string& token) -> std::size_t {
     std::smatch m;
     if (std::regex_match(token, m, power) && std::stoi(m[1]) < 40) return std::size_t(1) << std::stoi(m[1]);
@@ -75,6 +117,9 @@ std::vector<std::size_t> parseSizes(const std::string& text) {
     std::smatch m;
     if (std::regex_match(token, m, range)) {
       for (int k = std::stoi(m[1]); k <= std::stoi(m[2]) && k < 40; ++k) out.push_back(std::size_t(1) << k);
+    } else if (std::regex_match(token, m, doubling)) {
+      const std::size_t last = one(m[2]);
+      for (std::size_t v = one(m[1]); v > 0 && v <= last; v *= 2) out.push_back(v);
     } else {
       out.push_back(one(token));
     }

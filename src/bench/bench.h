@@ -42,7 +42,7 @@ class Table {
  public:
   explicit Table(std::vector<std::string> columns) : m_columns(std::move(columns)) {}
   void add(std::vector<std::string> row) { m_rows.push_back(std::move(row)); }
-  void print() const;                      // to stdout
+  void print() const;                            // to stdout
   void writeCsv(const std::string& path) const;  // throws Error
 
  private:
@@ -51,8 +51,16 @@ class Table {
 };
 
 double median(std::vector<double> values);
+
+// Median GPU milliseconds (GL_TIME_ELAPSED) of `work` over common.repeats runs, after
+// common.warmup untimed runs. `work` must not open GpuProfiler scopes (queries cannot nest).
+// On a software renderer (llvmpipe) the wall clock around glFinish is used instead.
+double gpuMedianMs(const Common& common, const std::function<void()>& work);
+
+// A line to print under tables measured on a software renderer (empty for hardware).
+std::string timingCaveat(const std::string& device);
 std::string fixed(double value, int decimals);
-// "65536,1M,16M" or "2^16..2^24" -> sizes; throws Error naming the bad token.
+// "65536,1M,16M", "2^16..2^24" or "512..4096" (doubling) -> sizes; throws Error naming the bad token.
 std::vector<std::size_t> parseSizes(const std::string& text);
 
 }  // namespace tidepool::bench

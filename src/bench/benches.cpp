@@ -3,10 +3,11 @@
 
 namespace tidepool::bench {
 
+Benchmark addRipplesBench(CLI::App& bench);
 Benchmark addSwarmBench(CLI::App& bench);  // bench/swarm_bench.cpp
 
 const std::vector<Registrar>& registrars() {
-  static const std::vector<Registrar> table = {addSwarmBench};
+  static const std::vector<Registrar> table = {addRipplesBench, addSwarmBench};
   return table;
 }
 

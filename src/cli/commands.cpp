@@ -59,7 +59,8 @@ Command addRender(CLI::App& app) {
   };
   auto o = std::make_shared<Opts>();
   sub->add_option("scene", o->job.scene, "scene file, or a name from assets/scenes (e.g. blank)")->required();
-  sub->add_option("--frames", o->frames, "number of frames (default: the scene's clip.frames)")->check(CLI::Range(1, 1000000));
+  sub->add_option("--frames", o->frames, "number of frames (default: the scene's clip.frames)")
+      ->check(CLI::Range(1, 1000000));
   sub->add_option("--size", o->size, "image size WIDTHxHEIGHT (default: the scene's clip size)");
   sub->add_option("--out", o->job.outDir, "folder for frame_00000.png ...");
   sub->add_option("--video", o->job.video, "video file written through ffmpeg (e.g. clip.mp4)");
@@ -104,7 +105,8 @@ Command addRun(CLI::App& app) {
             int w = 0, h = 0;
             parseSize(o->size, w, h);
             const gl::Backend backend = gl::parseBackend(o->backend);
-            const bool window = backend == gl::Backend::Window || (backend == gl::Backend::Auto && gl::displayAvailable());
+            const bool window =
+                backend == gl::Backend::Window || (backend == gl::Backend::Auto && gl::displayAvailable());
             if (window) {
               WindowJob job{o->scene, w, h, std::nullopt, o->screenshot, o->debugGl || kDebugBuild, !o->noVsync};
               if (o->frames > 0) job.maxFrames = o->frames;

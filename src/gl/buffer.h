@@ -19,15 +19,15 @@ class Buffer {
       : Buffer(data.size_bytes(), data.data(), usage) {}
 
   GLuint id() const { return m_handle.get(); }
-  std::size_t size() const { return m_size; }                      // bytes
+  std::size_t size() const { return m_size; }  // bytes
   explicit operator bool() const { return bool(m_handle); }
 
   void resize(std::size_t bytes, GLenum usage = GL_DYNAMIC_COPY);  // contents are lost
   void upload(const void* data, std::size_t bytes, std::size_t offset = 0);
   void download(void* data, std::size_t bytes, std::size_t offset = 0) const;
-  void fillZero();                                                  // glClearBufferData
+  void fillZero();  // glClearBufferData
   void copyTo(Buffer& dst, std::size_t bytes, std::size_t srcOffset = 0, std::size_t dstOffset = 0) const;
-  void bindBase(GLenum target, GLuint index) const;                 // SSBO / UBO binding point
+  void bindBase(GLenum target, GLuint index) const;  // SSBO / UBO binding point
   void bindRange(GLenum target, GLuint index, std::size_t offset, std::size_t bytes) const;
 
   template <class T>

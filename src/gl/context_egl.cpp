@@ -77,9 +77,15 @@ EGLContext makeContext(EGLDisplay display, bool debug, bool versioned) {
     if (!GLAD_EGL_KHR_no_config_context) return EGL_NO_CONTEXT;
     config = EGL_NO_CONFIG_KHR;
   }
-  const EGLint versionedAttribs[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 3,
-                                     EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                     EGL_CONTEXT_OPENGL_DEBUG, debug ? EGL_TRUE : EGL_FALSE, EGL_NONE};
+  const EGLint versionedAttribs[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                     4,
+                                     EGL_CONTEXT_MINOR_VERSION,
+                                     3,
+                                     EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                     EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                     EGL_CONTEXT_OPENGL_DEBUG,
+                                     debug ? EGL_TRUE : EGL_FALSE,
+                                     EGL_NONE};
   const EGLint plainAttribs[] = {EGL_NONE};
   return eglCreateContext(display, config, EGL_NO_CONTEXT, versioned ? versionedAttribs : plainAttribs);
 }
@@ -117,7 +123,8 @@ std::unique_ptr<Context> createEglContext(const ContextOptions& options) {
     if (options.debug) enableDebugOutput();
     return context;
   }
-  throw Error("EGL found no usable display (" + (tried.empty() ? std::string(" no device or surfaceless platform") : tried) + ")");
+  throw Error("EGL found no usable display (" +
+              (tried.empty() ? std::string(" no device or surfaceless platform") : tried) + ")");
 }
 
 }  // namespace tidepool::gl

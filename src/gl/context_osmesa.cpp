@@ -25,7 +25,8 @@ const OsMesaApi& api() {
     for (const char* name : {"libOSMesa.so.8", "libOSMesa.so"})
       if ((r.lib = dlopen(name, RTLD_NOW | RTLD_LOCAL))) break;
     if (!r.lib) return r;
-    r.createContextAttribs = reinterpret_cast<decltype(r.createContextAttribs)>(dlsym(r.lib, "OSMesaCreateContextAttribs"));
+    r.createContextAttribs =
+        reinterpret_cast<decltype(r.createContextAttribs)>(dlsym(r.lib, "OSMesaCreateContextAttribs"));
     r.makeCurrent = reinterpret_cast<decltype(r.makeCurrent)>(dlsym(r.lib, "OSMesaMakeCurrent"));
     r.destroyContext = reinterpret_cast<decltype(r.destroyContext)>(dlsym(r.lib, "OSMesaDestroyContext"));
     r.getProcAddress = reinterpret_cast<decltype(r.getProcAddress)>(dlsym(r.lib, "OSMesaGetProcAddress"));
@@ -57,8 +58,17 @@ std::unique_ptr<Context> createOsMesaContext(const ContextOptions& options) {
   const OsMesaApi& a = api();
   if (!a.lib || !a.createContextAttribs || !a.makeCurrent || !a.getProcAddress)
     throw Error("OSMesa: libOSMesa.so.8 could not be loaded (install libosmesa6)");
-  const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24, OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-                         OSMESA_CONTEXT_MAJOR_VERSION, 4, OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
+  const int attribs[] = {OSMESA_FORMAT,
+                         OSMESA_RGBA,
+                         OSMESA_DEPTH_BITS,
+                         24,
+                         OSMESA_PROFILE,
+                         OSMESA_CORE_PROFILE,
+                         OSMESA_CONTEXT_MAJOR_VERSION,
+                         4,
+                         OSMESA_CONTEXT_MINOR_VERSION,
+                         3,
+                         0};
   OSMesaContext ctx = a.createContextAttribs(attribs, nullptr);
   if (!ctx) throw Error("OSMesa: could not create an OpenGL 4.3 core context");
   auto context = std::make_unique<OsMesaContext>(ctx);

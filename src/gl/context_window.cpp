@@ -14,7 +14,9 @@ void onGlfwError(int, const char* description) { g_lastGlfwError = description; 
 
 void initGlfw() {
   glfwSetErrorCallback(onGlfwError);
-  if (!glfwInit()) throw Error("cannot open a window: " + (g_lastGlfwError.empty() ? std::string("glfwInit failed") : g_lastGlfwError));
+  if (!glfwInit())
+    throw Error("cannot open a window: " +
+                (g_lastGlfwError.empty() ? std::string("glfwInit failed") : g_lastGlfwError));
 }
 }  // namespace
 

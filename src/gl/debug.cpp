@@ -12,9 +12,12 @@ void GLAPIENTRY onMessage(GLenum source, GLenum type, GLuint id, GLenum severity
   (void)source;
   if (severity == GL_DEBUG_SEVERITY_NOTIFICATION) return;
   const std::string text = "GL [" + std::to_string(id) + "] " + message;
-  if (type == GL_DEBUG_TYPE_ERROR) log::error(text);
-  else if (severity == GL_DEBUG_SEVERITY_HIGH) log::warn(text);
-  else log::debug(text);
+  if (type == GL_DEBUG_TYPE_ERROR)
+    log::error(text);
+  else if (severity == GL_DEBUG_SEVERITY_HIGH)
+    log::warn(text);
+  else
+    log::debug(text);
 }
 }  // namespace
 

@@ -4,7 +4,7 @@
 
 namespace tidepool::gl {
 namespace {
-constexpr double kSmoothing = 0.1;      // EMA weight of the newest frame
+constexpr double kSmoothing = 0.1;  // EMA weight of the newest frame
 constexpr std::size_t kMaxCompleted = 4096;
 }  // namespace
 
@@ -31,8 +31,10 @@ void GpuProfiler::harvest(Slot& slot) {
   std::vector<Pass> next;
   for (const auto& [name, ms] : frame.passes) {
     auto it = std::find_if(next.begin(), next.end(), [&](const Pass& p) { return p.name == name; });
-    if (it == next.end()) next.push_back({name, ms, ms});
-    else it->ms += ms;
+    if (it == next.end())
+      next.push_back({name, ms, ms});
+    else
+      it->ms += ms;
   }
   for (Pass& p : next) {
     auto old = std::find_if(m_passes.begin(), m_passes.end(), [&](const Pass& q) { return q.name == p.name; });
@@ -52,9 +54,12 @@ void GpuProfiler::beginFrame() {
   for (std::size_t k = 0; k < m_slots.size(); ++k) {
     Slot& s = m_slots[(m_current + k) % m_slots.size()];
     if (!s.pending) continue;
-    if (ready(s)) harvest(s);
-    else if (k == 0) ++m_dropped;  // never wait: this frame's times are lost
-    else break;                    // younger frames finish later; keep order
+    if (ready(s))
+      harvest(s);
+    else if (k == 0)
+      ++m_dropped;  // never wait: this frame's times are lost
+    else
+      break;  // younger frames finish later; keep order
   }
   Slot& slot = m_slots[m_current];
   slot.names.clear();

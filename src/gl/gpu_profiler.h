@@ -43,13 +43,13 @@ class GpuProfiler {
   void setEnabled(bool enabled) { m_enabled = enabled; }
   bool enabled() const { return m_enabled; }
 
-  void beginFrame();                   // harvests finished frames without waiting
+  void beginFrame();  // harvests finished frames without waiting
   [[nodiscard]] Scope scope(std::string_view name);
   void endFrame();
-  void finish();                       // waits for every pending frame (benchmarks only)
+  void finish();  // waits for every pending frame (benchmarks only)
 
   const std::vector<Pass>& passes() const { return m_passes; }
-  double totalMs() const;              // sum of the last completed frame's passes
+  double totalMs() const;  // sum of the last completed frame's passes
   double totalSmoothedMs() const;
   std::vector<FrameTimes> takeCompleted();  // completed frames since the last call (benchmarks)
   int dropped() const { return m_dropped; }

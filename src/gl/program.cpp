@@ -24,11 +24,21 @@ GLint Program::uniform(const char* name) const {
 void Program::set(const char* n, float v) const { glProgramUniform1f(id(), uniform(n), v); }
 void Program::set(const char* n, int v) const { glProgramUniform1i(id(), uniform(n), v); }
 void Program::set(const char* n, unsigned v) const { glProgramUniform1ui(id(), uniform(n), v); }
-void Program::set(const char* n, const glm::vec2& v) const { glProgramUniform2fv(id(), uniform(n), 1, glm::value_ptr(v)); }
-void Program::set(const char* n, const glm::vec3& v) const { glProgramUniform3fv(id(), uniform(n), 1, glm::value_ptr(v)); }
-void Program::set(const char* n, const glm::vec4& v) const { glProgramUniform4fv(id(), uniform(n), 1, glm::value_ptr(v)); }
-void Program::set(const char* n, const glm::ivec2& v) const { glProgramUniform2iv(id(), uniform(n), 1, glm::value_ptr(v)); }
-void Program::set(const char* n, const glm::uvec3& v) const { glProgramUniform3uiv(id(), uniform(n), 1, glm::value_ptr(v)); }
+void Program::set(const char* n, const glm::vec2& v) const {
+  glProgramUniform2fv(id(), uniform(n), 1, glm::value_ptr(v));
+}
+void Program::set(const char* n, const glm::vec3& v) const {
+  glProgramUniform3fv(id(), uniform(n), 1, glm::value_ptr(v));
+}
+void Program::set(const char* n, const glm::vec4& v) const {
+  glProgramUniform4fv(id(), uniform(n), 1, glm::value_ptr(v));
+}
+void Program::set(const char* n, const glm::ivec2& v) const {
+  glProgramUniform2iv(id(), uniform(n), 1, glm::value_ptr(v));
+}
+void Program::set(const char* n, const glm::uvec3& v) const {
+  glProgramUniform3uiv(id(), uniform(n), 1, glm::value_ptr(v));
+}
 void Program::set(const char* n, const glm::mat4& v) const {
   glProgramUniformMatrix4fv(id(), uniform(n), 1, GL_FALSE, glm::value_ptr(v));
 }

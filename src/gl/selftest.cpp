@@ -15,7 +15,8 @@ std::string computeSelfTest(ShaderLibrary& shaders, unsigned count) {
   const std::vector<GLuint> got = out.read<GLuint>(count);
   for (unsigned i = 0; i < count; ++i)
     if (got[i] != i * 7u + 1u)
-      return "value " + std::to_string(i) + " is " + std::to_string(got[i]) + ", expected " + std::to_string(i * 7u + 1u);
+      return "value " + std::to_string(i) + " is " + std::to_string(got[i]) + ", expected " +
+             std::to_string(i * 7u + 1u);
   return "";
 }
 

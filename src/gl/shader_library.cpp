@@ -23,11 +23,15 @@ GLenum stageOf(const std::string& path) {
 
 std::string infoLog(GLuint object, bool isProgram) {
   GLint length = 0;
-  if (isProgram) glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length);
-  else glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
+  if (isProgram)
+    glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length);
+  else
+    glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
   std::string log(std::size_t(std::max(length, 1)), '\0');
-  if (isProgram) glGetProgramInfoLog(object, length, nullptr, log.data());
-  else glGetShaderInfoLog(object, length, nullptr, log.data());
+  if (isProgram)
+    glGetProgramInfoLog(object, length, nullptr, log.data());
+  else
+    glGetShaderInfoLog(object, length, nullptr, log.data());
   log.resize(std::strlen(log.c_str()));
   return log;
 }
@@ -61,7 +65,8 @@ fs::path ShaderLibrary::findRoot() {
     return dir;
   }
   const fs::path exeDir = executableDir();
-  for (const fs::path& candidate : {exeDir / "shaders", exeDir / ".." / "shaders", fs::path(TIDEPOOL_SOURCE_DIR) / "shaders"}) {
+  for (const fs::path& candidate :
+       {exeDir / "shaders", exeDir / ".." / "shaders", fs::path(TIDEPOOL_SOURCE_DIR) / "shaders"}) {
     std::error_code ec;
     if (fs::is_regular_file(candidate / "common" / "index.glsl", ec)) return fs::weakly_canonical(candidate);
   }

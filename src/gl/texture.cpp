@@ -24,20 +24,24 @@ Texture2D::Texture2D(int width, int height, GLenum internalFormat, int levels)
   glBindTexture(GL_TEXTURE_2D, id());
   glTexStorage2D(GL_TEXTURE_2D, levels, internalFormat, width, height);
   const bool linear = levels == 1 && internalFormat != GL_R32UI && internalFormat != GL_R32I;
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : linear ? GL_LINEAR : GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER,
+                  levels > 1 ? GL_LINEAR_MIPMAP_LINEAR
+                  : linear   ? GL_LINEAR
+                             : GL_NEAREST);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, linear || levels > 1 ? GL_LINEAR : GL_NEAREST);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   glBindTexture(GL_TEXTURE_2D, 0);
   if (glGetError() == GL_OUT_OF_MEMORY)
-    throw GlError("out of GPU memory allocating a " + std::to_string(width) + "x" + std::to_string(height) + " texture");
+    throw GlError("out of GPU memory allocating a " + std::to_string(width) + "x" + std::to_string(height) +
+                  " texture");
 }
 
 void Texture2D::upload(GLenum format, GLenum type, const void* pixels, int level) {
   glBindTexture(GL_TEXTURE_2D, id());
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTexSubImage2D(GL_TEXTURE_2D, level, 0, 0, std::max(1, m_width >> level), std::max(1, m_height >> level),
-                  format, type, pixels);
+  glTexSubImage2D(GL_TEXTURE_2D, level, 0, 0, std::max(1, m_width >> level), std::max(1, m_height >> level), format,
+                  type, pixels);
   glBindTexture(GL_TEXTURE_2D, 0);
 }
 
@@ -53,8 +57,7 @@ std::vector<std::uint8_t> Texture2D::readRgba8() const {
   const std::size_t row = std::size_t(m_width) * 4;
   std::vector<std::uint8_t> bottomUp(row * m_height), topDown(row * m_height);
   download(GL_RGBA, GL_UNSIGNED_BYTE, bottomUp.data());
-  for (int y = 0; y < m_height; ++y)
-    std::memcpy(&topDown[row * y], &bottomUp[row * (m_height - 1 - y)], row);
+  for (int y = 0; y < m_height; ++y) std::memcpy(&topDown[row * y], &bottomUp[row * (m_height - 1 - y)], row);
   return topDown;
 }
 

@@ -23,10 +23,10 @@ class Texture2D {
 
   void upload(GLenum format, GLenum type, const void* pixels, int level = 0);
   void download(GLenum format, GLenum type, void* pixels, int level = 0) const;  // whole level
-  std::vector<std::uint8_t> readRgba8() const;                                     // top row first
+  std::vector<std::uint8_t> readRgba8() const;                                   // top row first
   void setFilter(GLenum minFilter, GLenum magFilter);
   void setWrap(GLenum wrap);
-  void bind(GLuint unit) const;                                                    // sampler unit
+  void bind(GLuint unit) const;  // sampler unit
   void bindImage(GLuint unit, GLenum access, GLenum format = 0, int level = 0) const;
   void generateMipmaps();
 

@@ -26,8 +26,11 @@ Json parseJson(const std::string& text, const std::string& name) {
     const std::size_t end = std::min<std::size_t>(e.byte == 0 ? 0 : e.byte - 1, text.size());
     int line = 1, column = 1;
     for (std::size_t i = 0; i < end; ++i) {
-      if (text[i] == '\n') { ++line; column = 1; }
-      else ++column;
+      if (text[i] == '\n') {
+        ++line;
+        column = 1;
+      } else
+        ++column;
     }
     std::string what = e.what();
     const std::size_t colon = what.find(": ", what.find("parse error"));

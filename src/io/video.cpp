@@ -1,10 +1,10 @@
 #include "io/video.h"
 
+#include <unistd.h>
 #include <csignal>
 #include <cstdlib>
 #include <sstream>
 #include <string>
-#include <unistd.h>
 
 #include "base/error.h"
 

@@ -32,7 +32,8 @@ void visit(ParamVisitor& v, BlankParams& p) { v.color({"color", "Colour", "clear
 
 std::unique_ptr<Stage> createBlankStage(const io::Json& params, const std::string& where, gl::ShaderLibrary&) {
   BlankParams p;
-  readParams(params, [&](ParamVisitor& v) { visit(v, p); }, where);
+  readParams(
+      params, [&](ParamVisitor& v) { visit(v, p); }, where);
   return std::make_unique<BlankStage>(p);
 }
 

@@ -6,11 +6,11 @@
 namespace tidepool {
 
 struct Input {
-  glm::vec2 cursor{0.0f};       // pixels, origin top-left
-  glm::vec2 cursorDelta{0.0f};  // pixels since the last frame
-  glm::ivec2 viewport{1, 1};    // pixels
+  glm::vec2 cursor{0.0f};                            // pixels, origin top-left
+  glm::vec2 cursorDelta{0.0f};                       // pixels since the last frame
+  glm::ivec2 viewport{1, 1};                         // pixels
   bool left = false, right = false, middle = false;  // buttons held (and not captured by the UI)
-  float scroll = 0.0f;          // wheel steps since the last frame
+  float scroll = 0.0f;                               // wheel steps since the last frame
 };
 
 }  // namespace tidepool

@@ -1,5 +1,6 @@
 // The table of models a scene can name. Each model adds one line here when it lands.
 #include "scene/blank.h"
+#include "scene/ripples_stage.h"
 #include "scene/stage.h"
 #include "scene/swarm_stage.h"
 
@@ -8,6 +9,8 @@ namespace tidepool {
 const std::vector<ModelEntry>& models() {
   static const std::vector<ModelEntry> table = {
       {"blank", "no simulation: clears to a colour (the shell before any model)", createBlankStage},
+      {"ripples", "heightfield water: wave equation or the seed's spring model, 2D refraction view",
+       createRipplesStage},
       {"swarm", "millions of 2D particles pulled by animated attractors, one following the mouse", createSwarmStage},
   };
   return table;

@@ -126,7 +126,8 @@ class Reader final : public ParamVisitor {
       if (std::find(level.known.begin(), level.known.end(), key) != level.known.end()) continue;
       std::string known;
       for (const std::string& k : level.known) known += (known.empty() ? "" : ", ") + k;
-      throw Error(m_where + "." + level.prefix + key + ": unknown key (known here: " + (known.empty() ? "none" : known) + ")");
+      throw Error(m_where + "." + level.prefix + key +
+                  ": unknown key (known here: " + (known.empty() ? "none" : known) + ")");
     }
   }
 

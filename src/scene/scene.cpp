@@ -25,7 +25,8 @@ void visit(ParamVisitor& v, Scene& s) {
 fs::path findAssetDir() {
   if (const char* env = std::getenv("TIDEPOOL_ASSET_DIR")) {
     std::error_code ec;
-    if (!fs::is_directory(env, ec)) throw Error(std::string("asset directory '") + env + "' (from TIDEPOOL_ASSET_DIR) not found");
+    if (!fs::is_directory(env, ec))
+      throw Error(std::string("asset directory '") + env + "' (from TIDEPOOL_ASSET_DIR) not found");
     return env;
   }
   std::error_code ec;
@@ -55,7 +56,8 @@ Scene parseScene(const io::Json& json, const std::string& where) {
     scene.params = *it;
     header.erase("params");
   }
-  readParams(header, [&](ParamVisitor& v) { visit(v, scene); }, where + ": scene");
+  readParams(
+      header, [&](ParamVisitor& v) { visit(v, scene); }, where + ": scene");
   return scene;
 }
 

@@ -26,7 +26,7 @@ struct Scene {
   std::filesystem::path file;  // where it was loaded from
   std::string name, description;
   std::string model = "blank";
-  io::Json params;             // the model's parameters, validated when the stage is created
+  io::Json params;  // the model's parameters, validated when the stage is created
   ClipSettings clip;
 };
 

@@ -5,6 +5,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,20 +15,28 @@
 #include "render/target.h"
 #include "scene/input.h"
 #include "scene/param.h"
+#include "sim/divergence.h"
 
 namespace tidepool {
 
 class Stage {
  public:
   virtual ~Stage() = default;
-  virtual void visitParams(ParamVisitor& v) = 0;  // the model's and the view's Params
-  virtual void reset() = 0;                       // back to the initial state (same parameters)
+  virtual void visitParams(ParamVisitor& v) = 0;                          // the model's and the view's Params
+  virtual void reset() = 0;                                               // back to the initial state (same parameters)
   virtual void step(double frameSeconds, gl::GpuProfiler& profiler) = 0;  // one frame of simulated time
   virtual void render(RenderTarget& target, gl::GpuProfiler& profiler) = 0;
   virtual void input(const Input&) {}
   virtual bool dropFile(const std::string& /*path*/) { return false; }  // a file dropped on the window; true: used
-  virtual double simTime() const = 0;             // simulated seconds since reset
-  virtual std::string status() const { return ""; }  // one line for the UI (counts, warnings)
+  virtual double simTime() const = 0;                                   // simulated seconds since reset
+  virtual std::string status() const { return ""; }                     // one line for the UI (counts, warnings)
+
+  // Failing loudly: a model that watches itself reports a blow-up here (non-blocking, a frame or
+  // two late), can go back to its last good state with half the time step, and settles the
+  // check still in flight at the end of a headless run.
+  virtual std::optional<DivergenceReport> divergence() const { return std::nullopt; }
+  virtual bool recover() { return false; }
+  virtual void flushChecks() {}
 };
 
 struct ModelEntry {

@@ -11,9 +11,7 @@
 using namespace tidepool;
 
 namespace {
-bool onPath(const std::string& tool) {
-  return test::runProcess({"sh", "-c", "command -v " + tool}).exitCode == 0;
-}
+bool onPath(const std::string& tool) { return test::runProcess({"sh", "-c", "command -v " + tool}).exitCode == 0; }
 }  // namespace
 
 TEST(Window, OpensDrawsAndTakesAScreenshotUnderXvfb) {
@@ -22,8 +20,8 @@ TEST(Window, OpensDrawsAndTakesAScreenshotUnderXvfb) {
   dir.write("green.json", R"({"name": "Green", "model": "blank", "params": {"color": [0, 1, 0]}})");
   const std::string shot = (dir / "shot.png").string();
   auto r = test::runProcess({"xvfb-run", "-a", "-s", "-screen 0 800x600x24", TIDEPOOL_EXE, "run",
-                             (dir / "green.json").string(), "--backend", "window", "--size", "640x480", "--frames",
-                             "3", "--screenshot", shot});
+                             (dir / "green.json").string(), "--backend", "window", "--size", "640x480", "--frames", "3",
+                             "--screenshot", shot});
   ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
   io::Image img = io::readPng(shot);
   ASSERT_EQ(img.width, 640);
@@ -44,7 +42,8 @@ TEST(Window, OpensDrawsAndTakesAScreenshotUnderXvfb) {
 }
 
 TEST(Window, NoDisplayGivesAClearError) {
-  auto r = test::runTidepool({"run", "blank", "--backend", "window", "--frames", "1"}, {"DISPLAY=", "WAYLAND_DISPLAY="});
+  auto r =
+      test::runTidepool({"run", "blank", "--backend", "window", "--frames", "1"}, {"DISPLAY=", "WAYLAND_DISPLAY="});
   EXPECT_FALSE(r.signaled);
   EXPECT_EQ(r.exitCode, 1);
   ASSERT_EQ(r.errLines().size(), 1u) << r.err;

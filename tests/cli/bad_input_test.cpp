@@ -23,7 +23,8 @@ void expectOneLineError(const std::vector<std::string>& args, const std::string&
 }  // namespace
 
 TEST(BadInput, MissingSceneFile) {
-  expectOneLineError({"render", "/nonexistent/scene.json", "--out", "/tmp/x"}, "file not found: '/nonexistent/scene.json'", 1);
+  expectOneLineError({"render", "/nonexistent/scene.json", "--out", "/tmp/x"},
+                     "file not found: '/nonexistent/scene.json'", 1);
   expectOneLineError({"render", "nosuchscene", "--out", "/tmp/x"}, "scene 'nosuchscene' not found", 1);
 }
 
@@ -57,8 +58,8 @@ TEST(BadInput, UnknownSubcommandOrOption) {
 
 TEST(BadInput, UnreadableShaderDirectory) {
   expectOneLineError({"render", "blank", "--frames", "1", "--out", "/tmp/tidepool-x"},
-                     "shader directory '/nonexistent/shaders' (from TIDEPOOL_SHADER_DIR) is not a readable directory", 1,
-                     {"TIDEPOOL_SHADER_DIR=/nonexistent/shaders"});
+                     "shader directory '/nonexistent/shaders' (from TIDEPOOL_SHADER_DIR) is not a readable directory",
+                     1, {"TIDEPOOL_SHADER_DIR=/nonexistent/shaders"});
 }
 
 TEST(BadInput, ShaderThatFailsToCompileNamesFileAndLine) {
@@ -80,5 +81,6 @@ TEST(BadInput, ShaderThatFailsToCompileNamesFileAndLine) {
 }
 
 TEST(BadInput, UnwritableOutputFolder) {
-  expectOneLineError({"render", "blank", "--frames", "1", "--out", "/proc/tidepool-out"}, "cannot create output folder", 1);
+  expectOneLineError({"render", "blank", "--frames", "1", "--out", "/proc/tidepool-out"}, "cannot create output folder",
+                     1);
 }

@@ -48,7 +48,8 @@ TEST(Cli, RenderWritesFramesOfTheRequestedSizeAndColour) {
 
 TEST(Cli, RunWithoutADisplayRendersTheClipHeadlessAndSaysWhere) {
   test::TempDir dir;
-  auto r = runTidepool({"run", "default", "--frames", "2", "--out", dir.path().string()}, {"DISPLAY=", "WAYLAND_DISPLAY="});
+  auto r =
+      runTidepool({"run", "default", "--frames", "2", "--out", dir.path().string()}, {"DISPLAY=", "WAYLAND_DISPLAY="});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.err.find("no display"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find(dir.path().string() + "/default/frame_*.png"), std::string::npos) << r.err;
@@ -57,7 +58,8 @@ TEST(Cli, RunWithoutADisplayRendersTheClipHeadlessAndSaysWhere) {
 
 TEST(Cli, VideoWithoutFfmpegIsAClearError) {
   test::TempDir dir;
-  auto r = runTidepool({"render", "blank", "--frames", "2", "--video", (dir / "c.mp4").string()}, {"PATH=/nonexistent"});
+  auto r =
+      runTidepool({"render", "blank", "--frames", "2", "--video", (dir / "c.mp4").string()}, {"PATH=/nonexistent"});
   EXPECT_EQ(r.exitCode, 1);
   ASSERT_EQ(r.errLines().size(), 1u) << r.err;
   EXPECT_NE(r.err.find("--video needs ffmpeg"), std::string::npos) << r.err;
@@ -69,4 +71,18 @@ TEST(Cli, HelpAndVersionSucceed) {
   auto v = runTidepool({"--version"});
   EXPECT_EQ(v.exitCode, 0);
   EXPECT_NE(v.out.find("tidepool"), std::string::npos);
+}
+
+TEST(Cli, VideoFramesArePipedToFfmpeg) {
+  // A stand-in ffmpeg on PATH that stores the raw RGBA stream in the output file.
+  test::TempDir dir;
+  dir.write("bin/ffmpeg", "#!/bin/sh\nfor last; do :; done\ncat > \"$last\"\n");
+  std::filesystem::permissions(dir / "bin/ffmpeg", std::filesystem::perms::owner_all);
+  const std::string path = std::string(std::getenv("PATH"));
+  auto r = runTidepool(
+      {"render", "blank", "--frames", "4", "--size", "30x10", "--video", (dir / "c.mp4").string(), "--quiet"},
+      {"PATH=" + (dir / "bin").string() + ":" + path});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(std::filesystem::file_size(dir / "c.mp4"), 4u * 30 * 10 * 4) << "4 raw RGBA frames";
+  EXPECT_NE(r.err.find("wrote video"), std::string::npos) << r.err;
 }

@@ -26,8 +26,14 @@ TEST_F(Profiler, RecordsNamedPassesPerFrame) {
       fill.set("uMul", 1u);
       fill.dispatchThreads(1 << 18);
     }
-    { auto s = profiler.scope("copy"); out.copyTo(out, 1 << 19, 0, 1 << 19); }
-    { auto s = profiler.scope("fill"); fill.dispatchThreads(1 << 10); }  // summed with the first
+    {
+      auto s = profiler.scope("copy");
+      out.copyTo(out, 1 << 19, 0, 1 << 19);
+    }
+    {
+      auto s = profiler.scope("fill");
+      fill.dispatchThreads(1 << 10);
+    }  // summed with the first
     profiler.endFrame();
   }
   profiler.finish();

@@ -59,9 +59,10 @@ TEST(ShaderSource, VersionFirstThenDefinesAndALineTable) {
 }
 
 TEST(ShaderSource, IncludesArePastedOnceAndMappedToTheirFiles) {
-  auto read = files({{"main.comp", "#version 430 core\n#include \"common/a.glsl\"\n#include \"common/b.glsl\"\nvoid main() {}\n"},
-                     {"common/a.glsl", "// a\nfloat a() { return 1.0; }\n"},
-                     {"common/b.glsl", "#include \"common/a.glsl\"\nfloat b() { return a(); }\n"}});
+  auto read = files(
+      {{"main.comp", "#version 430 core\n#include \"common/a.glsl\"\n#include \"common/b.glsl\"\nvoid main() {}\n"},
+       {"common/a.glsl", "// a\nfloat a() { return 1.0; }\n"},
+       {"common/b.glsl", "#include \"common/a.glsl\"\nfloat b() { return a(); }\n"}});
   AssembledShader s = assembleShader("main.comp", read);
   EXPECT_EQ(count(s.text, "float a()"), 1) << "a.glsl is included twice but must be pasted once";
   EXPECT_EQ(count(s.text, "float b()"), 1);
@@ -88,11 +89,13 @@ TEST(ShaderSource, MissingIncludeNamesFileAndLine) {
 }
 
 TEST(ShaderSource, MalformedDirectivesAreErrors) {
-  EXPECT_NE(errorOf([&] { assembleShader("m.comp", files({{"m.comp", "#version 430 core\n#include <a.glsl>\n"}})); })
-                .find("m.comp:2: malformed #include"),
+  EXPECT_NE(errorOf([&] {
+              assembleShader("m.comp", files({{"m.comp", "#version 430 core\n#include <a.glsl>\n"}}));
+            }).find("m.comp:2: malformed #include"),
             std::string::npos);
-  EXPECT_NE(errorOf([&] { assembleShader("m.comp", files({{"m.comp", "void main() {}\n"}})); })
-                .find("m.comp:1: expected '#version 430 core'"),
+  EXPECT_NE(errorOf([&] {
+              assembleShader("m.comp", files({{"m.comp", "void main() {}\n"}}));
+            }).find("m.comp:1: expected '#version 430 core'"),
             std::string::npos);
   EXPECT_NE(errorOf([&] {
               assembleShader("m.comp", files({{"m.comp", "#version 430 core\n#include \"i.glsl\"\n"},

@@ -37,7 +37,8 @@ void visit(ParamVisitor& v, P& p) {
 
 P read(const std::string& text) {
   P p;
-  readParams(io::parseJson(text, "t.json"), [&](ParamVisitor& v) { visit(v, p); }, "t.json: params");
+  readParams(
+      io::parseJson(text, "t.json"), [&](ParamVisitor& v) { visit(v, p); }, "t.json: params");
   return p;
 }
 

@@ -54,7 +54,8 @@ TEST_F(Scenes, UnknownModelAndBadParamsAreReported) {
     createStage(s, shaders());
     FAIL();
   } catch (const Error& e) {
-    EXPECT_EQ(std::string(e.what()).rfind("s.json: scene.model = 'fluidd' is not a model (known: blank", 0), 0u) << e.what();
+    EXPECT_EQ(std::string(e.what()).rfind("s.json: scene.model = 'fluidd' is not a model (known: blank", 0), 0u)
+        << e.what();
   }
   s.model = "blank";
   s.params = io::parseJson("{\"colour\": [1,0,0]}", "s.json");

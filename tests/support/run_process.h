@@ -7,8 +7,8 @@
 namespace tidepool::test {
 
 struct ProcessResult {
-  int exitCode = -1;     // valid when exited normally
-  bool signaled = false; // killed by a signal (a crash)
+  int exitCode = -1;      // valid when exited normally
+  bool signaled = false;  // killed by a signal (a crash)
   std::string out, err;
   std::vector<std::string> errLines() const;
 };

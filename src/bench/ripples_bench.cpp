@@ -1,0 +1,65 @@
+// `tidepool bench ripples --size 512..4096`: ms per wave step and effective GB/s against a
+// glCopyBufferSubData of the same state bytes measured in the same run, plus both views at 1080p
+// (the 3D frame includes the caustics pass).
+#include <cmath>
+#include <cstdio>
+
+#include "bench/bench.h"
+#include "gl/buffer.h"
+#include "gl/framebuffer.h"
+#include "render/ripples_view.h"
+#include "render/ripples_view3d.h"
+#include "sim/ripples/ripples.h"
+
+namespace tidepool::bench {
+namespace {
+
+int run(Env& env, const std::string& sizes) {
+  constexpr int kStepsPerSample = 10;
+  std::printf("ripples benchmark on %s (wave rule, C = 0.5, %d steps per sample, medians of %d)\n", env.device.c_str(),
+              kStepsPerSample, env.common.repeats);
+  Table table({"cells", "ms/step", "GB/s", "copy GB/s", "% of copy", "2D view 1080p ms", "3D+caustics 1080p ms"});
+  RenderTarget target(1920, 1080);
+  RipplesView view(env.shaders);
+  RipplesView3D view3d(env.shaders);
+  gl::GpuProfiler noProfiler;
+  noProfiler.setEnabled(false);
+  for (std::size_t size : parseSizes(sizes)) {
+    ripples::Params p;
+    p.width = p.height = int(size);
+    p.velDamping = 0.1f;
+    ripples::Ripples model(env.shaders, p);
+    model.touch(0.5f, 0.5f, 0.1f, -0.05f);
+    const double dt = 0.5 * p.cellSize / p.waveSpeed;
+    const double stepMs = gpuMedianMs(env.common,
+                                      [&] {
+                                        for (int i = 0; i < kStepsPerSample; ++i) model.stepOnce(dt);
+                                      }) /
+                          kStepsPerSample;
+    // One step reads and writes the (h, v) state once: 16 bytes per cell.
+    const double bytes = double(size) * size * 16.0;
+    const gl::Buffer& state = model.state();
+    gl::Buffer copy(state.size());
+    const double copyMs = gpuMedianMs(env.common, [&] { state.copyTo(copy, state.size()); });
+    const double viewMs = gpuMedianMs(env.common, [&] { view.render(model, target, noProfiler); });
+    const double view3dMs = gpuMedianMs(env.common, [&] { view3d.render(model, target, noProfiler); });
+    const double gbps = bytes / (stepMs * 1e6), copyGbps = bytes / (copyMs * 1e6);
+    table.add({std::to_string(size) + "^2", fixed(stepMs, 4), fixed(gbps, 1), fixed(copyGbps, 1),
+               fixed(100.0 * gbps / copyGbps, 1), fixed(viewMs, 4), fixed(view3dMs, 4)});
+  }
+  table.print();
+  if (const std::string caveat = timingCaveat(env.device); !caveat.empty()) std::printf("%s\n", caveat.c_str());
+  if (!env.common.csv.empty()) table.writeCsv(env.common.csv);
+  return 0;
+}
+
+}  // namespace
+
+Benchmark addRipplesBench(CLI::App& bench) {
+  auto* sub = bench.add_subcommand("ripples", "heightfield wave step: ms/step, GB/s vs copy, 2D view at 1080p");
+  auto sizes = std::make_shared<std::string>("512..4096");
+  sub->add_option("--size", *sizes, "grid edges, e.g. 512..4096 or 256,1024");
+  return {sub, [sizes](Env& env) { return run(env, *sizes); }};
+}
+
+}  // namespace tidepool::bench

@@ -1,0 +1,35 @@
+// Reading a few bytes back from the GPU without stalling it: request() copies them into a
+// staging buffer and drops a fence; poll() returns them once the fence has passed, never waiting.
+// Used by the divergence watch (a handful of reduced values every few frames).
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "gl/buffer.h"
+
+namespace tidepool::gl {
+
+class AsyncReadback {
+ public:
+  AsyncReadback() = default;
+  ~AsyncReadback();
+  AsyncReadback(const AsyncReadback&) = delete;
+  AsyncReadback& operator=(const AsyncReadback&) = delete;
+
+  // Starts a copy of `bytes` from `src` (replacing any request still in flight).
+  void request(const Buffer& src, std::size_t bytes, std::size_t offset = 0);
+  bool pending() const { return m_fence != nullptr; }
+  // True (and `out` filled) once the copy has completed on the GPU; false while it has not.
+  bool poll(std::vector<std::byte>& out);
+  // Blocks until the copy is done (tests and shutdown only).
+  void wait(std::vector<std::byte>& out);
+
+ private:
+  void dropFence();
+  Buffer m_staging;
+  GLsync m_fence = nullptr;
+  std::size_t m_bytes = 0;
+};
+
+}  // namespace tidepool::gl

@@ -1,0 +1,65 @@
+// Speed-against-accuracy studies: `tidepool sweep <study>` runs one headless, writes a CSV row per
+// run to bench/results/<study>.csv and draws its chart with gnuplot (bench/chart.gp) into
+// docs/charts/<study>.png and .svg: measured cost on x, error on y, one curve per method, a point
+// per dt / resolution, the Pareto front marked. The device is written into every row and into the
+// chart title; software-renderer runs are labelled as development figures.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "gl/shader_library.h"
+
+namespace tidepool::sweep {
+
+struct Row {
+  std::string method;  // curve: integrator, contact model, Courant number...
+  double dt = 0;       // s (0 when not applicable)
+  int substeps = 1;
+  std::string resolution;       // N, grid size or cells per wavelength
+  double costMsPerSimS = 0;     // measured GPU ms per simulated second
+  std::vector<double> metrics;  // in the order of Study::metrics
+  bool stable = true;
+  double x = 0, y = 0;  // the chart's coordinates (usually cost and one metric)
+  bool pareto = false;  // no other row is both cheaper and more accurate
+};
+
+struct ChartSpec {
+  std::string title, xLabel, yLabel;
+  bool logX = true, logY = true;
+  bool pareto = true;  // mark the Pareto front (cost-vs-error charts)
+  double markerX = 0;  // a vertical line (e.g. a theoretical limit); 0: none
+  std::string markerLabel;
+};
+
+struct Result {
+  std::string model;
+  std::vector<std::string> metrics;  // CSV column names of Row::metrics
+  std::vector<Row> rows;
+  ChartSpec chart;
+};
+
+struct Env {
+  gl::ShaderLibrary& shaders;
+  std::string device;  // GL_RENDERER
+  bool quick = false;  // fewer points (tests, smoke runs)
+};
+
+struct Study {
+  const char* name;
+  const char* summary;
+  std::function<Result(Env&)> run;
+};
+
+const std::vector<Study>& studies();
+
+void markPareto(std::vector<Row>& rows);  // minimises (x, y) among stable rows
+void writeCsv(const Result& result, const std::string& study, const std::string& device,
+              const std::filesystem::path& path);
+// Draws the chart with gnuplot into <base>.png and <base>.svg; throws Error when gnuplot is
+// missing or fails.
+void drawChart(const Result& result, const std::string& device, const std::filesystem::path& base);
+
+}  // namespace tidepool::sweep

@@ -1,0 +1,53 @@
+// Sweeps write their CSV rows and draw charts; the Pareto front is the set nothing dominates.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "io/png.h"
+#include "support/gl_test.h"
+#include "support/run_process.h"
+#include "sweep/sweep.h"
+
+using namespace tidepool;
+
+TEST(Sweep, ParetoFrontKeepsOnlyUndominatedStableRows) {
+  std::vector<sweep::Row> rows(5);
+  const double xy[5][2] = {{1, 10}, {2, 5}, {3, 6}, {4, 1}, {0.5, 0.5}};
+  for (int i = 0; i < 5; ++i) {
+    rows[i].x = xy[i][0];
+    rows[i].y = xy[i][1];
+  }
+  rows[4].stable = false;  // cheapest and best, but it blew up: it dominates nothing
+  sweep::markPareto(rows);
+  EXPECT_TRUE(rows[0].pareto);
+  EXPECT_TRUE(rows[1].pareto);
+  EXPECT_FALSE(rows[2].pareto) << "(3, 6) is dominated by (2, 5)";
+  EXPECT_TRUE(rows[3].pareto);
+  EXPECT_FALSE(rows[4].pareto);
+}
+
+TEST(Sweep, RipplesStudiesWriteCsvAndCharts) {
+  test::TempDir dir;
+  for (const std::string study : {"ripples-stability", "ripples-dispersion"}) {
+    auto r = test::runTidepool(
+        {"sweep", study, "--quick", "--csv-dir", dir.path().string(), "--chart-dir", dir.path().string()});
+    ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+    std::ifstream csv(dir / (study + ".csv"));
+    std::string header, line;
+    std::getline(csv, header);
+    EXPECT_EQ(header.rfind("study,model,method,dt,substeps,resolution,gpu_ms_per_sim_s,", 0), 0u) << header;
+    EXPECT_NE(header.find(",stable,pareto,device"), std::string::npos);
+    int rows = 0;
+    while (std::getline(csv, line)) rows += line.rfind(study + ",ripples,", 0) == 0;
+    EXPECT_GE(rows, 4);
+    const io::Image png = io::readPng(dir / (study + ".png"));
+    EXPECT_EQ(png.width, 1000);
+    EXPECT_TRUE(std::filesystem::file_size(dir / (study + ".svg")) > 1000);
+  }
+}
+
+TEST(Sweep, UnknownStudyIsAUsageError) {
+  auto r = test::runTidepool({"sweep", "balls-nope"});
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_EQ(r.errLines().size(), 1u) << r.err;
+}
