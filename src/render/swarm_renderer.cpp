@@ -24,7 +24,8 @@ void visit(ParamVisitor& v, SwarmViewParams& p) {
   v.flag({"blend", "Blending", "additive with opacity; off: opaque"}, p.blend);
   v.real({"opacity", "Opacity", "weight of one particle when blending"}, p.opacity, 0.001f, 1.0f);
   v.flag({"high_quality", "High quality", "count particles per pixel and tone map: no saturation"}, p.highQuality);
-  v.flag({"compute_points", "Compute points", "1-px points splatted with atomics by a compute pass (fast); off: GL_POINTS"},
+  v.flag({"compute_points", "Compute points",
+          "1-px points splatted with atomics by a compute pass (fast); off: GL_POINTS"},
          p.computePoints);
   v.flag({"show_attractors", "Show attractors", "rings at the attractors"}, p.showAttractors);
 }
@@ -132,7 +133,7 @@ void SwarmRenderer::splatPoints(const sim::Swarm& swarm, const SwarmViewParams& 
   auto scope = profiler.scope("swarm.resolve");
   target.bind();
   glDisable(GL_BLEND);
-  gl::Program& p = m_shaders.program({"render/fullscreen_triangle.vert", "render/swarm_splat_resolve.frag"});
+  gl::Program& p = m_shaders.program({"render/fullscreen.vert", "render/swarm_splat_resolve.frag"});
   p.use();
   p.set("uSize", size);
   p.set("uMode", !view.blend ? 1 : view.highQuality ? 2 : 0);
@@ -167,7 +168,7 @@ void SwarmRenderer::render(const sim::Swarm& swarm, const SwarmViewParams& view,
     auto scope = profiler.scope("swarm.tonemap");
     target.bind();
     glDisable(GL_BLEND);
-    gl::Program& p = m_shaders.program({"render/fullscreen_triangle.vert", "render/swarm_tonemap.frag"});
+    gl::Program& p = m_shaders.program({"render/fullscreen.vert", "render/swarm_tonemap.frag"});
     p.use();
     p.set("uOpacity", view.blend ? view.opacity : -1.0f);
     m_accum.bind(0);
