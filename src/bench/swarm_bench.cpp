@@ -45,24 +45,6 @@ int indexOf(const std::array<const char*, N>& names, const std::string& name, co
   throw Error(std::string(what) + " '" + name + "' is not one of: " + all);
 }
 
-// GPU time of `work` from one GL_TIME_ELAPSED query (waits for the result).
-double gpuMs(const std::function<void()>& work) {
-  gl::Query query = gl::Query::create();
-  glBeginQuery(GL_TIME_ELAPSED, query.id());
-  work();
-  glEndQuery(GL_TIME_ELAPSED);
-  GLuint64 ns = 0;
-  glGetQueryObjectui64v(query.id(), GL_QUERY_RESULT, &ns);
-  return double(ns) * 1e-6;
-}
-
-double medianMs(const Common& common, const std::function<void()>& work) {
-  for (int i = 0; i < common.warmup; ++i) gpuMs(work);
-  std::vector<double> times;
-  for (int i = 0; i < common.repeats; ++i) times.push_back(gpuMs(work));
-  return median(times);
-}
-
 constexpr int kSettleSteps = 240;  // 2 s of the orbit preset before drawing
 
 std::string countText(std::size_t n) {
@@ -71,7 +53,7 @@ std::string countText(std::size_t n) {
   return std::to_string(n);
 }
 
-// Drivers that run copies outside the GPU timeline (llvmpipe) time them as 0: shown as "-".
+// Times too short to mean anything are shown as "-".
 std::string gbPerS(double bytes, double ms) { return ms > 1e-3 ? fixed(bytes / (ms * 1e6), 1) : "-"; }
 std::string percent(double copyMs, double stepMs) {
   return copyMs > 1e-3 && stepMs > 1e-3 ? fixed(100.0 * copyMs / stepMs, 1) : "-";
@@ -79,7 +61,8 @@ std::string percent(double copyMs, double stepMs) {
 
 int runSwarmBench(Env& env, const SwarmBenchOptions& o) {
   std::vector<sim::Integrator> integrators;
-  for (const std::string& name : splitList(o.integrators == "all" ? "explicit_euler,symplectic_euler,verlet,rk4" : o.integrators))
+  for (const std::string& name :
+       splitList(o.integrators == "all" ? "explicit_euler,symplectic_euler,verlet,rk4" : o.integrators))
     integrators.push_back(sim::Integrator(indexOf(sim::kIntegratorNames, name, "--integrator")));
   std::vector<sim::Storage> storages;
   for (const std::string& name : splitList(o.storages))
@@ -88,11 +71,12 @@ int runSwarmBench(Env& env, const SwarmBenchOptions& o) {
   if (std::sscanf(o.renderSize.c_str(), "%dx%d", &width, &height) != 2 || width <= 0 || height <= 0)
     throw Error("--render-size '" + o.renderSize + "' is not WIDTHxHEIGHT, e.g. 1920x1080");
 
-  std::printf("swarm step on %s: medians of %d repeats (%d warm-up), GL timer queries\n", env.device.c_str(),
-              env.common.repeats, env.common.warmup);
-  std::printf("points: all N drawn at %s after %d steps of the orbit preset (a clustered swarm, as on screen);\n"
-              "  compute = atomic splat + resolve (the default for 1-px points), raster = GL_POINTS, additive\n",
-              o.renderSize.c_str(), kSettleSteps);
+  std::printf("swarm step on %s: medians of %d repeats (%d warm-up)\n", env.device.c_str(), env.common.repeats,
+              env.common.warmup);
+  std::printf(
+      "points: all N drawn at %s after %d steps of the orbit preset (a clustered swarm, as on screen);\n"
+      "  compute = atomic splat + resolve (the default for 1-px points), raster = GL_POINTS, additive\n",
+      o.renderSize.c_str(), kSettleSteps);
   Table table({"n", "storage", "integrator", "ms/step", "GB/s", "copy ms", "copy GB/s", "% copy", "points compute ms",
                "points raster ms"});
   RenderTarget target(width, height);
@@ -115,7 +99,7 @@ int runSwarmBench(Env& env, const SwarmBenchOptions& o) {
       }
       swarm->setAspect(double(width) / height);
       const double bytes = 2.0 * double(swarm->stateBytes());  // read + written once per step
-      const double copyMs = medianMs(env.common, [&] { swarm->state().copyTo(scratch, swarm->stateBytes()); });
+      const double copyMs = gpuMedianMs(env.common, [&] { swarm->state().copyTo(scratch, swarm->stateBytes()); });
       std::string computeMs = "-", rasterMs = "-";
       if (o.render) {
         for (int i = 0; i < kSettleSteps; ++i) swarm->step(1.0 / 120.0);
@@ -123,20 +107,22 @@ int runSwarmBench(Env& env, const SwarmBenchOptions& o) {
         SwarmViewParams view;
         view.showAttractors = false;
         auto draw = [&] { renderer.render(*swarm, view, {1, 1, 1}, {}, target, idle); };
-        computeMs = fixed(medianMs(env.common, draw), 4);
+        computeMs = fixed(gpuMedianMs(env.common, draw), 4);
         view.computePoints = false;
-        rasterMs = fixed(medianMs(env.common, draw), 4);
+        rasterMs = fixed(gpuMedianMs(env.common, draw), 4);
       }
       for (sim::Integrator integrator : integrators) {
         swarm->params().integrator = integrator;
         swarm->reset();
-        const double stepMs = medianMs(env.common, [&] { swarm->step(1.0 / 120.0); });
+        const double stepMs = gpuMedianMs(env.common, [&] { swarm->step(1.0 / 120.0); });
         table.add({countText(n), storageName, sim::kIntegratorNames[std::size_t(integrator)], fixed(stepMs, 4),
-                   gbPerS(bytes, stepMs), fixed(copyMs, 4), gbPerS(bytes, copyMs), percent(copyMs, stepMs), computeMs, rasterMs});
+                   gbPerS(bytes, stepMs), fixed(copyMs, 4), gbPerS(bytes, copyMs), percent(copyMs, stepMs), computeMs,
+                   rasterMs});
       }
     }
   }
   table.print();
+  if (const std::string caveat = timingCaveat(env.device); !caveat.empty()) std::printf("%s\n", caveat.c_str());
   if (!env.common.csv.empty()) table.writeCsv(env.common.csv);
   return 0;
 }
