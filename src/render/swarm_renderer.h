@@ -31,21 +31,21 @@ inline constexpr std::array<const char*, 3> kSwarmColorModeNames = {"single", "i
 
 struct SwarmViewParams {
   SwarmColorMode colorMode = SwarmColorMode::Single;
-  bool autoHue = true;                     // single colour: cycle the hue once a minute
-  glm::vec3 color{0.737f, 0.259f, 0.071f}; // single colour when autoHue is off (seed: #BC4212)
-  std::string image = "colors";            // image mode: a name in assets/textures or a PNG path
-  int pointSize = 1;                       // pixels: 1 = points, 3..17 = round sprites
-  bool blend = true;                       // additive with opacity, else opaque
-  float opacity = 0.1f;                    // per-particle weight when blending
-  bool highQuality = false;                // count per pixel and tone map (no saturation)
-  bool computePoints = true;               // 1-px points: compute splat instead of GL_POINTS
-  bool showAttractors = true;              // rings at the attractors
+  bool autoHue = true;                      // single colour: cycle the hue once a minute
+  glm::vec3 color{0.737f, 0.259f, 0.071f};  // single colour when autoHue is off (seed: #BC4212)
+  std::string image = "colors";             // image mode: a name in assets/textures or a PNG path
+  int pointSize = 1;                        // pixels: 1 = points, 3..17 = round sprites
+  bool blend = true;                        // additive with opacity, else opaque
+  float opacity = 0.1f;                     // per-particle weight when blending
+  bool highQuality = false;                 // count per pixel and tone map (no saturation)
+  bool computePoints = true;                // 1-px points: compute splat instead of GL_POINTS
+  bool showAttractors = true;               // rings at the attractors
 };
 void visit(ParamVisitor& v, SwarmViewParams& p);
 
 struct SwarmMarker {
-  glm::vec2 ndc;    // position in the image, NDC
-  float strength;   // sign picks the colour: attractive or repulsive
+  glm::vec2 ndc;   // position in the image, NDC
+  float strength;  // sign picks the colour: attractive or repulsive
 };
 
 glm::vec3 swarmHue(double cycles);  // the seed's 6-segment hue ramp, minimum channel 0.2
@@ -76,7 +76,7 @@ class SwarmRenderer {
   std::size_t m_colorCount = 0;
   gl::Texture2D m_accum;  // high quality: RGBA32F (sum of rgb, count)
   gl::Framebuffer m_accumFbo;
-  gl::Buffer m_splat;     // compute points: (count, r, g, b) uints per pixel
+  gl::Buffer m_splat;  // compute points: (count, r, g, b) uints per pixel
 };
 
 }  // namespace tidepool

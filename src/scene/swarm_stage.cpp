@@ -127,7 +127,7 @@ class SwarmStage final : public Stage {
   SwarmViewParams m_view;
   std::string m_coloredImage;  // image the colour buffer was made from
   std::string m_warning;
-  double m_clock = 0.0;        // real seconds of frames shown: drives the hue cycle
+  double m_clock = 0.0;  // real seconds of frames shown: drives the hue cycle
 };
 
 }  // namespace
@@ -135,7 +135,8 @@ class SwarmStage final : public Stage {
 std::unique_ptr<Stage> createSwarmStage(const io::Json& params, const std::string& where, gl::ShaderLibrary& shaders) {
   sim::SwarmParams simParams;
   SwarmViewParams view;
-  readParams(params, [&](ParamVisitor& v) { visitAll(v, simParams, view); }, where);
+  readParams(
+      params, [&](ParamVisitor& v) { visitAll(v, simParams, view); }, where);
   return std::make_unique<SwarmStage>(simParams, view, shaders);
 }
 

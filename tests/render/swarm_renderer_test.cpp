@@ -25,7 +25,8 @@ glm::vec2 pixelCentre(int px, int py, int w, int h) {
 TEST_F(SwarmRendering, ParticleStartingAtAPixelCentreGetsThatPixelsColour) {
   io::Image image{5, 3, {}};
   for (int i = 0; i < 15; ++i)  // every pixel different, neighbours far apart
-    image.rgba.insert(image.rgba.end(), {std::uint8_t(i * 17), std::uint8_t(255 - i * 13), std::uint8_t((i * 97) % 256), 255});
+    image.rgba.insert(image.rgba.end(),
+                      {std::uint8_t(i * 17), std::uint8_t(255 - i * 13), std::uint8_t((i * 97) % 256), 255});
   std::vector<SwarmParticle> start;
   for (int py = 0; py < 3; ++py)
     for (int px = 0; px < 5; ++px) start.push_back({pixelCentre(px, py, 5, 3), {0.0f, 0.0f}});
@@ -54,7 +55,8 @@ TEST_P(SwarmPointPaths, PointsLandOnTheirPixelsTopRowFirst) {
     params.particles = 2;
     params.storage = storage;
     Swarm swarm(shaders(), params);
-    swarm.upload(std::vector<SwarmParticle>{{pixelCentre(3, 1, 32, 16), {0, 0}}, {pixelCentre(20, 12, 32, 16), {0, 0}}});
+    swarm.upload(
+        std::vector<SwarmParticle>{{pixelCentre(3, 1, 32, 16), {0, 0}}, {pixelCentre(20, 12, 32, 16), {0, 0}}});
     SwarmRenderer renderer(shaders());
     RenderTarget target(32, 16);
     gl::GpuProfiler profiler;

@@ -96,7 +96,8 @@ TEST_F(SwarmStages, LeftButtonAddsTheMouseAttractor) {
   double total = 0, near = 0;
   for (int y = 0; y < 32; ++y)
     for (int x = 0; x < 64; ++x) {
-      const double v = px[std::size_t(y * 64 + x) * 4] + px[std::size_t(y * 64 + x) * 4 + 1] + px[std::size_t(y * 64 + x) * 4 + 2];
+      const double v =
+          px[std::size_t(y * 64 + x) * 4] + px[std::size_t(y * 64 + x) * 4 + 1] + px[std::size_t(y * 64 + x) * 4 + 2];
       total += v;
       if (std::abs(x - 48) <= 3 && std::abs(y - 8) <= 3) near += v;
     }

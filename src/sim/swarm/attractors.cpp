@@ -9,8 +9,7 @@ std::vector<Attractor> presetAttractors(Preset preset, double t) {
   switch (preset) {
     case Preset::None: return {};
     case Preset::Orbit: return {{{0.0, 0.0}, 7.0}, {polar(0.4, t, t), 5.0}, {polar(0.8, -0.9 * t, -0.9 * t), 6.0}};
-    case Preset::Sines:
-      return {{polar(0.7, t, 2.0 * t), 7.0}, {polar(0.7, 1.8 * (t + 0.5), 0.9 * (t + 0.5)), 7.0}};
+    case Preset::Sines: return {{polar(0.7, t, 2.0 * t), 7.0}, {polar(0.7, 1.8 * (t + 0.5), 0.9 * (t + 0.5)), 7.0}};
     case Preset::CentralAttractive: return {{{0.0, 0.0}, 5.0}};
     case Preset::CentralRepulsive: return {{{0.0, 0.0}, -5.0}};
   }

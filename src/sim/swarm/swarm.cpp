@@ -47,8 +47,8 @@ void checkSwarmFits(std::size_t count, Storage storage, std::size_t extraBytesPe
 void visit(ParamVisitor& v, SwarmParams& p) {
   v.integer({"particles", "Particles", "particle count; changing it re-allocates and resets"}, p.particles, 1,
             kMaxSwarmParticles);
-  v.choice({"storage", "Storage", "fp32: 16 B/particle; fp16 (packHalf2x16): 8 B, half the memory traffic"},
-           p.storage, kStorageNames);
+  v.choice({"storage", "Storage", "fp32: 16 B/particle; fp16 (packHalf2x16): 8 B, half the memory traffic"}, p.storage,
+           kStorageNames);
   v.choice({"integrator", "Integrator", "explicit Euler, symplectic Euler (the seed's), velocity Verlet, RK4"},
            p.integrator, kIntegratorNames);
   v.real({"speed", "Speed", "simulated seconds per real second"}, p.speed, 0.0f, 4.0f);
@@ -64,9 +64,7 @@ void visit(ParamVisitor& v, SwarmParams& p) {
   v.integer({"seed", "Seed", "random initial positions"}, p.seed, 0, 1000000);
 }
 
-Swarm::Swarm(gl::ShaderLibrary& shaders, const SwarmParams& params) : m_shaders(shaders), m_params(params) {
-  reset();
-}
+Swarm::Swarm(gl::ShaderLibrary& shaders, const SwarmParams& params) : m_shaders(shaders), m_params(params) { reset(); }
 
 void Swarm::allocate(std::size_t count, Storage storage) {
   if (count == m_count && storage == m_storage && m_state) return;
@@ -81,7 +79,8 @@ void Swarm::allocate(std::size_t count, Storage storage) {
 void Swarm::reset() {
   allocate(std::size_t(m_params.particles), m_params.storage);
   m_time = 0.0;
-  gl::Program& init = m_shaders.program({"swarm/swarm_init.comp"}, {{"STORAGE_FP16", m_storage == Storage::Fp16 ? "1" : "0"}});
+  gl::Program& init =
+      m_shaders.program({"swarm/swarm_init.comp"}, {{"STORAGE_FP16", m_storage == Storage::Fp16 ? "1" : "0"}});
   init.use();
   init.set("uCount", unsigned(m_count));
   init.set("uSeed", unsigned(m_params.seed));
@@ -108,7 +107,8 @@ std::vector<SwarmParticle> Swarm::download() const {
   if (m_storage == Storage::Fp32) return m_state.read<SwarmParticle>(m_count);
   const std::vector<glm::uvec2> packed = m_state.read<glm::uvec2>(m_count);
   std::vector<SwarmParticle> out(m_count);
-  for (std::size_t i = 0; i < m_count; ++i) out[i] = {glm::unpackHalf2x16(packed[i].x), glm::unpackHalf2x16(packed[i].y)};
+  for (std::size_t i = 0; i < m_count; ++i)
+    out[i] = {glm::unpackHalf2x16(packed[i].x), glm::unpackHalf2x16(packed[i].y)};
   return out;
 }
 
@@ -121,9 +121,8 @@ std::vector<Attractor> Swarm::attractorsAt(double t) const {
 }
 
 gl::Program& Swarm::stepProgram() const {
-  return m_shaders.program({"swarm/swarm_step.comp"},
-                           {{"INTEGRATOR", std::to_string(int(m_params.integrator))},
-                            {"STORAGE_FP16", m_storage == Storage::Fp16 ? "1" : "0"}});
+  return m_shaders.program({"swarm/swarm_step.comp"}, {{"INTEGRATOR", std::to_string(int(m_params.integrator))},
+                                                       {"STORAGE_FP16", m_storage == Storage::Fp16 ? "1" : "0"}});
 }
 
 void Swarm::step(double dt) {
@@ -135,7 +134,8 @@ void Swarm::step(double dt) {
     const std::vector<Attractor> at = attractorsAt(times[level]);
     count = int(at.size());
     for (int k = 0; k < count; ++k)
-      attractors[std::size_t(level * SWARM_MAX_ATTRACTORS + k)] = glm::vec4(glm::vec2(at[std::size_t(k)].pos), float(at[std::size_t(k)].strength), 0.0f);
+      attractors[std::size_t(level * SWARM_MAX_ATTRACTORS + k)] =
+          glm::vec4(glm::vec2(at[std::size_t(k)].pos), float(at[std::size_t(k)].strength), 0.0f);
   }
   gl::Program& p = stepProgram();
   p.use();

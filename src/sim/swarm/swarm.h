@@ -41,15 +41,15 @@ class Swarm {
   SwarmParams& params() { return m_params; }  // read at the next step; count/storage at reset()
   const SwarmParams& params() const { return m_params; }
 
-  void reset();                          // (re)allocates if needed, scatters uniformly, v = 0, t = 0
+  void reset();                                           // (re)allocates if needed, scatters uniformly, v = 0, t = 0
   void upload(std::span<const SwarmParticle> particles);  // replaces the state (count = size), t = 0
   std::vector<SwarmParticle> download() const;            // reads back (tests, tools)
-  void step(double dt);                  // one integrator step of dt simulated seconds
+  void step(double dt);                                   // one integrator step of dt simulated seconds
 
-  void setAspect(double aspect) { m_aspect = aspect; }             // image width / height
-  void setMouse(std::optional<glm::dvec2> worldPos) { m_mouse = worldPos; }  // strength from params
+  void setAspect(double aspect) { m_aspect = aspect; }                           // image width / height
+  void setMouse(std::optional<glm::dvec2> worldPos) { m_mouse = worldPos; }      // strength from params
   void setExtraAttractors(std::vector<Attractor> a) { m_extra = std::move(a); }  // fixed, after the preset's
-  std::vector<Attractor> attractorsAt(double t) const;  // preset(t) + extra + mouse, at most 8
+  std::vector<Attractor> attractorsAt(double t) const;                           // preset(t) + extra + mouse, at most 8
 
   double time() const { return m_time; }  // simulated seconds since reset
   double aspect() const { return m_aspect; }

@@ -24,18 +24,18 @@ inline constexpr std::array<const char*, 5> kPresetNames = {"none", "orbit", "si
 inline constexpr int kMaxSwarmParticles = 64 << 20;  // the JSON/UI ceiling; the GPU may allow less
 
 struct SwarmParams {
-  int particles = 1 << 20;                          // count; changing it re-allocates
-  Storage storage = Storage::Fp32;                  // changing it resets
+  int particles = 1 << 20;          // count; changing it re-allocates
+  Storage storage = Storage::Fp32;  // changing it resets
   Integrator integrator = Integrator::SymplecticEuler;
-  float speed = 0.5f;                               // simulated seconds per real second
-  int substeps = 1;                                 // integrator steps per frame
-  float gravity = 0.3f;                             // world units / s^2, downwards (seed: 3 x 0.1)
-  float friction = 0.06f;                           // 1/s: v *= exp(-friction dt) (seed: 0.9995 per 1/120 s)
-  float epsilon = 0.01f;                            // world units^2: softening of the 1/r force
-  bool bounce = true;                               // mirror walls at the image border, else free flight
-  Preset preset = Preset::Orbit;                    // animated attractors
-  float mouseStrength = 7.0f;                       // strength of the mouse attractor (left button)
-  int seed = 1;                                     // initial positions (uniform in the box)
+  float speed = 0.5f;             // simulated seconds per real second
+  int substeps = 1;               // integrator steps per frame
+  float gravity = 0.3f;           // world units / s^2, downwards (seed: 3 x 0.1)
+  float friction = 0.06f;         // 1/s: v *= exp(-friction dt) (seed: 0.9995 per 1/120 s)
+  float epsilon = 0.01f;          // world units^2: softening of the 1/r force
+  bool bounce = true;             // mirror walls at the image border, else free flight
+  Preset preset = Preset::Orbit;  // animated attractors
+  float mouseStrength = 7.0f;     // strength of the mouse attractor (left button)
+  int seed = 1;                   // initial positions (uniform in the box)
 };
 
 void visit(ParamVisitor& v, SwarmParams& p);

@@ -84,17 +84,19 @@ TEST_P(SwarmOrbit, EnergyErrorStaysInTheIntegratorsBandAndGpuMatchesCpuReference
       const double eCpu = std::abs(energy(cpu.particles[k].pos, cpu.particles[k].vel) - e0[k]) / kStrength;
       gpuLog.maxPerOrbit[orbit] = std::max(gpuLog.maxPerOrbit[orbit], eGpu);
       cpuLog.maxPerOrbit[orbit] = std::max(cpuLog.maxPerOrbit[orbit], eCpu);
-      if (n == kStepsPerOrbit * kOrbits) gpuLog.final = std::max(gpuLog.final, eGpu), cpuLog.final = std::max(cpuLog.final, eCpu);
+      if (n == kStepsPerOrbit * kOrbits)
+        gpuLog.final = std::max(gpuLog.final, eGpu), cpuLog.final = std::max(cpuLog.final, eCpu);
       maxGap = std::max(maxGap, glm::length(glm::dvec2(got[k].pos) - cpu.particles[k].pos));
     }
   }
   const double maxGpu = *std::max_element(gpuLog.maxPerOrbit.begin(), gpuLog.maxPerOrbit.end());
   const double maxCpu = *std::max_element(cpuLog.maxPerOrbit.begin(), cpuLog.maxPerOrbit.end());
   const double steps = kStepsPerOrbit * kOrbits;
-  std::printf("%s: h = omega dt = %.4f; max|dE|/s CPU %.3g (%.3g h, %.3g h^2, %.3g h^4), GPU %.3g; "
-              "orbit 1/5/10 CPU %.3g %.3g %.3g; max |x_gpu - x_cpu| = %.3g (%.3g n eps32 r)\n",
-              kIntegratorNames[int(integrator)], h, maxCpu, maxCpu / h, maxCpu / (h * h), maxCpu / std::pow(h, 4), maxGpu,
-              cpuLog.maxPerOrbit[0], cpuLog.maxPerOrbit[4], cpuLog.maxPerOrbit[9], maxGap, maxGap / (steps * kEps32 * kRadius));
+  std::printf(
+      "%s: h = omega dt = %.4f; max|dE|/s CPU %.3g (%.3g h, %.3g h^2, %.3g h^4), GPU %.3g; "
+      "orbit 1/5/10 CPU %.3g %.3g %.3g; max |x_gpu - x_cpu| = %.3g (%.3g n eps32 r)\n",
+      kIntegratorNames[int(integrator)], h, maxCpu, maxCpu / h, maxCpu / (h * h), maxCpu / std::pow(h, 4), maxGpu,
+      cpuLog.maxPerOrbit[0], cpuLog.maxPerOrbit[4], cpuLog.maxPerOrbit[9], maxGap, maxGap / (steps * kEps32 * kRadius));
   // fp32 round-off: ~eps32 per step in each coordinate, growing at most linearly with the steps.
   const double roundOff = steps * kEps32;
   EXPECT_LE(maxGap, 2.0 * roundOff * kRadius) << "GPU trajectory left the CPU reference by more than fp32 round-off";

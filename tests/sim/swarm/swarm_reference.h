@@ -16,9 +16,9 @@ struct RefParticle {
 };
 
 struct SwarmReference {
-  sim::SwarmParams params;                // integrator, gravity, friction, epsilon, bounce, preset
-  double aspect = 1.0;                    // world = ndc * (aspect, 1)
-  std::vector<sim::Attractor> extra;      // fixed attractors after the preset's
+  sim::SwarmParams params;            // integrator, gravity, friction, epsilon, bounce, preset
+  double aspect = 1.0;                // world = ndc * (aspect, 1)
+  std::vector<sim::Attractor> extra;  // fixed attractors after the preset's
   std::vector<RefParticle> particles;
   double time = 0.0;
 

@@ -2,8 +2,8 @@
 // walls, particle count, fp16 storage error and the size limit.
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <glm/gtc/packing.hpp>
 #include <random>
 
@@ -40,7 +40,8 @@ TEST_F(Swarms, AnimatedPresetMatchesCpuReferenceForEveryIntegrator) {
   constexpr int kSteps = 30;
   constexpr float kDt = 1.0f / 60.0f;
   const std::vector<SwarmParticle> start = randomParticles(2048, 7, 0.3f);
-  for (Integrator integrator : {Integrator::ExplicitEuler, Integrator::SymplecticEuler, Integrator::Verlet, Integrator::Rk4}) {
+  for (Integrator integrator :
+       {Integrator::ExplicitEuler, Integrator::SymplecticEuler, Integrator::Verlet, Integrator::Rk4}) {
     SCOPED_TRACE(kIntegratorNames[int(integrator)]);
     SwarmParams params;
     params.integrator = integrator;
@@ -63,8 +64,8 @@ TEST_F(Swarms, AnimatedPresetMatchesCpuReferenceForEveryIntegrator) {
     std::vector<SwarmParticle> frozenAsGpu;
     for (const auto& p : frozen.particles) frozenAsGpu.push_back({glm::vec2(p.pos), glm::vec2(p.vel)});
     const double frozenGap = maxPosGap(frozenAsGpu, cpu.particles);
-    std::printf("%s: max |x_gpu - x_ref| = %.3g; with attractors frozen per step: %.3g\n", kIntegratorNames[int(integrator)],
-                gap, frozenGap);
+    std::printf("%s: max |x_gpu - x_ref| = %.3g; with attractors frozen per step: %.3g\n",
+                kIntegratorNames[int(integrator)], gap, frozenGap);
     EXPECT_LT(gap, 2e-5) << "GPU step differs from the CPU reference beyond fp32 round-off";
     if (integrator == Integrator::Verlet || integrator == Integrator::Rk4)
       EXPECT_GT(frozenGap, 20 * gap) << "the test must be able to tell when attractors are evaluated";
@@ -150,9 +151,10 @@ TEST_F(Swarms, Fp16StorageErrorAgainstFp32IsMeasuredAndBounded) {
   for (std::size_t i = 0; i < wideEnd.size(); ++i)
     wideGap.push_back(glm::length(glm::dvec2(wideEnd[i].pos) - exact.particles[i].pos));
   std::sort(wideGap.begin(), wideGap.end());
-  std::printf("fp16 vs fp32 position gap (NDC): 1 step median %.3g max %.3g; 120 steps (1 s) median %.3g max %.3g "
-              "(fp32 vs double: median %.3g)\n",
-              median1, max1, median120, max120, wideGap[wideGap.size() / 2]);
+  std::printf(
+      "fp16 vs fp32 position gap (NDC): 1 step median %.3g max %.3g; 120 steps (1 s) median %.3g max %.3g "
+      "(fp32 vs double: median %.3g)\n",
+      median1, max1, median120, max120, wideGap[wideGap.size() / 2]);
   RecordProperty("fp16_gap_1s_median", std::to_string(median120));
   RecordProperty("fp16_gap_1s_max", std::to_string(max120));
   EXPECT_LE(max1, std::sqrt(2.0) * std::ldexp(1.0, -11)) << "one step: one fp16 rounding per coordinate";
