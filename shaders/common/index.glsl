@@ -4,8 +4,9 @@
 #ifndef COMMON_INDEX_GLSL
 #define COMMON_INDEX_GLSL
 
-uint globalIndex() {
-  return (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
-}
+// Linear work-group index (kernels that work per group, e.g. one scan block per group).
+uint groupIndex() { return gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x; }
+
+uint globalIndex() { return groupIndex() * gl_WorkGroupSize.x + gl_LocalInvocationID.x; }
 
 #endif

@@ -3,11 +3,12 @@
 
 namespace tidepool::bench {
 
-Benchmark addRipplesBench(CLI::App& bench);
-Benchmark addSwarmBench(CLI::App& bench);  // bench/swarm_bench.cpp
+Benchmark addGridBench(CLI::App& bench);     // grid_bench.cpp
+Benchmark addRipplesBench(CLI::App& bench);  // ripples_bench.cpp
+Benchmark addSwarmBench(CLI::App& bench);    // swarm_bench.cpp
 
 const std::vector<Registrar>& registrars() {
-  static const std::vector<Registrar> table = {addRipplesBench, addSwarmBench};
+  static const std::vector<Registrar> table = {addGridBench, addRipplesBench, addSwarmBench};
   return table;
 }
 

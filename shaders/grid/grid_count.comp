@@ -1,0 +1,21 @@
+#version 430 core
+// Count pass of the uniform grid (src/grid/grid.h): each particle finds its cell (clamped into
+// the grid) and takes a slot in it with atomicAdd. The slot is kept in indexInCell so the
+// reorder needs no second atomic. Which particle gets which slot depends on scheduling; the
+// counts do not.
+layout(local_size_x = 256) in;
+#include "common/index.glsl"
+#include "common/grid.glsl"
+#include "grid/bindings.glsl"
+
+layout(std430, binding = GRID_POSITIONS) readonly buffer Positions { vec4 positions[]; };
+layout(std430, binding = GRID_CELL_COUNT) buffer CellCount { uint cellCount[]; };
+layout(std430, binding = GRID_INDEX_IN_CELL) writeonly buffer IndexInCell { uint indexInCell[]; };
+
+uniform uint uCount;  // particles
+
+void main() {
+  const uint i = globalIndex();
+  if (i >= uCount) return;
+  indexInCell[i] = atomicAdd(cellCount[cellOf(positions[i].xyz)], 1u);
+}

@@ -1,0 +1,53 @@
+#version 430 core
+// Block scan of the prefix sum (see src/grid/prefix_scan.h): each work group scans its block of
+// kScanBlock uints in registers and shared memory and writes the exclusive prefix sums.
+//   uHasOffsets = 1 (reduce-then-scan): adds blockSums[block], the block's offset from the
+//                   scanned sums of the level above, while storing (the uniform add, fused).
+//   uWriteSums = 1 (scan-then-propagate): writes the block's sum to blockSums[block] instead;
+//                   scan_add.comp adds the offsets afterwards.
+// The last block also writes its total (plus its offset) to out[uCount].
+layout(local_size_x = WG) in;
+#include "common/index.glsl"
+#include "grid/scan_group.glsl"
+#include "grid/scan_io.glsl"
+
+uniform uint uHasOffsets;
+uniform uint uWriteSums;
+
+shared uint sChunk[SCAN_PAD(WG * VECS)];  // per-chunk sums, then per-chunk prefixes, element order
+
+void main() {
+  const uint block = groupIndex();
+  if (block >= blockCount()) return;  // spare groups of a dispatch spilled into y (whole group)
+  const uint t = gl_LocalInvocationID.x;
+  const bool partial = partialBlock(block);
+
+  // 1. Exclusive scan inside each 4-element chunk; chunk sums go to shared memory.
+  uvec4 v[VECS];
+  for (uint k = 0u; k < VECS; ++k) {
+    const uvec4 x = loadChunk(block, k, partial);
+    v[k] = uvec4(0u, x.x, x.x + x.y, x.x + x.y + x.z);
+    sChunk[SCAN_PAD(k * WG + t)] = v[k].w + x.w;
+  }
+  groupSync();
+
+  // 2. Each invocation scans VECS consecutive chunk sums, the group scans the invocation totals.
+  uint chunkPrefix[VECS];
+  uint run = 0u;
+  for (uint j = 0u; j < VECS; ++j) {
+    chunkPrefix[j] = run;
+    run += sChunk[SCAN_PAD(t * VECS + j)];
+  }
+  uint total;
+  const uint before = groupExclusiveScan(run, total);
+  for (uint j = 0u; j < VECS; ++j) sChunk[SCAN_PAD(t * VECS + j)] = before + chunkPrefix[j];
+  groupSync();
+
+  // 3. Add chunk prefix and block offset, store (coalesced, like the loads).
+  const uint offset = uHasOffsets != 0u ? blockSums[block] : 0u;
+  for (uint k = 0u; k < VECS; ++k) storeChunk(block, k, partial, v[k] + (sChunk[SCAN_PAD(k * WG + t)] + offset));
+  if (t == 0u) {
+    if (uWriteSums != 0u) blockSums[block] = total;
+    if (block + 1u == blockCount()) outWord[uCount] = offset + total;
+  }
+}

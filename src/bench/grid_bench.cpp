@@ -1,0 +1,301 @@
+// `tidepool bench grid`: the uniform grid (src/grid) on N random positions in a cube of cells at
+// about 1 and about 8 particles per cell: count (clear + atomicAdd pass), scan of the cell
+// counts, reorder of positions + velocities, and the whole build + reorder as one timed span.
+// Beside it, in the same run: the scan of exactly N uint32, the naive Hillis-Steele scan of the
+// same, and glCopyBufferSubData of the same N * 4 bytes as the bandwidth reference.
+// GB/s = (bytes read + bytes written) / time:
+//   scan     4 N read + 4 (N + 1) written (the minimum; the kernels move about 3 N words, see prefix_scan.h)
+//   reorder  per particle: 16 position (cell) + 4 indexInCell + 4 cellStart read, 16 per array read and written
+//   copy     4 N read + 4 N written
+// Each row's results are compared with the CPU after timing (note column; --no-check skips it).
+// --scan-shapes 256x4,512x8,... adds a table of the N-uint32 scan per work-group shape.
+// Every number is the median of --repeats GL_TIME_ELAPSED queries after --warmup untimed runs.
+#include <chrono>
+#include <cmath>
+#include <random>
+#include <sstream>
+
+#include "base/error.h"
+#include "bench/bench.h"
+#include "gl/buffer.h"
+#include "gl/framebuffer.h"  // gl::Query
+#include "grid/grid.h"
+#include "grid/prefix_scan.h"
+
+namespace tidepool::bench {
+namespace {
+
+struct GridOptions {
+  std::string sizes = "2^16..2^24";  // particle counts N
+  std::string perCell = "1,8";       // target particles per cell
+  int arrays = 2;                    // vec4 arrays reordered (positions, velocities, ...)
+  std::string scanShapes = "256x4";  // PrefixScan work-group shapes; the first one is the grid's
+  bool noCheck = false;              // skip comparing every row's results with the CPU
+};
+
+// Median time (ms) of `work` over the common repeats after the warmup runs. GPU time from
+// GL_TIME_ELAPSED queries, read after all are issued; on drivers whose timer queries are not
+// meaningful (llvmpipe reports 1 ns) wall-clock time around glFinish() instead.
+template <class F>
+double medianMs(const Common& common, bool wallClock, F&& work) {
+  for (int i = 0; i < common.warmup; ++i) work();
+  std::vector<double> ms;
+  std::vector<gl::Query> queries;
+  for (int r = 0; r < common.repeats; ++r) {
+    if (wallClock) {
+      glFinish();
+      const auto start = std::chrono::steady_clock::now();
+      work();
+      glFinish();
+      ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+      continue;
+    }
+    queries.push_back(gl::Query::create());
+    glBeginQuery(GL_TIME_ELAPSED, queries.back().id());
+    work();
+    glEndQuery(GL_TIME_ELAPSED);
+  }
+  for (const gl::Query& q : queries) {
+    GLuint64 ns = 0;
+    glGetQueryObjectui64v(q.id(), GL_QUERY_RESULT, &ns);
+    ms.push_back(double(ns) * 1e-6);
+  }
+  return median(ms);
+}
+
+// True when GL_TIME_ELAPSED reports under 1% of the wall-clock time of a 64 MiB copy.
+bool timerQueriesAreBroken() {
+  gl::Buffer a(64 << 20), b(64 << 20);
+  Common once;
+  once.repeats = 1;
+  once.warmup = 1;
+  const double glMs = medianMs(once, false, [&] { a.copyTo(b, a.size()); });
+  const double wallMs = medianMs(once, true, [&] { a.copyTo(b, a.size()); });
+  return glMs < 0.01 * wallMs;
+}
+
+double gbps(double bytes, double ms) { return ms > 0 ? bytes / (ms * 1e6) : 0; }
+
+std::vector<double> parsePerCell(const std::string& text) {
+  std::vector<double> out;
+  std::stringstream ss(text);
+  for (std::string token; std::getline(ss, token, ',');) {
+    char* end = nullptr;
+    const double v = std::strtod(token.c_str(), &end);
+    if (end == token.c_str() || *end || !(v > 0)) throw Error("--ppc '" + token + "' is not a positive number");
+    out.push_back(v);
+  }
+  if (out.empty()) throw Error("--ppc: no values given");
+  return out;
+}
+
+// "256x4,512x8,256x4p" -> scan shapes (invocations x uvec4 per invocation; p: scan-then-propagate).
+std::vector<grid::ScanConfig> parseShapes(const std::string& text) {
+  std::vector<grid::ScanConfig> out;
+  std::stringstream ss(text);
+  for (std::string token; std::getline(ss, token, ',');) {
+    unsigned g = 0, v = 0;
+    char x = 0, p = 0, rest = 0;
+    const int got = std::sscanf(token.c_str(), "%u%c%u%c%c", &g, &x, &v, &p, &rest);
+    if (!((got == 3 && x == 'x') || (got == 4 && x == 'x' && p == 'p')))
+      throw Error("--scan-shapes '" + token +
+                  "' is not like 256x4 or 256x4p (invocations x uvec4 per invocation, "
+                  "p: scan-then-propagate)");
+    out.push_back({g, v, got == 4});
+  }
+  if (out.empty()) throw Error("--scan-shapes: no shapes given");
+  return out;
+}
+
+std::string shapeText(const grid::ScanConfig& c) {
+  return std::to_string(c.groupSize) + "x" + std::to_string(c.vecsPerThread) + (c.propagate ? "p" : "");
+}
+
+// Scan of N uint32 with each shape against the copy of the same bytes (only with several shapes).
+void addShapeRows(Env& env, Table& table, bool wallClock, std::size_t n, const std::vector<grid::ScanConfig>& shapes) {
+  if ((n + 1) * 4 > grid::maxStorageBlockBytes()) return;
+  std::vector<uint32_t> values(n);
+  std::mt19937 rng{uint32_t(n)};
+  uint64_t sum = 0;
+  for (uint32_t& v : values) sum += v = rng() % 16;
+  gl::Buffer in(n * 4, values.data()), out((n + 1) * 4), copy(n * 4);
+  const double copyMs = medianMs(env.common, wallClock, [&] { in.copyTo(copy, n * 4); });
+  const double copyGbps = gbps(8.0 * n, copyMs);
+  for (const grid::ScanConfig& shape : shapes) {
+    try {
+      grid::PrefixScan scan(env.shaders, shape);
+      scan.reserve(n);
+      const double ms = medianMs(env.common, wallClock, [&] { scan.run(in, out, n); });
+      const bool right = out.read<uint32_t>(1, n)[0] == uint32_t(sum);
+      const double g = gbps(8.0 * n + 4, ms);
+      table.add({std::to_string(n), shapeText(shape), std::to_string(scan.dispatchesFor(n)), fixed(ms, 4), fixed(g, 1),
+                 fixed(copyGbps, 1), fixed(copyGbps > 0 ? 100.0 * g / copyGbps : 0, 1), right ? "" : "WRONG total"});
+    } catch (const Error& e) {
+      table.add({std::to_string(n), shapeText(shape), "", "", "", "", "", std::string("error: ") + e.what()});
+    }
+  }
+}
+
+// Compares the grid after build + reorder with the CPU (grid_reference.h); "" when right.
+// Every array holds the positions, so dst[0] must be the positions in cell order.
+std::string checkGrid(const grid::UniformGrid& grid, const std::vector<glm::vec4>& pos, const gl::Buffer& sorted) {
+  const std::size_t n = pos.size();
+  const std::vector<uint32_t> counts = grid::reference::histogram(grid.shape(), pos);
+  if (grid.cellCount().read<uint32_t>(grid.cells()) != counts) return "WRONG cell counts; ";
+  const std::vector<uint32_t> starts = grid::reference::exclusiveScan(counts);
+  if (grid.cellStart().read<uint32_t>(grid.cells() + 1) != starts) return "WRONG cellStart; ";
+  const std::vector<glm::vec4> got = sorted.read<glm::vec4>(n);
+  std::vector<bool> seen(n, false);
+  std::size_t cell = 0;
+  for (std::size_t j = 0; j < n; ++j) {
+    while (starts[cell + 1] <= j) ++cell;
+    const std::size_t id = std::size_t(got[j].w);
+    if (id >= n || seen[id] || got[j] != pos[id]) return "WRONG reorder (particle lost or duplicated); ";
+    seen[id] = true;
+    if (grid::reference::cellOf(grid.shape(), glm::vec3(got[j])) != cell) return "WRONG reorder (cell order); ";
+  }
+  return "";
+}
+
+std::vector<std::string> runRow(Env& env, const GridOptions& opt, const grid::ScanConfig& scanShape, bool wallClock,
+                                std::size_t n, double perCell) {
+  const std::size_t limit = grid::maxStorageBlockBytes();
+  const std::string nText = std::to_string(n);
+  if (n * sizeof(glm::vec4) > limit)
+    return {nText,
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "skipped: " + std::to_string(n * sizeof(glm::vec4) >> 20) +
+                " MiB of positions exceed this driver's SSBO limit of " + std::to_string(limit >> 20) + " MiB"};
+  // A cube of side s cells of size 1 holding about perCell particles per cell.
+  const uint32_t side = std::max<uint32_t>(1, uint32_t(std::lround(std::cbrt(double(n) / perCell))));
+  grid::UniformGrid grid(env.shaders,
+                         {.domainMin = glm::vec3(0.0f), .domainMax = glm::vec3(float(side)), .cellSize = 1.0f}, n);
+  const std::size_t cells = grid.cells();
+
+  std::mt19937 rng(uint32_t(n) ^ uint32_t(perCell * 1000));
+  std::uniform_real_distribution<float> u(0.0f, float(side));
+  std::vector<glm::vec4> pos(n);
+  for (std::size_t i = 0; i < n; ++i) pos[i] = glm::vec4(u(rng), u(rng), u(rng), float(i));
+  std::vector<gl::Buffer> src, dst;
+  for (int a = 0; a < opt.arrays; ++a) {
+    src.emplace_back(n * sizeof(glm::vec4), pos.data());
+    dst.emplace_back(n * sizeof(glm::vec4));
+  }
+  std::vector<grid::ReorderArray> arrays;
+  for (int a = 0; a < opt.arrays; ++a) arrays.push_back({&src[a], &dst[a]});
+  const gl::Buffer& positions = src[0];
+
+  const double countMs = medianMs(env.common, wallClock, [&] { grid.countParticles(positions, n); });
+  const double scanMs = medianMs(env.common, wallClock, [&] { grid.scanCells(); });
+  const double reorderMs = medianMs(env.common, wallClock, [&] { grid.reorder(positions, arrays); });
+  const double totalMs = medianMs(env.common, wallClock, [&] {
+    grid.build(positions, n);
+    grid.reorder(positions, arrays);
+  });
+  std::string note = opt.noCheck ? "" : checkGrid(grid, pos, dst[0]);
+
+  // The scan target is stated for N uint32: scan, naive scan and copy of exactly those bytes.
+  std::vector<uint32_t> values(n);
+  for (uint32_t& v : values) v = rng() % 16;
+  gl::Buffer in(n * 4, values.data()), out((n + 1) * 4), copy(n * 4);
+  grid::PrefixScan scan(env.shaders, scanShape);
+  grid::NaiveScan naive(env.shaders);
+  scan.reserve(n);
+  const std::vector<uint32_t> want = opt.noCheck ? std::vector<uint32_t>() : grid::reference::exclusiveScan(values);
+  const double uscanMs = medianMs(env.common, wallClock, [&] { scan.run(in, out, n); });
+  if (!opt.noCheck && out.read<uint32_t>(n + 1) != want) note += "WRONG scan; ";
+  const double naiveMs = medianMs(env.common, wallClock, [&] { naive.run(in, out, n); });
+  if (!opt.noCheck && out.read<uint32_t>(n + 1) != want) note += "WRONG naive scan; ";
+  if (note.empty() && !opt.noCheck) note = "checked";
+  const double copyMs = medianMs(env.common, wallClock, [&] { in.copyTo(copy, n * 4); });
+
+  const double scanBytes = 4.0 * n + 4.0 * (n + 1);
+  const double reorderBytes = double(n) * (16 + 4 + 4 + 32.0 * opt.arrays);
+  const double copyBytes = 8.0 * n;
+  const double scanGbps = gbps(scanBytes, uscanMs), copyGbps = gbps(copyBytes, copyMs);
+  return {nText,
+          std::to_string(cells),
+          fixed(double(n) / double(cells), 2),
+          fixed(countMs, 4),
+          fixed(scanMs, 4),
+          fixed(reorderMs, 4),
+          fixed(totalMs, 4),
+          fixed(uscanMs, 4),
+          fixed(naiveMs, 4),
+          fixed(copyMs, 4),
+          fixed(scanGbps, 1),
+          fixed(gbps(reorderBytes, reorderMs), 1),
+          fixed(copyGbps, 1),
+          fixed(copyGbps > 0 ? 100.0 * scanGbps / copyGbps : 0, 1),
+          fixed(uscanMs > 0 ? naiveMs / uscanMs : 0, 1),
+          fixed(double(grid.memoryBytes()) / double(1 << 20), 2),
+          note};
+}
+
+int runGridBench(Env& env, const GridOptions& opt) {
+  const std::vector<std::size_t> sizes = parseSizes(opt.sizes);
+  const std::vector<double> perCell = parsePerCell(opt.perCell);
+  const std::vector<grid::ScanConfig> shapes = parseShapes(opt.scanShapes);
+  std::printf("device: %s\n", env.device.c_str());
+  const bool wallClock = timerQueriesAreBroken();
+  std::printf("grid: %d vec4 arrays reordered; scanN/naive/copy on N uint32; medians of %d repeats (ms, GB/s); %s\n",
+              opt.arrays, env.common.repeats,
+              wallClock ? "WALL CLOCK around glFinish (this driver's GL timer queries are not meaningful)"
+                        : "GL_TIME_ELAPSED queries");
+  std::fflush(stdout);
+  Table table({"N", "cells", "ppc", "count_ms", "scan_ms", "reorder_ms", "total_ms", "scanN_ms", "naive_ms", "copy_ms",
+               "scan_GBps", "reorder_GBps", "copy_GBps", "scan/copy%", "naive/scan_x", "grid_MiB", "note"});
+  for (std::size_t n : sizes) {
+    if (n == 0 || n > grid::PrefixScan::kMaxCount) throw Error("--n: sizes must be between 1 and 2^31");
+    for (double ppc : perCell) {
+      try {
+        table.add(runRow(env, opt, shapes[0], wallClock, n, ppc));
+      } catch (const Error& e) {  // e.g. out of GPU memory: report the row, keep going
+        table.add({std::to_string(n), "", fixed(ppc, 2), "", "", "", "", "", "", "", "", "", "", "", "", "",
+                   std::string("error: ") + e.what()});
+      }
+    }
+  }
+  table.print();
+  if (!env.common.csv.empty()) table.writeCsv(env.common.csv);
+  if (shapes.size() > 1) {
+    std::printf(
+        "\nscan of N uint32 by work-group shape (invocations x uvec4 per invocation; p: scan-then-propagate)\n");
+    Table byShape({"N", "shape", "dispatches", "scan_ms", "scan_GBps", "copy_GBps", "scan/copy%", "note"});
+    for (std::size_t n : sizes) addShapeRows(env, byShape, wallClock, n, shapes);
+    byShape.print();
+  }
+  return 0;
+}
+
+}  // namespace
+
+Benchmark addGridBench(CLI::App& bench) {
+  auto opt = std::make_shared<GridOptions>();
+  auto* sub = bench.add_subcommand("grid", "uniform grid: count, scan, reorder vs naive scan and buffer copy");
+  sub->add_option("--n", opt->sizes, "particle counts, e.g. 2^16..2^24 or 65536,1M")->capture_default_str();
+  sub->add_option("--ppc", opt->perCell, "target particles per cell, comma separated")->capture_default_str();
+  sub->add_option("--arrays", opt->arrays, "vec4 arrays to reorder")->check(CLI::Range(1, 8))->capture_default_str();
+  sub->add_option("--scan-shapes", opt->scanShapes,
+                  "scan work-group shapes, e.g. 256x4,512x4,256x8,256x4p (p: scan-then-propagate; the first "
+                  "is used in the main table, several add a table comparing them)")
+      ->capture_default_str();
+  sub->add_flag("--no-check", opt->noCheck, "skip comparing each row's grid and scans with the CPU");
+  return {sub, [opt](Env& env) { return runGridBench(env, *opt); }};
+}
+
+}  // namespace tidepool::bench

@@ -1,0 +1,143 @@
+#include "grid/grid.h"
+
+#include <cmath>
+#include <string>
+
+#include "base/error.h"
+
+namespace tidepool::grid {
+namespace {
+constexpr std::size_t kWord = sizeof(uint32_t);
+constexpr std::size_t kVec4 = 4 * sizeof(float);
+
+std::string vecText(glm::vec3 v) {
+  return "(" + std::to_string(v.x) + ", " + std::to_string(v.y) + ", " + std::to_string(v.z) + ")";
+}
+
+reference::GridShape shapeOf(const GridParams& p) {
+  if (!(p.cellSize > 0.0f) || !std::isfinite(p.cellSize))
+    throw Error("grid cell size must be a positive number, got " + std::to_string(p.cellSize));
+  const glm::vec3 extent = p.domainMax - p.domainMin;
+  if (!(extent.x > 0.0f) || !(extent.y > 0.0f) || !(extent.z >= 0.0f) || !std::isfinite(extent.x) ||
+      !std::isfinite(extent.y) || !std::isfinite(extent.z))
+    throw Error("grid domain max " + vecText(p.domainMax) + " must exceed min " + vecText(p.domainMin) +
+                " in x and y (z may be equal, for a 2D grid)");
+  double dims[3], cells = 1;
+  for (int a = 0; a < 3; ++a) {
+    dims[a] = std::max(1.0, std::ceil(double(extent[a]) / double(p.cellSize)));
+    cells *= dims[a];
+  }
+  if (cells > double(UniformGrid::kMaxCells))
+    throw Error("grid of " + std::to_string(dims[0]) + " x " + std::to_string(dims[1]) + " x " +
+                std::to_string(dims[2]) + " cells is too many (at most 2^30): use a larger cell size than " +
+                std::to_string(p.cellSize));
+  reference::GridShape s;
+  s.origin = p.domainMin;
+  s.invCellSize = 1.0f / p.cellSize;
+  s.dims = glm::uvec3(uint32_t(dims[0]), uint32_t(dims[1]), uint32_t(dims[2]));
+  return s;
+}
+
+void checkArray(const gl::Buffer* b, std::size_t bytes, const std::string& what) {
+  if (!b || b->size() < bytes)
+    throw Error("grid: " + what + " needs " + std::to_string(bytes) + " bytes, the buffer " +
+                (b ? "holds " + std::to_string(b->size()) : std::string("is missing")));
+}
+}  // namespace
+
+UniformGrid::UniformGrid(gl::ShaderLibrary& shaders, const GridParams& params, std::size_t particleCapacity)
+    : m_params(params),
+      m_shape(shapeOf(params)),
+      m_shaders(&shaders),
+      m_maxBlockBytes(maxStorageBlockBytes()),
+      m_countPass(&shaders.program({"grid/grid_count.comp"})),
+      m_scan(shaders) {
+  const std::size_t startBytes = (cells() + 1) * kWord;
+  if (startBytes > m_maxBlockBytes)
+    throw Error("grid of " + std::to_string(cells()) + " cells needs " + std::to_string(startBytes >> 20) +
+                " MiB per cell array, over this driver's SSBO limit of " + std::to_string(m_maxBlockBytes >> 20) +
+                " MiB: use a larger cell size");
+  m_cellCount = gl::Buffer(cells() * kWord);
+  m_cellStart = gl::Buffer(startBytes);
+  m_scan.reserve(cells());
+  if (particleCapacity) m_indexInCell = gl::Buffer(particleCapacity * kWord);
+}
+
+void UniformGrid::setUniforms(const gl::Program& program) const {
+  program.set("uGridOrigin", m_shape.origin);
+  program.set("uGridInvCellSize", m_shape.invCellSize);
+  program.set("uGridDims", m_shape.dims);
+}
+
+void UniformGrid::build(const gl::Buffer& positions, std::size_t count) {
+  countParticles(positions, count);
+  scanCells();
+}
+
+void UniformGrid::countParticles(const gl::Buffer& positions, std::size_t count) {
+  checkArray(&positions, count * kVec4, std::to_string(count) + " positions");
+  if (count * kVec4 > m_maxBlockBytes)
+    throw Error("grid: " + std::to_string(count) + " positions need " + std::to_string(count * kVec4 >> 20) +
+                " MiB, over this driver's SSBO limit of " + std::to_string(m_maxBlockBytes >> 20) + " MiB");
+  if (m_indexInCell.size() < count * kWord) m_indexInCell = gl::Buffer(count * kWord);
+  m_count = count;
+  // The previous count pass wrote cellCount with atomics; the clear must see those writes done.
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  m_cellCount.fillZero();
+  if (count) {
+    positions.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_POSITIONS);
+    m_cellCount.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_CELL_COUNT);
+    m_indexInCell.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_INDEX_IN_CELL);
+    m_countPass->use();
+    setUniforms(*m_countPass);
+    m_countPass->set("uCount", uint32_t(count));
+    m_countPass->dispatchThreads(count);
+  }
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+void UniformGrid::scanCells() { m_scan.run(m_cellCount, m_cellStart, cells()); }
+
+void UniformGrid::reorder(const gl::Buffer& positions, std::span<const ReorderArray> arrays, gl::Buffer* permutation) {
+  const std::size_t n = m_count;
+  checkArray(&positions, n * kVec4, "reorder: " + std::to_string(n) + " positions");
+  for (std::size_t a = 0; a < arrays.size(); ++a) {
+    checkArray(arrays[a].src, n * kVec4, "reorder: source array " + std::to_string(a));
+    checkArray(arrays[a].dst, n * kVec4, "reorder: destination array " + std::to_string(a));
+    if (arrays[a].src->id() == arrays[a].dst->id())
+      throw Error("grid: reorder array " + std::to_string(a) + " has the same source and destination buffer");
+  }
+  if (permutation) checkArray(permutation, n * kWord, "reorder: permutation");
+  if (!n || (arrays.empty() && !permutation)) return;
+  positions.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_POSITIONS);
+  m_indexInCell.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_INDEX_IN_CELL);
+  m_cellStart.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_CELL_START);
+  if (permutation) permutation->bindBase(GL_SHADER_STORAGE_BUFFER, GRID_PERMUTATION);
+  // Batches of GRID_REORDER_MAX_ARRAYS arrays; the first batch also writes the permutation.
+  std::size_t first = 0;
+  bool writePermutation = permutation != nullptr;
+  do {
+    const std::size_t batch = std::min<std::size_t>(GRID_REORDER_MAX_ARRAYS, arrays.size() - first);
+    gl::Program*& program = m_reorderPass[batch][writePermutation];
+    if (!program)
+      program = &m_shaders->program({"grid/grid_reorder.comp"}, {{"ARRAYS", std::to_string(batch)},
+                                                                 {"WRITE_PERMUTATION", writePermutation ? "1" : "0"}});
+    for (std::size_t a = 0; a < batch; ++a) {
+      arrays[first + a].src->bindBase(GL_SHADER_STORAGE_BUFFER, GLuint(GRID_REORDER_SRC + a));
+      arrays[first + a].dst->bindBase(GL_SHADER_STORAGE_BUFFER, GLuint(GRID_REORDER_DST + a));
+    }
+    program->use();
+    setUniforms(*program);
+    program->set("uCount", uint32_t(n));
+    program->dispatchThreads(n);
+    first += batch;
+    writePermutation = false;
+  } while (first < arrays.size());
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+std::size_t UniformGrid::memoryBytes() const {
+  return m_cellCount.size() + m_cellStart.size() + m_indexInCell.size() + m_scan.memoryBytes();
+}
+
+}  // namespace tidepool::grid

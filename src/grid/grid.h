@@ -1,0 +1,98 @@
+// Uniform spatial grid on the GPU, shared by balls, fluid and life: particles are counted into
+// cells, the counts are scanned into cell starts, and particle arrays are reordered so that each
+// cell's particles are contiguous and cells are in index order (x fastest, then y, then z).
+//
+//   6 particles in 4 cells, cell of particle i = {2, 0, 2, 3, 2, 0}
+//   count    cellCount   = {2, 0, 3, 1}        indexInCell = {0, 0, 1, 0, 2, 1}  (atomicAdd results)
+//   scan     cellStart   = {0, 2, 2, 5, 6}     exclusive prefix sum, last entry = particle total
+//   reorder  slot        = cellStart[cell] + indexInCell = {2, 0, 3, 5, 4, 1}
+//            dst         = {p1, p5, p0, p2, p4, p3}   cell c is dst[cellStart[c] .. cellStart[c + 1])
+//            permutation = {1, 5, 0, 2, 4, 3}        permutation[slot] = original index (optional)
+//
+// Determinism: cellCount and cellStart are the same on every run; the order of particles inside
+// a cell (indexInCell, hence the reordered arrays and the permutation) follows the atomicAdd
+// order and may differ between runs and drivers.
+// Positions are vec4 (xyz + w) std430 SSBOs. Positions outside the domain are clamped into the
+// border cells (never dropped, never written out of bounds); a position exactly on a cell border
+// belongs to the cell above it, one exactly on the domain max to the last cell. The cell math is
+// shaders/common/grid.glsl (setUniforms() feeds it to any kernel) and its CPU twin
+// grid_reference.h. Every pass ends with GL_SHADER_STORAGE_BARRIER_BIT, so later kernels may read
+// its output (Buffer::download adds its own read-back barrier); callers make their own writes to
+// the positions visible the same way, and add GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT if they draw the
+// reordered arrays as vertex attributes.
+//
+//   UniformGrid grid(shaders, {.domainMin = {0, 0, 0}, .domainMax = {4, 4, 4}, .cellSize = 0.5f});
+//   grid.build(pos, n);                                    // count + scan
+//   grid.reorder(pos, {{&pos, &posSorted}, {&vel, &velSorted}});
+//   std::swap(pos, posSorted); std::swap(vel, velSorted);  // double-buffered, no copy back
+#pragma once
+
+#include <glm/glm.hpp>
+#include <initializer_list>
+#include <span>
+
+#include "gl/buffer.h"
+#include "gl/shader_library.h"
+#include "grid/bindings.glsl"
+#include "grid/grid_reference.h"
+#include "grid/prefix_scan.h"
+
+namespace tidepool::grid {
+
+struct GridParams {
+  glm::vec3 domainMin{0.0f};  // world units
+  glm::vec3 domainMax{1.0f};  // world units; z equal to domainMin.z makes a 2D grid (one layer)
+  float cellSize = 0.1f;      // world units; at least the model's interaction radius
+};
+
+// One vec4 array to move by reorder(): src is read in particle order, dst written in cell order.
+struct ReorderArray {
+  const gl::Buffer* src;
+  gl::Buffer* dst;
+};
+
+class UniformGrid {
+ public:
+  static constexpr std::size_t kMaxCells = std::size_t(1) << 30;  // cell indices stay in uint range
+
+  // Dims per axis = ceil(extent / cellSize), at least 1. Throws Error for cellSize <= 0, max <= min
+  // (max < min for z) or too many cells. particleCapacity only pre-allocates (build() grows).
+  UniformGrid(gl::ShaderLibrary& shaders, const GridParams& params, std::size_t particleCapacity = 0);
+
+  void build(const gl::Buffer& positions, std::size_t count);           // countParticles() + scanCells()
+  void countParticles(const gl::Buffer& positions, std::size_t count);  // clear, atomicAdd pass
+  void scanCells();                                                     // cellCount -> cellStart
+  // Moves each array to cell order for the positions and count of the last build (the positions
+  // must be unchanged since). GRID_REORDER_MAX_ARRAYS arrays per dispatch; permutation optional.
+  void reorder(const gl::Buffer& positions, std::span<const ReorderArray> arrays, gl::Buffer* permutation = nullptr);
+  void reorder(const gl::Buffer& positions, std::initializer_list<ReorderArray> arrays,
+               gl::Buffer* permutation = nullptr) {
+    reorder(positions, std::span<const ReorderArray>(arrays.begin(), arrays.size()), permutation);
+  }
+
+  void setUniforms(const gl::Program& program) const;  // uGridOrigin, uGridInvCellSize, uGridDims
+
+  const GridParams& params() const { return m_params; }
+  const reference::GridShape& shape() const { return m_shape; }
+  glm::uvec3 dims() const { return m_shape.dims; }
+  bool is2D() const { return m_shape.dims.z == 1 && m_params.domainMax.z == m_params.domainMin.z; }
+  std::size_t cells() const { return m_shape.cells(); }
+  std::size_t particleCount() const { return m_count; }            // of the last build
+  const gl::Buffer& cellCount() const { return m_cellCount; }      // uint per cell
+  const gl::Buffer& cellStart() const { return m_cellStart; }      // uint per cell + 1 (total)
+  const gl::Buffer& indexInCell() const { return m_indexInCell; }  // uint per particle
+  std::size_t memoryBytes() const;  // all GPU buffers the grid owns, scan levels included (bytes)
+
+ private:
+  GridParams m_params;
+  reference::GridShape m_shape;
+  gl::ShaderLibrary* m_shaders;
+  std::size_t m_maxBlockBytes;  // GL_MAX_SHADER_STORAGE_BLOCK_SIZE, queried once
+  gl::Program* m_countPass;
+  gl::Program* m_reorderPass[GRID_REORDER_MAX_ARRAYS + 1][2] = {};  // [arrays][writes permutation], made on use
+  PrefixScan m_scan;
+  gl::Buffer m_cellCount, m_cellStart, m_indexInCell;
+  std::size_t m_count = 0;
+};
+
+}  // namespace tidepool::grid

@@ -1,0 +1,95 @@
+// Exclusive prefix sum of uint32 on the GPU, any size from 0 to 2^31 elements, no host round
+// trip: out[i] = in[0] + ... + in[i - 1] for i <= n, so out[n] holds the total.
+//
+//   in  = {2, 0, 3, 1}          (n = 4 uints)
+//   out = {0, 2, 2, 5, 6}       (n + 1 uints)
+//
+// PrefixScan works on blocks of 4096 elements by default, one work group each, in one of two orders
+// (reduce-then-scan: Merrill & Grimshaw 2009; scan-then-propagate: Harris, Sengupta & Owens,
+// GPU Gems 3 ch. 39, 2007):
+//   reduce-then-scan (default), level L of n_L elements:
+//     scan_reduce   blockSums[b] = sum of block b                         reads n_L
+//     (scan blockSums in place: level L + 1, recursively)
+//     scan_block    scan each block in shared memory, + blockSums[b]     reads n_L, writes n_L
+//   scan-then-propagate (ScanConfig::propagate, the textbook order, kept to measure against):
+//     scan_block    scan each block, write blockSums[b]                  reads n_L, writes n_L
+//     (scan blockSums in place, recursively)
+//     scan_add      out[i] += blockSums[b]  (the uniform add)             reads n_L, writes n_L
+//   A level of at most one block is a single work group with no offsets: the top.
+// Reduce-then-scan moves 3 N words at level 0 against 4 N, which is what lets the scan approach
+// copy bandwidth; its uniform add is fused into scan_block's store. 16M elements take three
+// dispatches: reduce (4096 groups), one group over the 4096 sums, scan (4096 groups).
+// Inside a block (default shape): 16 elements per invocation as 4 coalesced uvec4 loads, a scan
+// of the 1024 chunk sums, and a Blelloch up-sweep/down-sweep of the 256 invocation totals in
+// padded shared memory (shaders/grid/scan_group.glsl). No warp or subgroup size is assumed.
+//
+// NaiveScan is the log2(N)-pass Hillis-Steele scan (as in the particle-life article), kept as
+// the reference for tests and the benchmark.
+//
+// Both end every pass with glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT), so the next shader
+// may read `out`; Buffer::download adds the read-back barrier itself. Results are exact and
+// deterministic (integer adds); the sum wraps modulo 2^32 like the CPU reference.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "gl/buffer.h"
+#include "gl/shader_library.h"
+
+namespace tidepool::grid {
+
+// Work-group shape of PrefixScan, compile-time defines of its kernels (one program per shape).
+struct ScanConfig {
+  std::size_t groupSize = 256;    // invocations per work group: a power of two, 32..1024
+  std::size_t vecsPerThread = 4;  // uvec4 loads per invocation: 1..16
+  bool propagate = false;         // scan-then-propagate (4 N words moved) instead of reduce-then-scan (3 N)
+  std::size_t block() const { return groupSize * vecsPerThread * 4; }  // elements per work group
+};
+
+class PrefixScan {
+ public:
+  using Config = ScanConfig;
+  static constexpr std::size_t kMaxCount = std::size_t(1) << 31;  // uint indices in the kernels
+
+  explicit PrefixScan(gl::ShaderLibrary& shaders, Config config = {});  // throws Error for a bad shape
+
+  // out[0..n] = exclusive scan of in[0..n). `in` holds >= n uints, `out` >= n + 1; they may be
+  // the same buffer (in place). n = 0 writes out[0] = 0. Throws Error for bad sizes.
+  void run(const gl::Buffer& in, gl::Buffer& out, std::size_t n);
+  void reserve(std::size_t n);                     // allocates the block sums for n up front
+  std::size_t memoryBytes() const;                 // block-sum buffers (bytes)
+  std::size_t dispatchesFor(std::size_t n) const;  // compute dispatches one run(n) issues
+  const Config& config() const { return m_config; }
+
+ private:
+  std::size_t blocksOf(std::size_t n) const;
+  void scanLevel(const gl::Buffer& in, gl::Buffer& out, std::size_t n, std::size_t level);
+
+  Config m_config;
+  std::size_t m_maxBlockBytes;  // queried once: glGet may sync a threaded driver
+  gl::Program* m_reduce;
+  gl::Program* m_block;
+  gl::Program* m_add;
+  std::vector<gl::Buffer> m_sums;  // m_sums[L]: block sums of level L (+1 entry for their total)
+};
+
+class NaiveScan {
+ public:
+  explicit NaiveScan(gl::ShaderLibrary& shaders);
+
+  // Same contract as PrefixScan::run, but `in` and `out` must be different buffers.
+  void run(const gl::Buffer& in, gl::Buffer& out, std::size_t n);
+  std::size_t memoryBytes() const { return m_temp.size(); }  // ping-pong buffer (bytes)
+  static std::size_t passesFor(std::size_t n);               // ceil(log2(n + 1)), at least 1
+
+ private:
+  std::size_t m_maxBlockBytes;
+  gl::Program* m_pass;
+  gl::Buffer m_temp;
+};
+
+// GL_MAX_SHADER_STORAGE_BLOCK_SIZE in bytes (llvmpipe: 128 MiB): the largest array one kernel sees.
+std::size_t maxStorageBlockBytes();
+
+}  // namespace tidepool::grid

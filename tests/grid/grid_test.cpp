@@ -1,0 +1,212 @@
+// The uniform grid against plain CPU loops: counts are a histogram, cellStart its exclusive scan,
+// the reorder a permutation that makes cells contiguous and in order; 2D and 3D, particles on
+// cell borders and outside the domain; counts and starts are the same on every run.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <random>
+#include <regex>
+
+#include "base/error.h"
+#include "gl/buffer.h"
+#include "grid/grid.h"
+#include "support/gl_test.h"
+
+using namespace tidepool;
+using namespace tidepool::grid;
+
+namespace {
+class Grid : public test::GlTest {};
+
+gl::Buffer vec4Buffer(const std::vector<glm::vec4>& v) {
+  return gl::Buffer(std::max<std::size_t>(v.size(), 1) * sizeof(glm::vec4), v.data());
+}
+
+// Positions with w = particle id: uniform in the domain grown by `outside` on each side, plus
+// points exactly on cell borders, on the domain's min and max, and far outside.
+std::vector<glm::vec4> makePositions(const GridParams& p, std::size_t n, float outside, uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  std::vector<glm::vec4> out;
+  const glm::vec3 lo = p.domainMin - outside, hi = p.domainMax + outside;
+  const glm::vec3 cells = glm::ceil((p.domainMax - p.domainMin) / p.cellSize);
+  for (std::size_t i = 0; i < n; ++i) {
+    glm::vec3 x;
+    switch (i % 8) {
+      case 0:  // exactly on a cell border on every axis
+        for (int a = 0; a < 3; ++a) x[a] = p.domainMin[a] + float(rng() % (int(cells[a]) + 1)) * p.cellSize;
+        break;
+      case 1: x = (i % 16 == 1) ? p.domainMin : p.domainMax; break;
+      case 2: x = glm::vec3(1e30f, -1e30f, 1e6f) * (u(rng) < 0.5f ? 1.0f : -1.0f); break;
+      default:
+        for (int a = 0; a < 3; ++a) x[a] = lo[a] + (hi[a] - lo[a]) * u(rng);
+    }
+    if (p.domainMax.z == p.domainMin.z && i % 8 != 2) x.z = p.domainMin.z;
+    out.emplace_back(x, float(i));
+  }
+  return out;
+}
+
+// Builds, reorders positions + two more arrays (two reorder batches) with the permutation, and
+// checks everything against the CPU.
+void checkGrid(gl::ShaderLibrary& shaders, const GridParams& params, const std::vector<glm::vec4>& pos) {
+  const std::size_t n = pos.size();
+  UniformGrid grid(shaders, params);
+  const reference::GridShape& shape = grid.shape();
+  std::vector<glm::vec4> vel(n), extra(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    vel[i] = glm::vec4(float(i) * 2.0f, 1.0f, 2.0f, 3.0f);
+    extra[i] = glm::vec4(-float(i), 0.5f, 0.25f, float(i % 7));
+  }
+  gl::Buffer posBuf = vec4Buffer(pos), velBuf = vec4Buffer(vel), extraBuf = vec4Buffer(extra);
+  gl::Buffer posOut(posBuf.size()), velOut(velBuf.size()), extraOut(extraBuf.size()),
+      perm(std::max<std::size_t>(n, 1) * 4);
+  grid.build(posBuf, n);
+  grid.reorder(posBuf, {{&posBuf, &posOut}, {&velBuf, &velOut}, {&extraBuf, &extraOut}}, &perm);
+
+  const std::vector<uint32_t> counts = reference::histogram(shape, pos);
+  const std::vector<uint32_t> starts = reference::exclusiveScan(counts);
+  ASSERT_EQ(grid.cellCount().read<uint32_t>(grid.cells()), counts) << "counts must equal the CPU histogram";
+  ASSERT_EQ(grid.cellStart().read<uint32_t>(grid.cells() + 1), starts);
+
+  const std::vector<glm::vec4> sortedPos = posOut.read<glm::vec4>(n), sortedVel = velOut.read<glm::vec4>(n),
+                               sortedExtra = extraOut.read<glm::vec4>(n);
+  const std::vector<uint32_t> permutation = perm.read<uint32_t>(n);
+  // Every particle exactly once: the ids (w) of the sorted positions are a permutation of 0..n-1.
+  std::vector<uint32_t> ids(n);
+  for (std::size_t j = 0; j < n; ++j) ids[j] = uint32_t(sortedPos[j].w);
+  std::vector<uint32_t> sortedIds = ids;
+  std::sort(sortedIds.begin(), sortedIds.end());
+  for (std::size_t j = 0; j < n; ++j) ASSERT_EQ(sortedIds[j], j) << "particle ids lost or duplicated";
+  // Cells contiguous and in cell order; all arrays moved together; the permutation names the source.
+  std::size_t cell = 0;
+  for (std::size_t j = 0; j < n; ++j) {
+    while (starts[cell + 1] <= j) ++cell;
+    const uint32_t i = ids[j];
+    ASSERT_EQ(reference::cellOf(shape, glm::vec3(sortedPos[j])), cell) << "slot " << j << " (particle " << i << ")";
+    ASSERT_EQ(permutation[j], i) << "slot " << j;
+    ASSERT_EQ(sortedPos[j], pos[i]);
+    ASSERT_EQ(sortedVel[j], vel[i]);
+    ASSERT_EQ(sortedExtra[j], extra[i]);
+  }
+  // indexInCell is a slot in the cell: distinct 0..count-1 per cell.
+  const std::vector<uint32_t> slots = grid.indexInCell().read<uint32_t>(n);
+  for (std::size_t i = 0; i < n; ++i)
+    ASSERT_LT(slots[i], counts[reference::cellOf(shape, glm::vec3(pos[i]))]) << "particle " << i;
+}
+}  // namespace
+
+TEST_F(Grid, ExampleFromTheHeader) {
+  UniformGrid grid(shaders(), {.domainMin = {0, 0, 0}, .domainMax = {4, 1, 0}, .cellSize = 1.0f});
+  ASSERT_EQ(grid.dims(), glm::uvec3(4, 1, 1));
+  EXPECT_TRUE(grid.is2D());
+  const std::vector<glm::vec4> pos = {{2.5f, 0.5f, 0, 0}, {0.5f, 0.5f, 0, 1}, {2.5f, 0.5f, 0, 2},
+                                      {3.5f, 0.5f, 0, 3}, {2.5f, 0.5f, 0, 4}, {0.5f, 0.5f, 0, 5}};
+  gl::Buffer posBuf = vec4Buffer(pos), posOut(posBuf.size()), perm(6 * 4);
+  grid.build(posBuf, pos.size());
+  EXPECT_EQ(grid.cellCount().readAll<uint32_t>(), (std::vector<uint32_t>{2, 0, 3, 1}));
+  EXPECT_EQ(grid.cellStart().readAll<uint32_t>(), (std::vector<uint32_t>{0, 2, 2, 5, 6}));
+  grid.reorder(posBuf, {{&posBuf, &posOut}}, &perm);
+  std::vector<uint32_t> p = perm.readAll<uint32_t>();
+  std::sort(p.begin(), p.begin() + 2);  // the order inside a cell may vary
+  std::sort(p.begin() + 2, p.begin() + 5);
+  EXPECT_EQ(p, (std::vector<uint32_t>{1, 5, 0, 2, 4, 3}));
+}
+
+TEST_F(Grid, Random3DWithBordersAndOutsiders) {
+  const GridParams params{.domainMin = {-1, 0, 2}, .domainMax = {3, 2, 3.5f}, .cellSize = 0.25f};
+  checkGrid(shaders(), params, makePositions(params, 20000, 0.5f, 1));
+}
+
+TEST_F(Grid, Random2DWithBordersAndOutsiders) {
+  const GridParams params{.domainMin = {0, 0, 0}, .domainMax = {8, 4, 0}, .cellSize = 0.5f};
+  checkGrid(shaders(), params, makePositions(params, 30001, 1.0f, 2));
+}
+
+TEST_F(Grid, ManyParticlesPerCellAndManyCells) {
+  // ~8 per cell over more cells than one scan block (two-level scan), and a crowded tiny grid.
+  const GridParams wide{.domainMin = {0, 0, 0}, .domainMax = {24, 24, 24}, .cellSize = 1.0f};
+  checkGrid(shaders(), wide, makePositions(wide, 8 * 24 * 24 * 24, 0.0f, 3));
+  const GridParams tiny{.domainMin = {0, 0, 0}, .domainMax = {1, 1, 1}, .cellSize = 0.5f};
+  checkGrid(shaders(), tiny, makePositions(tiny, 5000, 0.1f, 4));
+}
+
+TEST_F(Grid, NonMultipleCellSizeRoundsDimsUp) {
+  UniformGrid grid(shaders(), {.domainMin = {0, 0, 0}, .domainMax = {1, 1, 1}, .cellSize = 0.3f});
+  EXPECT_EQ(grid.dims(), glm::uvec3(4, 4, 4));
+  EXPECT_FALSE(grid.is2D());
+  const GridParams params = grid.params();
+  checkGrid(shaders(), params, makePositions(params, 3000, 0.2f, 5));
+}
+
+TEST_F(Grid, ZeroParticles) {
+  UniformGrid grid(shaders(), {.domainMin = {0, 0, 0}, .domainMax = {2, 2, 2}, .cellSize = 1.0f});
+  gl::Buffer pos(16), out(16);
+  grid.build(pos, 0);
+  EXPECT_EQ(grid.cellStart().readAll<uint32_t>(), std::vector<uint32_t>(9, 0u));
+  grid.reorder(pos, {{&pos, &out}});
+  EXPECT_EQ(grid.particleCount(), 0u);
+}
+
+TEST_F(Grid, CountsAndStartsAreDeterministic) {
+  const GridParams params{.domainMin = {0, 0, 0}, .domainMax = {10, 10, 10}, .cellSize = 0.5f};
+  const std::vector<glm::vec4> pos = makePositions(params, 50000, 0.3f, 6);
+  gl::Buffer posBuf = vec4Buffer(pos);
+  std::vector<uint32_t> counts, starts;
+  for (int run = 0; run < 3; ++run) {
+    UniformGrid grid(shaders(), params);
+    for (int rebuild = 0; rebuild < 2; ++rebuild) {
+      grid.build(posBuf, pos.size());
+      if (counts.empty()) {
+        counts = grid.cellCount().readAll<uint32_t>();
+        starts = grid.cellStart().readAll<uint32_t>();
+      }
+      EXPECT_EQ(grid.cellCount().readAll<uint32_t>(), counts);
+      EXPECT_EQ(grid.cellStart().readAll<uint32_t>(), starts);
+    }
+  }
+}
+
+TEST_F(Grid, MemoryIsReported) {
+  UniformGrid grid(shaders(), {.domainMin = {0, 0, 0}, .domainMax = {64, 64, 64}, .cellSize = 1.0f}, 1000);
+  const std::size_t cells = 64 * 64 * 64;
+  // counts + starts + indexInCell + scan levels (64 + 1 block sums)
+  EXPECT_EQ(grid.memoryBytes(),
+            cells * 4 + (cells + 1) * 4 + 1000 * 4 + (cells / PrefixScan::Config{}.block() + 1) * 4);
+}
+
+TEST_F(Grid, BadInputThrowsOneLineErrors) {
+  auto make = [&](GridParams p) { UniformGrid grid(shaders(), p); };
+  const glm::vec3 zero(0.0f), one(1.0f);
+  for (float cell : {0.0f, -1.0f, std::nanf("")})
+    EXPECT_THROW(make({.domainMin = zero, .domainMax = one, .cellSize = cell}), Error) << cell;
+  EXPECT_THROW(make({.domainMin = one, .domainMax = zero, .cellSize = 0.1f}), Error);
+  EXPECT_THROW(make({.domainMin = zero, .domainMax = {1, 0, 1}, .cellSize = 0.1f}), Error);  // y extent 0
+  EXPECT_THROW(make({.domainMin = zero, .domainMax = {1, 1, -1}, .cellSize = 0.1f}), Error);
+  try {
+    make({.domainMin = zero, .domainMax = glm::vec3(1e4f), .cellSize = 1e-2f});
+    ADD_FAILURE() << "expected too many cells";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("larger cell size"), std::string::npos) << e.what();
+    EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos);
+  }
+  UniformGrid grid(shaders(), {.domainMin = zero, .domainMax = one, .cellSize = 0.5f});
+  gl::Buffer small(16);
+  EXPECT_THROW(grid.build(small, 2), Error);  // 2 positions need 32 bytes
+  gl::Buffer pos(32), out(32);
+  grid.build(pos, 2);
+  EXPECT_THROW(grid.reorder(pos, {{&pos, &small}}), Error);
+  EXPECT_THROW(grid.reorder(pos, {{&pos, &pos}}), Error);
+}
+
+TEST(GridBindings, HeaderHoldsOnlyDefinesSharedWithCpp) {
+  // C++ and GLSL include the same file, so it must be valid in both: #define lines only.
+  std::ifstream in(std::string(TIDEPOOL_SOURCE_DIR) + "/shaders/grid/bindings.glsl");
+  ASSERT_TRUE(in);
+  const std::regex define(R"(#define [A-Z_0-9]+ \d+( +//.*)?)");
+  int lines = 0;
+  for (std::string line; std::getline(in, line); ++lines) EXPECT_TRUE(std::regex_match(line, define)) << line;
+  EXPECT_GT(lines, 0);
+  EXPECT_LE(GRID_REORDER_DST + GRID_REORDER_MAX_ARRAYS, 8) << "GL 4.3 guarantees only 8 SSBO bindings";
+}
