@@ -3,6 +3,7 @@
 #include "scene/blank.h"
 #include "scene/ripples_stage.h"
 #include "scene/stage.h"
+#include "scene/swarm_stage.h"
 
 namespace tidepool {
 
@@ -13,6 +14,7 @@ const std::vector<ModelEntry>& models() {
        createBallsStage},
       {"ripples", "heightfield water: wave equation or the seed's spring model, 2D refraction view",
        createRipplesStage},
+      {"swarm", "millions of 2D particles pulled by animated attractors, one following the mouse", createSwarmStage},
   };
   return table;
 }
