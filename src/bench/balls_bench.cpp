@@ -6,8 +6,8 @@
 #include <map>
 #include <regex>
 
-#include "bench/bench.h"
 #include "base/error.h"
+#include "bench/bench.h"
 #include "scene/balls_stage.h"
 #include "sim/balls/balls.h"
 
