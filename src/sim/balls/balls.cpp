@@ -10,7 +10,8 @@
 namespace tidepool::balls {
 namespace {
 constexpr float kPi = 3.14159265358979f;
-constexpr int kGroup = 128;  // local size of the balls kernels
+constexpr int kGroup = 128;       // local size of the balls kernels
+constexpr int kStatsValues = 10;  // per work group, see shaders/balls/stats.comp
 
 std::string mib(std::size_t bytes) { return std::to_string((bytes + (1 << 20) - 1) >> 20) + " MiB"; }
 }  // namespace
@@ -42,7 +43,7 @@ void Balls::allocate(std::size_t count) {
   }
   m_acc = gl::Buffer(bytes);
   m_permutation = gl::Buffer(std::max<std::size_t>(count, 1) * sizeof(GLuint));
-  m_stats = gl::Buffer(((count + kGroup - 1) / kGroup + 1) * 8 * sizeof(float));
+  m_stats = gl::Buffer(((count + kGroup - 1) / kGroup + 1) * kStatsValues * sizeof(float));
   m_count = count;
 }
 
@@ -236,10 +237,13 @@ Stats Balls::stats() {
   prog.dispatchThreads(m_count);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   const std::size_t groups = (m_count + kGroup - 1) / kGroup;
-  const std::vector<float> partials = m_stats.read<float>(groups * 8);
+  const std::vector<float> partials = m_stats.read<float>(groups * kStatsValues);
+  double front = -1e30, height = -1e30;
   double contacts = 0, overlapSum = 0;
   for (std::size_t g = 0; g < groups; ++g) {
-    const float* x = &partials[g * 8];
+    const float* x = &partials[g * kStatsValues];
+    front = std::max(front, double(x[8]));
+    height = std::max(height, double(x[9]));
     st.kinetic += x[0];
     st.potential += x[1];
     overlapSum += x[2];
@@ -250,6 +254,8 @@ Stats Balls::stats() {
     st.outside += std::size_t(x[7]);
   }
   st.meanOverlap = contacts > 0 ? overlapSum / contacts : 0.0;
+  st.front = front > -1e29 ? front : std::nan("");
+  st.backHeight = height > -1e29 ? height : std::nan("");
   st.contactsPerBall = contacts / double(m_count);
   return st;
 }

@@ -28,6 +28,8 @@ struct Stats {
   double contactsPerBall = 0;
   std::size_t nonFinite = 0;  // balls with NaN or infinite state
   std::size_t outside = 0;    // balls outside the walls
+  double front = 0;           // surge front: largest x of balls within 2r of the floor, m (NaN: none)
+  double backHeight = 0;      // largest z of balls within 2r of the back (x min) wall, m (NaN: none)
 };
 
 class Balls {
