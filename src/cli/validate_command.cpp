@@ -3,9 +3,9 @@
 // surge front in units of the column width a, residual column height in units of its height).
 #include <algorithm>
 #include <cmath>
-#include <iostream>
 #include <cstdio>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 
 #include "cli/commands.h"
@@ -33,7 +33,8 @@ int validate(const std::string& sceneName, const std::string& probeText, int eve
              const std::string& csvPath, const std::string& backend) {
   const std::vector<std::string> probes = parseProbes(probeText);
   const Scene scene = loadScene(resolveScenePath(sceneName));
-  if (scene.model != "balls") throw Error("validate runs balls scenes; '" + scene.name + "' is a " + scene.model + " scene");
+  if (scene.model != "balls")
+    throw Error("validate runs balls scenes; '" + scene.name + "' is a " + scene.model + " scene");
   const balls::Params params = ballsParams(scene);
   auto context = gl::createHeadlessContext({gl::parseBackend(backend), false});
   gl::ShaderLibrary shaders(gl::ShaderLibrary::findRoot());
@@ -68,8 +69,9 @@ int validate(const std::string& sceneName, const std::string& probeText, int eve
       if (has("height")) out << "," << (s.backHeight - params.domainMin.z + model.radius()) / h0;
       out << "\n";
       ++samples;
-      if (s.nonFinite > 0) throw Error("balls diverged by t = " + std::to_string(s.time) + " s: " +
-                                       std::to_string(s.nonFinite) + " balls are NaN (see the CSV)");
+      if (s.nonFinite > 0)
+        throw Error("balls diverged by t = " + std::to_string(s.time) + " s: " + std::to_string(s.nonFinite) +
+                    " balls are NaN (see the CSV)");
     }
     if (model.time() >= until - 1e-12) break;
     model.stepOnce();

@@ -1,5 +1,6 @@
 #include "scene/balls_stage.h"
 
+#include <cmath>
 #include <cstdio>
 
 #include "render/balls_view.h"

@@ -18,33 +18,34 @@ std::string mib(std::size_t bytes) { return std::to_string((bytes + (1 << 20) - 
 
 Balls::Balls(gl::ShaderLibrary& shaders, const Params& params) : m_shaders(shaders), m_params(params) { reset(); }
 
-void Balls::allocate(std::size_t count) {
-  if (count > std::size_t(m_params.maxParticles))
-    throw Error("balls: " + std::to_string(count) +
+void Balls::allocate(std::size_t count, std::size_t capacity) {
+  if (capacity > std::size_t(m_params.maxParticles))
+    throw Error("balls: " + std::to_string(capacity) +
                 " balls requested, more than max_particles = " + std::to_string(m_params.maxParticles));
-  const std::size_t bytes = std::max<std::size_t>(count, 1) * sizeof(glm::vec4);
+  const std::size_t bytes = std::max<std::size_t>(capacity, 1) * sizeof(glm::vec4);
   GLint64 maxBlock = 0;
   glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
   if (bytes > std::size_t(maxBlock))
-    throw Error("balls: " + std::to_string(count) + " balls need " + mib(bytes) +
+    throw Error("balls: " + std::to_string(capacity) + " balls need " + mib(bytes) +
                 " per state array, more than this GPU's storage-buffer limit of " + mib(std::size_t(maxBlock)));
-  const std::size_t total = bytes * 5 + count * 8;
+  const std::size_t total = bytes * 5 + capacity * 8;
   if (GLAD_GL_NVX_gpu_memory_info) {
     GLint freeKb = 0;
     glGetIntegerv(GL_GPU_MEMORY_INFO_CURRENT_AVAILABLE_VIDMEM_NVX, &freeKb);
     if (freeKb > 0 && total > std::size_t(freeKb) * 1024)
-      throw Error("balls: " + std::to_string(count) + " balls need about " + mib(total) + ", but only " +
+      throw Error("balls: " + std::to_string(capacity) + " balls need about " + mib(total) + ", but only " +
                   mib(std::size_t(freeKb) * 1024) + " of GPU memory are free");
   }
-  if (m_count == count && m_pos[0].size() == bytes) return;
+  m_count = count;
+  if (m_capacity == capacity && m_pos[0].size() == bytes) return;
   for (int k = 0; k < 2; ++k) {
     m_pos[k] = gl::Buffer(bytes);
     m_vel[k] = gl::Buffer(bytes);
   }
   m_acc = gl::Buffer(bytes);
-  m_permutation = gl::Buffer(std::max<std::size_t>(count, 1) * sizeof(GLuint));
-  m_stats = gl::Buffer(((count + kGroup - 1) / kGroup + 1) * kStatsValues * sizeof(float));
-  m_count = count;
+  m_permutation = gl::Buffer(std::max<std::size_t>(capacity, 1) * sizeof(GLuint));
+  m_stats = gl::Buffer(((capacity + kGroup - 1) / kGroup + 1) * kStatsValues * sizeof(float));
+  m_capacity = capacity;
 }
 
 void Balls::reset() {
@@ -53,7 +54,9 @@ void Balls::reset() {
     throw Error("balls: domain_max must exceed domain_min on every axis");
   m_radius = p.radius;
   const std::vector<glm::vec4> water = waterParticles(m_params);
-  allocate(water.size());
+  allocate(water.size(), water.size() + (m_params.tap ? std::size_t(m_params.tapMax) : 0));
+  m_tapEmitted = 0;
+  m_tapNextLayer = 0;
   m_pos[0].upload(water.data(), water.size() * sizeof(glm::vec4));
   m_vel[0].fillZero();
   m_acc.fillZero();
@@ -61,12 +64,51 @@ void Balls::reset() {
   m_time = 0;
   m_accValid = false;
   grid::GridParams gp{p.domainMin, p.domainMax, 2.0f * m_radius};
-  m_grid = std::make_unique<grid::UniformGrid>(m_shaders, gp, m_count);
+  m_grid = std::make_unique<grid::UniformGrid>(m_shaders, gp, m_capacity);
   buildObstacle();
   updateWalls();
 }
 
+bool Balls::obstacleEdited() const {
+  const Params& a = m_params;
+  const Params& b = m_builtObstacle;
+  return a.obstacle != b.obstacle || a.obstacleShell != b.obstacleShell || a.obstacleCentre != b.obstacleCentre ||
+         a.obstacleSize != b.obstacleSize;
+}
+
+void Balls::emitFromTap() {
+  const Params& p = m_params;
+  if (!p.tap || m_tapEmitted >= std::size_t(p.tapMax) || m_time < m_tapNextLayer || p.tapSpeed <= 0) return;
+  // One hexagonal layer of the nozzle disc, then wait until the jet has moved on by a spacing.
+  const glm::vec3 dir = glm::length(p.tapDirection) > 0 ? glm::normalize(p.tapDirection) : glm::vec3(0, 0, 1);
+  const glm::vec3 u = glm::normalize(std::abs(dir.z) < 0.9f ? glm::cross(dir, glm::vec3(0, 0, 1))
+                                                            : glm::cross(dir, glm::vec3(1, 0, 0)));
+  const glm::vec3 w = glm::cross(dir, u);
+  const float s = 2.0f * m_radius * 1.02f;
+  std::vector<glm::vec4> pos, vel;
+  const int n = int(std::ceil(p.tapRadius / s));
+  for (int j = -n; j <= n; ++j)
+    for (int i = -n; i <= n; ++i) {
+      const glm::vec2 q((float(i) + 0.5f * float(j & 1)) * s, float(j) * s * 0.8660254f);
+      if (glm::length(q) > p.tapRadius + 1e-6f) continue;
+      if (m_tapEmitted + pos.size() >= std::size_t(p.tapMax) || m_count + pos.size() >= m_capacity) break;
+      pos.emplace_back(p.tapPosition + q.x * u + q.y * w, 1.0f);
+      vel.emplace_back(p.tapSpeed * dir, 0.0f);
+    }
+  if (pos.empty()) return;
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);  // shader writes land before the uploads
+  const std::size_t at = m_count * sizeof(glm::vec4), bytes = pos.size() * sizeof(glm::vec4);
+  m_pos[m_posIndex].upload(pos.data(), bytes, at);
+  m_vel[m_velIndex].upload(vel.data(), bytes, at);
+  const std::vector<glm::vec4> zeros(pos.size(), glm::vec4(0.0f));
+  m_acc.upload(zeros.data(), bytes, at);
+  m_count += pos.size();
+  m_tapEmitted += pos.size();
+  m_tapNextLayer = m_time + s * 0.8165 / p.tapSpeed;  // HCP layer spacing 2r·√(2/3)
+}
+
 void Balls::buildObstacle() {
+  m_builtObstacle = m_params;
   Params p = m_params;
   p.radius = m_radius;
   const std::vector<glm::vec4> particles = obstacleParticles(p);
@@ -195,6 +237,8 @@ void Balls::gridAndCollide(gl::GpuProfiler* profiler, bool verlet, float kick) {
 
 void Balls::stepOnce(gl::GpuProfiler* profiler) {
   updateWalls();
+  if (obstacleEdited()) buildObstacle();  // added, removed, moved or resized while running
+  emitFromTap();
   if (m_count > 0) {
     const bool verlet = m_params.integrator == Integrator::VelocityVerlet;
     if (verlet && !m_accValid) gridAndCollide(nullptr, true, 0.0f);  // a(x0) for the first drift
@@ -268,7 +312,7 @@ std::size_t Balls::bytesPerBall() const {
 
 void Balls::upload(const std::vector<glm::vec4>& pos, const std::vector<glm::vec4>& vel) {
   if (pos.size() != vel.size()) throw Error("balls: upload needs as many velocities as positions");
-  allocate(pos.size());
+  allocate(pos.size(), std::max(pos.size(), m_capacity));
   m_posIndex = m_velIndex = 0;
   m_pos[0].upload(pos.data(), pos.size() * sizeof(glm::vec4));
   m_vel[0].upload(vel.data(), vel.size() * sizeof(glm::vec4));

@@ -65,8 +65,10 @@ class Balls {
   std::vector<GLuint> lastOrder() const;  // lastOrder()[k] = index before the step of ball k after it
 
  private:
-  void allocate(std::size_t count);
+  void allocate(std::size_t count, std::size_t capacity);
   void buildObstacle();
+  bool obstacleEdited() const;  // shape, size or place changed since the last build
+  void emitFromTap();           // appends a layer of balls when the jet has advanced one spacing
   void updateWalls();
   std::vector<gl::ShaderDefine> defines(bool verlet) const;
   void bindCommon(gl::Program& p) const;
@@ -76,7 +78,10 @@ class Balls {
   gl::ShaderLibrary& m_shaders;
   Params m_params;
   float m_radius = 0;
-  std::size_t m_count = 0, m_obstacleCount = 0;
+  std::size_t m_count = 0, m_capacity = 0, m_obstacleCount = 0;
+  std::size_t m_tapEmitted = 0;
+  double m_tapNextLayer = 0;  // simulated time of the next layer
+  Params m_builtObstacle;     // the obstacle parameters of the last build
   gl::Buffer m_pos[2], m_vel[2], m_acc, m_permutation, m_stats;
   int m_posIndex = 0, m_velIndex = 0;
   std::unique_ptr<grid::UniformGrid> m_grid, m_obstacleGrid;

@@ -48,7 +48,16 @@ void visit(ParamVisitor& v, Params& p) {
     v.real({"rotation_rate", "Rotation rate", "degrees per s"}, p.rotationRate, -3600.0f, 3600.0f);
     v.endGroup();
   }
-  if (v.beginGroup({"obstacle", "Obstacle", "fixed particles from a shape"})) {
+  if (v.beginGroup({"tap", "Tap", "emits balls over time"})) {
+    v.flag({"enabled", "Enabled", ""}, p.tap);
+    v.vector({"position", "Position", "nozzle centre, m"}, p.tapPosition, -100.0f, 100.0f);
+    v.vector({"direction", "Direction", "of the jet"}, p.tapDirection, -1.0f, 1.0f);
+    v.real({"speed", "Speed", "m/s"}, p.tapSpeed, 0.0f, 100.0f);
+    v.real({"radius", "Nozzle radius", "m"}, p.tapRadius, 0.0f, 10.0f);
+    v.integer({"max", "Max balls", "the tap stops after adding this many"}, p.tapMax, 0, 1 << 26);
+    v.endGroup();
+  }
+  if (v.beginGroup({"obstacle", "Obstacle", "fixed particles from a shape (rebuilt when edited)"})) {
     v.choice({"shape", "Shape", "none, sphere, box, capsule, cup or helix"}, p.obstacle, kShapeNames);
     v.flag({"shell", "Shell only", "surface shell instead of a solid fill"}, p.obstacleShell);
     v.vector({"centre", "Centre", "m"}, p.obstacleCentre, -100.0f, 100.0f);

@@ -60,6 +60,13 @@ struct Params {
   glm::vec3 obstacleCentre{0.5f, 0.5f, 0.4f};
   glm::vec3 obstacleSize{0.2f, 0.2f, 0.2f};  // half extents / radius (x) and height (z), per shape
   float obstacleSpin = 0.0f;                 // rad/s about the vertical axis through its centre
+  // Tap: emits balls over time (up to tapMax in total) from a disc facing tapDirection
+  bool tap = false;
+  glm::vec3 tapPosition{0.5f, 0.5f, 0.05f};  // m
+  glm::vec3 tapDirection{0.0f, 0.0f, 1.0f};
+  float tapSpeed = 2.5f;    // m/s
+  float tapRadius = 0.04f;  // nozzle radius, m
+  int tapMax = 20000;       // balls the tap adds at most
   // Foam (for the renderer): grows with speed, decays
   float foamGain = 1.0f, foamDecay = 0.997f;  // seed: 10 in its slower units
 };
