@@ -2,36 +2,84 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "render/balls_bindings.glsl"
+
 namespace tidepool {
 
 void visit(ParamVisitor& v, BallsViewParams& p) {
-  v.color({"water_color", "Water colour", "linear RGB"}, p.waterColor);
+  v.choice({"mode", "Mode", "balls: shaded spheres; water: screen-space water surface"}, p.mode, kBallsModeNames);
+  v.choice({"debug", "Debug view", "a G-buffer channel instead of the final picture"}, p.debug, kBallsDebugNames);
+  v.color({"water_color", "Water colour", "linear RGB: ball albedo, water tint"}, p.waterColor);
+  v.real({"absorption", "Absorption", "1/m: this inverse thickness transmits the water colour"}, p.absorption, 0.0f,
+         200.0f);
+  v.real({"blur_radius", "Blur radius", "water: kernel radius in on-screen ball radii"}, p.blurRadius, 0.0f, 8.0f);
+  v.real({"depth_threshold", "Blur depth threshold", "water: ball radii of depth step not blurred across"},
+         p.depthThreshold, 0.1f, 50.0f);
+  v.flag({"foam", "Foam", "white water from each ball's foam"}, p.foam);
+  v.real({"fresnel_f0", "Fresnel F0", "water: reflectance at normal incidence"}, p.fresnelF0, 0.0f, 1.0f);
+  v.real({"specular", "Specular", "key-light highlight strength"}, p.specular, 0.0f, 4.0f);
   v.color({"obstacle_color", "Obstacle colour", "linear RGB"}, p.obstacleColor);
   v.color({"background", "Background", "linear RGB"}, p.background);
   v.flag({"show_box", "Show box", "domain wireframe"}, p.showBox);
   v.flag({"show_obstacle", "Show obstacle", "its fixed particles"}, p.showObstacle);
 }
 
-BallsView::BallsView(gl::ShaderLibrary& shaders) : m_shaders(shaders) {}
+BallsCamera BallsCamera::perspective(glm::mat4 view, float fovYRadians, int width, int height, float near, float far) {
+  BallsCamera c;
+  c.view = view;
+  c.proj = glm::perspective(fovYRadians, float(width) / float(height), near, far);
+  c.width = width;
+  c.height = height;
+  c.near = near;
+  c.far = far;
+  return c;
+}
 
-glm::mat4 BallsView::domainModel(const balls::Balls& model) const {
+BallsView::BallsView(gl::ShaderLibrary& shaders)
+    : m_shaders(shaders), m_gbuffer(shaders), m_blur(shaders), m_compose(shaders) {}
+
+const gl::Texture2D& BallsView::composedSurface() const { return m_blurred ? m_blur.result() : m_gbuffer.surface(); }
+
+BallsScene BallsView::sceneOf(const balls::Balls& model) const {
   // The box turns on screen while gravity stays pointing down (water-webgpu's domain rotation).
   const balls::Params& p = model.params();
   const glm::vec3 centre = 0.5f * (p.domainMin + p.domainMax);
-  glm::mat4 m = glm::translate(glm::mat4(1.0f), centre);
-  m = glm::rotate(m, -model.domainRotation(), glm::vec3(1, 0, 0));
-  return glm::translate(m, -centre);
+  glm::mat4 world = glm::translate(glm::mat4(1.0f), centre);
+  world = glm::rotate(world, -model.domainRotation(), glm::vec3(1, 0, 0));
+  world = glm::translate(world, -centre);
+  // Obstacle frame -> simulation: spin about the vertical axis through its centre.
+  glm::mat4 spin = glm::translate(glm::mat4(1.0f), p.obstacleCentre);
+  spin = glm::rotate(spin, model.obstacleAngle(), glm::vec3(0, 0, 1));
+  spin = glm::translate(spin, -p.obstacleCentre);
+  BallsScene s;
+  s.water = {&model.positions(), &model.velocities(), model.count(), model.radius(), world};
+  s.obstacle = {&model.obstaclePositions(), nullptr, m_params.showObstacle ? model.obstacleCount() : 0, model.radius(),
+                world * spin};
+  s.boxMin = model.wallMin();
+  s.boxMax = model.wallMax();
+  s.boxModel = world;
+  return s;
 }
 
 void BallsView::render(const balls::Balls& model, RenderTarget& target, gl::GpuProfiler& profiler) {
-  auto scope = profiler.scope("balls.view");
   const balls::Params& p = model.params();
   const glm::vec3 centre = 0.5f * (p.domainMin + p.domainMax);
   m_camera.fit(centre, 0.5f * glm::length(p.domainMax - p.domainMin));
-  const glm::mat4 view = m_camera.view();
-  const glm::mat4 proj = m_camera.projection(float(target.width()) / float(target.height()));
-  const glm::mat4 world = domainModel(model);
+  BallsCamera camera;
+  camera.view = m_camera.view();
+  camera.proj = m_camera.projection(float(target.width()) / float(target.height()));
+  camera.width = target.width();
+  camera.height = target.height();
+  // glm::perspective (right-handed, z in -1..1): P[2][2] = -(f+n)/(f-n), P[3][2] = -2fn/(f-n).
+  camera.near = camera.proj[3][2] / (camera.proj[2][2] - 1.0f);
+  camera.far = camera.proj[3][2] / (camera.proj[2][2] + 1.0f);
+  render(sceneOf(model), camera, target, profiler);
+}
+
+void BallsView::drawScene(const BallsScene& scene, const BallsCamera& camera, RenderTarget& target) {
   target.bind();
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthMask(GL_TRUE);
   glClearColor(m_params.background.r, m_params.background.g, m_params.background.b, 1.0f);
   glClearDepth(1.0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -39,42 +87,52 @@ void BallsView::render(const balls::Balls& model, RenderTarget& target, gl::GpuP
   glDepthFunc(GL_LESS);
   glDisable(GL_BLEND);
   m_vao.bind();
-  gl::Program& balls = m_shaders.program({"render/balls_impostor.vert", "render/balls_impostor.frag"});
-  balls.use();
-  balls.set("uView", view);
-  balls.set("uProj", proj);
-  balls.set("uRadius", model.radius());
-  balls.set("uLightView", glm::normalize(glm::vec3(view * glm::vec4(0.5f, 0.3f, 1.0f, 0.0f))));
-  if (model.count() > 0) {
-    balls.set("uModel", world);
-    balls.set("uColor", m_params.waterColor);
-    balls.set("uHasVelocity", 1);
-    model.positions().bindBase(GL_SHADER_STORAGE_BUFFER, 0);
-    model.velocities().bindBase(GL_SHADER_STORAGE_BUFFER, 1);
-    glDrawArrays(GL_TRIANGLES, 0, GLsizei(6 * model.count()));
-  }
-  if (m_params.showObstacle && model.obstacleCount() > 0) {
-    // Obstacle frame -> simulation: spin about the vertical axis through its centre.
-    glm::mat4 spin = glm::translate(glm::mat4(1.0f), p.obstacleCentre);
-    spin = glm::rotate(spin, model.obstacleAngle(), glm::vec3(0, 0, 1));
-    spin = glm::translate(spin, -p.obstacleCentre);
-    balls.set("uModel", world * spin);
+  if (scene.obstacle.count > 0) {
+    gl::Program& balls = m_shaders.program({"render/balls_impostor.vert", "render/balls_impostor.frag"});
+    balls.use();
+    balls.set("uView", camera.view);
+    balls.set("uProj", camera.proj);
+    balls.set("uRadius", scene.obstacle.radius);
+    balls.set("uLightView", glm::normalize(glm::vec3(camera.view * glm::vec4(0.5f, 0.3f, 1.0f, 0.0f))));
+    balls.set("uModel", scene.obstacle.model);
     balls.set("uColor", m_params.obstacleColor);
     balls.set("uHasVelocity", 0);
-    model.obstaclePositions().bindBase(GL_SHADER_STORAGE_BUFFER, 0);
-    glDrawArrays(GL_TRIANGLES, 0, GLsizei(6 * model.obstacleCount()));
+    scene.obstacle.positions->bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VIEW_POSITIONS);
+    glDrawArrays(GL_TRIANGLES, 0, GLsizei(6 * scene.obstacle.count));
   }
   if (m_params.showBox) {
     gl::Program& lines = m_shaders.program({"render/box_lines.vert", "render/flat_color.frag"});
     lines.use();
-    lines.set("uMin", model.wallMin());
-    lines.set("uMax", model.wallMax());
-    lines.set("uViewProjModel", proj * view * world);
+    lines.set("uMin", scene.boxMin);
+    lines.set("uMax", scene.boxMax);
+    lines.set("uViewProjModel", camera.proj * camera.view * scene.boxModel);
     lines.set("uColor", glm::vec4(0.7f, 0.72f, 0.75f, 1.0f));
     glDrawArrays(GL_LINES, 0, 24);
   }
   glDisable(GL_DEPTH_TEST);
   glBindVertexArray(0);
+}
+
+void BallsView::render(const BallsScene& scene, const BallsCamera& camera, RenderTarget& target,
+                       gl::GpuProfiler& profiler) {
+  const bool water = m_params.mode == BallsMode::Water;
+  {
+    auto scope = profiler.scope("balls.scene");
+    drawScene(scene, camera, target);
+  }
+  if (scene.water.count == 0) return;
+  const bool thickness = water || m_params.debug == BallsDebug::Thickness;
+  m_gbuffer.draw(scene.water, camera, target.depth(), thickness, profiler);
+  m_blurred = water && m_params.blurRadius > 0.0f;
+  if (m_blurred) {
+    auto scope = profiler.scope("balls.blur");
+    // Kernel radius in px of a ball 1 m away: scale x r x focal length in px.
+    const float focalPx = 0.5f * float(camera.height) * camera.proj[1][1];
+    m_blur.run(m_gbuffer.surface(), m_params.blurRadius * scene.water.radius * focalPx,
+               m_params.depthThreshold * scene.water.radius);
+  }
+  auto scope = profiler.scope("balls.compose");
+  m_compose.draw(composedSurface(), m_gbuffer, m_params, camera, scene.water.radius, target);
 }
 
 }  // namespace tidepool

@@ -1,39 +1,49 @@
-// Renderer of the balls model, "balls" mode: sphere impostors read straight from the model's
-// position SSBO (true per-pixel sphere depth), the obstacle's fixed particles in grey, and the
-// domain box (walls where they are now). The screen-space water mode builds on this (issue 6).
+// Deferred renderer of the balls model (issue 6), after water-webgpu's sphere renderer without
+// its shortcuts. It only reads the model's SSBOs. One frame:
+//   1. scene:     obstacle balls (opaque grey impostors) and the domain box into the target
+//   2. gbuffer:   ray-traced sphere impostors -> normal xy, view depth, foam, exact depth
+//   3. thickness: the same spheres, additive into B, depth-tested against the scene
+//                 (water mode, and the thickness debug view)
+//   4. blur:      water mode only, depth-aware separable Gaussian (two compute passes)
+//   5. compose:   shading (balls or water) or a debug view, with depth, into the target
 #pragma once
 
-#include "gl/framebuffer.h"
 #include "gl/gpu_profiler.h"
 #include "gl/shader_library.h"
+#include "render/balls_compose.h"
+#include "render/balls_gbuffer.h"
 #include "render/orbit_camera.h"
 #include "render/target.h"
-#include "scene/param.h"
+#include "render/water_blur.h"
 #include "sim/balls/balls.h"
 
 namespace tidepool {
-
-struct BallsViewParams {
-  glm::vec3 waterColor{0.18f, 0.45f, 0.91f};  // linear RGB (water-webgpu's ball colour)
-  glm::vec3 obstacleColor{0.55f, 0.55f, 0.58f};
-  glm::vec3 background{0.09f, 0.10f, 0.12f};
-  bool showBox = true;
-  bool showObstacle = true;
-};
-void visit(ParamVisitor& v, BallsViewParams& p);
 
 class BallsView {
  public:
   explicit BallsView(gl::ShaderLibrary& shaders);
   BallsViewParams& params() { return m_params; }
   OrbitCamera& camera() { return m_camera; }
+  // The model's balls, obstacle and walls from the orbit camera (near/far fitted to the domain).
   void render(const balls::Balls& model, RenderTarget& target, gl::GpuProfiler& profiler);
+  // Any spheres from any camera (tests, benchmarks); camera size = target size.
+  void render(const BallsScene& scene, const BallsCamera& camera, RenderTarget& target, gl::GpuProfiler& profiler);
+
+  // Read-only, for tests and debugging: the last frame's G-buffer and the surface compose read
+  // (the blurred one in water mode).
+  const BallsGBuffer& gbuffer() const { return m_gbuffer; }
+  const gl::Texture2D& composedSurface() const;
 
  private:
-  glm::mat4 domainModel(const balls::Balls& model) const;  // simulation -> world
+  void drawScene(const BallsScene& scene, const BallsCamera& camera, RenderTarget& target);
+  BallsScene sceneOf(const balls::Balls& model) const;
   gl::ShaderLibrary& m_shaders;
   BallsViewParams m_params;
   OrbitCamera m_camera;
+  BallsGBuffer m_gbuffer;
+  WaterBlur m_blur;
+  BallsCompose m_compose;
+  bool m_blurred = false;  // the last frame composed the blurred surface
   gl::VertexArray m_vao = gl::VertexArray::create();
 };
 

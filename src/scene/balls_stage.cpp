@@ -85,6 +85,15 @@ balls::Params ballsParams(const Scene& scene) {
   return model;
 }
 
+void ballsView(const Scene& scene, BallsViewParams& look, OrbitCameraParams& camera) {
+  balls::Params model;
+  ViewSettings view;
+  readParams(
+      scene.params, [&](ParamVisitor& v) { visitAll(v, model, view); }, scene.file.string() + ": params");
+  look = view.look;
+  camera = view.camera;
+}
+
 std::unique_ptr<Stage> createBallsStage(const io::Json& params, const std::string& where, gl::ShaderLibrary& shaders) {
   balls::Params model;
   ViewSettings view;

@@ -2,6 +2,8 @@
 // drag pans, wheel zooms). Live statistics are refreshed every few frames for the status line.
 #pragma once
 
+#include "render/balls_view_params.h"
+#include "render/orbit_camera.h"
 #include "scene/scene.h"
 #include "scene/stage.h"
 #include "sim/balls/balls_params.h"
@@ -10,6 +12,9 @@ namespace tidepool {
 
 // The balls model's parameters of a scene (its "view" group is read and dropped).
 balls::Params ballsParams(const Scene& scene);
+
+// The look and camera of a balls scene's "view" group (benchmarks render without a stage).
+void ballsView(const Scene& scene, BallsViewParams& look, OrbitCameraParams& camera);
 
 std::unique_ptr<Stage> createBallsStage(const io::Json& params, const std::string& where, gl::ShaderLibrary& shaders);
 

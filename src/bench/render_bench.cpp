@@ -1,0 +1,111 @@
+// `tidepool bench render [scene] --n 1M --size 1920x1080`: median GPU ms per pass of the balls
+// renderer (scene, gbuffer, thickness, blur, compose) in both modes, simulation excluded. The
+// balls are the scene's (--n sets the count of lattice scenes), settled for a few steps first so
+// they are not a perfect lattice, and seen from the scene's camera.
+#include <chrono>
+#include <cstdio>
+#include <map>
+#include <regex>
+
+#include "base/error.h"
+#include "bench/bench.h"
+#include "render/balls_view.h"
+#include "scene/balls_stage.h"
+#include "sim/balls/balls.h"
+
+namespace tidepool::bench {
+namespace {
+
+struct Options {
+  std::string scene = "bench-lattice", sizes = "1M", image = "1920x1080";
+  int settle = 20;  // simulation steps before timing
+};
+
+glm::ivec2 parseImage(const std::string& text) {
+  static const std::regex form(R"((\d+)x(\d+))");
+  std::smatch m;
+  if (!std::regex_match(text, m, form) || std::stoi(m[1]) <= 0 || std::stoi(m[2]) <= 0)
+    throw Error("--size '" + text + "' is not WIDTHxHEIGHT (e.g. 1920x1080)");
+  return {std::stoi(m[1]), std::stoi(m[2])};
+}
+
+constexpr const char* kPasses[] = {"balls.scene", "balls.gbuffer", "balls.thickness", "balls.blur", "balls.compose"};
+
+int run(Env& env, const Options& o) {
+  const Scene scene = loadScene(resolveScenePath(o.scene));
+  const balls::Params base = ballsParams(scene);
+  BallsViewParams look;
+  OrbitCameraParams camera;
+  ballsView(scene, look, camera);
+  const glm::ivec2 image = parseImage(o.image);
+  const bool lattice = base.fill == balls::Fill::Lattice;
+  const bool software = softwareRenderer();
+  std::printf("render benchmark on %s: scene %s, %dx%d, %d settling steps, medians of %d frames\n", env.device.c_str(),
+              scene.name.c_str(), image.x, image.y, o.settle, env.common.repeats);
+  Table table({"balls", "mode", "scene ms", "gbuffer ms", "thickness ms", "blur ms", "compose ms", "frame ms"});
+  const std::vector<std::size_t> counts = lattice ? parseSizes(o.sizes) : std::vector<std::size_t>{0};
+  for (std::size_t n : counts) {
+    balls::Params p = base;
+    if (lattice) p.latticeCount = int(n);
+    balls::Balls model(env.shaders, p);
+    for (int i = 0; i < o.settle; ++i) model.stepOnce();
+    RenderTarget target(image.x, image.y);
+    BallsView view(env.shaders);
+    view.params() = look;
+    view.camera().params() = camera;
+    for (BallsMode mode : {BallsMode::Balls, BallsMode::Water}) {
+      view.params().mode = mode;
+      gl::GpuProfiler profiler;
+      std::vector<double> wall;
+      for (int frame = 0; frame < env.common.warmup + env.common.repeats; ++frame) {
+        const bool timed = frame >= env.common.warmup;
+        if (software) glFinish();
+        const auto start = std::chrono::steady_clock::now();
+        profiler.beginFrame();
+        view.render(model, target, profiler);
+        profiler.endFrame();
+        if (software) glFinish();
+        if (timed && software)
+          wall.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+        if (frame + 1 == env.common.warmup) {
+          profiler.finish();
+          profiler.takeCompleted();  // warm-up frames are not timed
+        }
+      }
+      profiler.finish();
+      std::map<std::string, std::vector<double>> passes;
+      std::vector<double> totals;
+      for (const auto& frame : profiler.takeCompleted()) {
+        double total = 0;
+        for (const auto& [name, ms] : frame.passes) {
+          passes[name].push_back(ms);
+          total += ms;
+        }
+        totals.push_back(total);
+      }
+      std::vector<std::string> row = {std::to_string(model.count()), kBallsModeNames[int(mode)]};
+      for (const char* pass : kPasses) row.push_back(passes.count(pass) ? fixed(median(passes[pass]), 4) : "-");
+      row.push_back(fixed(software ? median(wall) : median(totals), 4));
+      table.add(row);
+    }
+  }
+  table.print();
+  if (const std::string caveat = timingCaveat(env.device); !caveat.empty())
+    std::printf("%s; frame ms is the wall clock there\n", caveat.c_str());
+  if (!env.common.csv.empty()) table.writeCsv(env.common.csv);
+  return 0;
+}
+
+}  // namespace
+
+Benchmark addRenderBench(CLI::App& bench) {
+  auto* sub = bench.add_subcommand("render", "balls renderer: ms per pass in balls and water modes");
+  auto o = std::make_shared<Options>();
+  sub->add_option("scene", o->scene, "balls scene (default bench-lattice)");
+  sub->add_option("--n", o->sizes, "ball counts for lattice scenes, e.g. 65536,1M");
+  sub->add_option("--size", o->image, "image WIDTHxHEIGHT (default 1920x1080)");
+  sub->add_option("--settle", o->settle, "simulation steps before timing (default 20)");
+  return {sub, [o](Env& env) { return run(env, *o); }};
+}
+
+}  // namespace tidepool::bench

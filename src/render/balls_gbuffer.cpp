@@ -1,0 +1,75 @@
+#include "render/balls_gbuffer.h"
+
+#include "render/balls_bindings.glsl"
+
+namespace tidepool {
+
+BallsGBuffer::BallsGBuffer(gl::ShaderLibrary& shaders) : m_shaders(shaders) {}
+
+void BallsGBuffer::resize(int width, int height) {
+  if (m_surface && m_surface.width() == width && m_surface.height() == height) return;
+  m_surface = gl::Texture2D(width, height, GL_RGBA16F);
+  m_foam = gl::Texture2D(width, height, GL_R16F);
+  m_depth = gl::Texture2D(width, height, GL_DEPTH_COMPONENT32F);
+  for (gl::Texture2D* t : {&m_surface, &m_foam, &m_depth}) t->setFilter(GL_NEAREST, GL_NEAREST);
+  m_impostorFbo = gl::Framebuffer({&m_surface, &m_foam}, &m_depth);
+  m_thicknessFbo = gl::Framebuffer();
+  m_thicknessDepthId = 0;
+}
+
+void BallsGBuffer::drawSpheres(gl::Program& program, const SphereBatch& balls, const BallsCamera& camera) {
+  program.use();
+  program.set("uModelView", camera.view * balls.model);
+  program.set("uProj", camera.proj);
+  program.set("uRadius", balls.radius);
+  program.set("uHasFoam", balls.velocities ? 1 : 0);
+  balls.positions->bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VIEW_POSITIONS);
+  if (balls.velocities) balls.velocities->bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VIEW_VELOCITIES);
+  glDrawArrays(GL_TRIANGLES, 0, GLsizei(6 * balls.count));
+}
+
+void BallsGBuffer::draw(const SphereBatch& balls, const BallsCamera& camera, const gl::Texture2D& sceneDepth,
+                        bool thickness, gl::GpuProfiler& profiler) {
+  resize(camera.width, camera.height);
+  m_vao.bind();
+  glDisable(GL_BLEND);
+  {
+    auto scope = profiler.scope("balls.gbuffer");
+    m_impostorFbo.bind();
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDepthMask(GL_TRUE);
+    const float zero[4] = {0, 0, 0, 0};
+    const float one = 1.0f;
+    glClearBufferfv(GL_COLOR, 0, zero);
+    glClearBufferfv(GL_COLOR, 1, zero);
+    glClearBufferfv(GL_DEPTH, 0, &one);
+    if (balls.count > 0) {
+      glEnable(GL_DEPTH_TEST);
+      glDepthFunc(GL_LESS);
+      glColorMaski(0, GL_TRUE, GL_TRUE, GL_FALSE, GL_TRUE);  // B is the thickness pass's
+      drawSpheres(m_shaders.program({"render/balls_gbuffer.vert", "render/balls_gbuffer.frag"}), balls, camera);
+    }
+  }
+  if (thickness && balls.count > 0) {
+    auto scope = profiler.scope("balls.thickness");
+    if (m_thicknessDepthId != sceneDepth.id()) {
+      m_thicknessFbo = gl::Framebuffer({&m_surface}, &sceneDepth);
+      m_thicknessDepthId = sceneDepth.id();
+    }
+    m_thicknessFbo.bind();
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_FALSE);
+    glColorMaski(0, GL_FALSE, GL_FALSE, GL_TRUE, GL_FALSE);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE);
+    drawSpheres(m_shaders.program({"render/balls_gbuffer.vert", "render/balls_thickness.frag"}), balls, camera);
+    glDisable(GL_BLEND);
+  }
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_DEPTH_TEST);
+  glBindVertexArray(0);
+}
+
+}  // namespace tidepool

@@ -1,0 +1,40 @@
+// The balls' G-buffer and the two sphere passes that fill it (after water-webgpu's deferred
+// sphere renderer, with float depth instead of its 8-bit one):
+//   surface  RGBA16F  RG = view-space normal xy of the nearest ball (its billboard-local position),
+//                     B = water thickness along the eye ray (m, additive), A = view depth (m, 0 = empty)
+//   foam     R16F     the nearest ball's foam
+//   depth    DEPTH32F the nearest ball's window depth (exact; the compose pass writes it)
+// Pass 1 (impostors) writes R, G, A and foam with its own depth test; pass 2 (thickness) writes B
+// only, blending ONE + ONE and depth-testing against the scene's depth without writing it.
+#pragma once
+
+#include "gl/framebuffer.h"
+#include "gl/gpu_profiler.h"
+#include "gl/shader_library.h"
+#include "render/balls_view_params.h"
+
+namespace tidepool {
+
+class BallsGBuffer {
+ public:
+  explicit BallsGBuffer(gl::ShaderLibrary& shaders);
+  void resize(int width, int height);  // no-op when unchanged
+  // Clears, then draws the impostor pass and, when `thickness`, the thickness pass against
+  // `sceneDepth` (the opaque meshes' DEPTH32F, same size).
+  void draw(const SphereBatch& balls, const BallsCamera& camera, const gl::Texture2D& sceneDepth, bool thickness,
+            gl::GpuProfiler& profiler);
+
+  const gl::Texture2D& surface() const { return m_surface; }
+  const gl::Texture2D& foam() const { return m_foam; }
+  const gl::Texture2D& depth() const { return m_depth; }
+
+ private:
+  void drawSpheres(gl::Program& program, const SphereBatch& balls, const BallsCamera& camera);
+  gl::ShaderLibrary& m_shaders;
+  gl::Texture2D m_surface, m_foam, m_depth;
+  gl::Framebuffer m_impostorFbo, m_thicknessFbo;
+  GLuint m_thicknessDepthId = 0;  // the scene depth m_thicknessFbo was built with
+  gl::VertexArray m_vao = gl::VertexArray::create();
+};
+
+}  // namespace tidepool

@@ -1,0 +1,62 @@
+// What the deferred balls renderer draws and how: the look (a scene's "view" group), the camera
+// of one frame, and the batches of spheres it reads straight from simulation SSBOs.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <glm/glm.hpp>
+
+#include "gl/buffer.h"
+#include "scene/param.h"
+
+namespace tidepool {
+
+enum class BallsMode { Balls, Water };
+inline constexpr std::array<const char*, 2> kBallsModeNames = {"balls", "water"};
+enum class BallsDebug { Final, Local, Normals, Thickness, Depth };
+inline constexpr std::array<const char*, 5> kBallsDebugNames = {"final", "local", "normals", "thickness", "depth"};
+
+struct BallsViewParams {
+  BallsMode mode = BallsMode::Balls;
+  BallsDebug debug = BallsDebug::Final;
+  glm::vec3 waterColor{0.18f, 0.45f, 0.91f};  // linear RGB: balls' albedo, water's tint (water-webgpu)
+  float absorption = 20.0f;                   // 1/m: thickness 1/absorption transmits waterColor
+  float blurRadius = 2.5f;                    // blur kernel radius, in on-screen ball radii
+  float depthThreshold = 3.0f;                // ball radii: no blur across larger view-depth steps
+  bool foam = true;                           // white water from the per-ball foam
+  float fresnelF0 = 0.02f;                    // reflectance at normal incidence (water)
+  float specular = 0.6f;                      // key-light highlight strength
+  glm::vec3 obstacleColor{0.55f, 0.55f, 0.58f};
+  glm::vec3 background{0.09f, 0.10f, 0.12f};
+  bool showBox = true;
+  bool showObstacle = true;
+};
+void visit(ParamVisitor& v, BallsViewParams& p);
+
+// One frame's camera: view and projection matrices, image size and the depth range (m).
+struct BallsCamera {
+  glm::mat4 view{1.0f}, proj{1.0f};
+  int width = 1, height = 1;
+  float near = 0.1f, far = 10.0f;
+  static BallsCamera perspective(glm::mat4 view, float fovYRadians, int width, int height, float near, float far);
+};
+
+// Spheres of one radius whose centres are vec4s in an SSBO (w unused), optionally with foam in
+// the w of a velocity SSBO; `model` maps their frame to the world.
+struct SphereBatch {
+  const gl::Buffer* positions = nullptr;
+  const gl::Buffer* velocities = nullptr;  // null: no foam
+  std::size_t count = 0;
+  float radius = 0.01f;  // m
+  glm::mat4 model{1.0f};
+};
+
+// Everything in a frame: the water balls, the obstacle's fixed balls and the domain box.
+struct BallsScene {
+  SphereBatch water;
+  SphereBatch obstacle;  // count 0: none
+  glm::vec3 boxMin{0.0f}, boxMax{1.0f};
+  glm::mat4 boxModel{1.0f};
+};
+
+}  // namespace tidepool

@@ -1,0 +1,34 @@
+#include "render/water_blur.h"
+
+#include <string>
+
+#include "render/balls_bindings.glsl"
+
+namespace tidepool {
+
+void WaterBlur::pass(int axis, const gl::Texture2D& from, const gl::Texture2D& to, float pixelRadius,
+                     float depthThreshold) {
+  gl::Program& program = m_shaders.program({"render/water_blur.comp"}, {{"AXIS", std::to_string(axis)}});
+  program.use();
+  program.set("uPixelRadius", pixelRadius);
+  program.set("uDepthThreshold", depthThreshold);
+  from.bind(BALLS_VIEW_BLUR_IN);
+  to.bindImage(BALLS_VIEW_BLUR_OUT, GL_WRITE_ONLY, GL_RGBA16F);
+  const int useful = kGroup - 2 * kApron;  // outputs per work group
+  const int along = axis == 0 ? from.width() : from.height();
+  const int lines = axis == 0 ? from.height() : from.width();
+  program.dispatch({unsigned((along + useful - 1) / useful), unsigned(lines), 1u});
+  // The next pass (or the compose pass, or a read-back) samples what this one stored.
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+}
+
+void WaterBlur::run(const gl::Texture2D& source, float pixelRadius, float depthThreshold) {
+  if (!m_out || m_out.width() != source.width() || m_out.height() != source.height()) {
+    m_rows = gl::Texture2D(source.width(), source.height(), GL_RGBA16F);
+    m_out = gl::Texture2D(source.width(), source.height(), GL_RGBA16F);
+  }
+  pass(0, source, m_rows, pixelRadius, depthThreshold);
+  pass(1, m_rows, m_out, pixelRadius, depthThreshold);
+}
+
+}  // namespace tidepool

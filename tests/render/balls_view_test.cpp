@@ -1,0 +1,141 @@
+// The deferred balls renderer against analytic values: one ray-traced sphere has the exact front
+// depth and silhouette; thickness adds up along the eye ray and stops at opaque meshes; the
+// water blur smooths flat regions but not across depth steps.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+#include <random>
+
+#include "render/balls_view.h"
+#include "support/gl_test.h"
+
+using namespace tidepool;
+
+namespace {
+
+class BallsViewTest : public test::GlTest {};
+
+constexpr int kSize = 65;  // odd: the centre pixel's centre is on the optical axis
+constexpr float kFov = glm::radians(60.0f), kNear = 0.5f, kFar = 10.0f;
+
+BallsCamera axisCamera() { return BallsCamera::perspective(glm::mat4(1.0f), kFov, kSize, kSize, kNear, kFar); }
+
+// Eye at the origin looking down -z: balls at (0, 0, -distance).
+gl::Buffer ballsAt(const std::vector<float>& distances) {
+  std::vector<glm::vec4> pos;
+  for (float d : distances) pos.emplace_back(0.0f, 0.0f, -d, 1.0f);
+  return gl::Buffer(std::span<const glm::vec4>(pos));
+}
+
+std::vector<glm::vec4> pixels(const gl::Texture2D& t) {
+  std::vector<glm::vec4> out(std::size_t(t.width()) * t.height());
+  t.download(GL_RGBA, GL_FLOAT, out.data());
+  return out;
+}
+
+float linearDepth(float window) {  // glm::perspective, window depth 0..1 -> view distance (m)
+  const float ndc = 2.0f * window - 1.0f;
+  return 2.0f * kNear * kFar / (kFar + kNear - ndc * (kFar - kNear));
+}
+
+struct Frame {
+  BallsView view;
+  RenderTarget target{kSize, kSize};
+  gl::GpuProfiler profiler;
+  explicit Frame(gl::ShaderLibrary& shaders, BallsMode mode = BallsMode::Water) : view(shaders) {
+    view.params().mode = mode;
+    view.params().showBox = false;
+  }
+  void render(const gl::Buffer& water, std::size_t n, float r, const gl::Buffer* obstacle = nullptr,
+              std::size_t obstacleCount = 0, float obstacleRadius = 0) {
+    BallsScene scene;
+    scene.water = {&water, nullptr, n, r, glm::mat4(1.0f)};
+    if (obstacle) scene.obstacle = {obstacle, nullptr, obstacleCount, obstacleRadius, glm::mat4(1.0f)};
+    view.render(scene, axisCamera(), target, profiler);
+  }
+  glm::vec4 centre() const { return pixels(view.gbuffer().surface())[std::size_t(kSize / 2) * kSize + kSize / 2]; }
+};
+
+}  // namespace
+
+TEST_F(BallsViewTest, OneSphereHasTheAnalyticFrontDepthAndSilhouette) {
+  const float d = 2.0f, r = 0.5f;
+  const gl::Buffer ball = ballsAt({d});
+  Frame f(shaders(), BallsMode::Balls);
+  f.render(ball, 1, r);
+  std::vector<float> depth(std::size_t(kSize) * kSize);
+  f.view.gbuffer().depth().download(GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+  const std::size_t centre = std::size_t(kSize / 2) * kSize + kSize / 2;
+  EXPECT_NEAR(linearDepth(depth[centre]), d - r, 1e-3f) << "front point of the sphere, linearised";
+  EXPECT_NEAR(f.centre().a, d - r, 2e-3f) << "G-buffer view depth (16-bit float)";
+  // Silhouette: the tangent cone's half-angle a (sin a = r/d) projects to tan(a) * focal px.
+  const float focalPx = 0.5f * kSize / std::tan(0.5f * kFov);
+  const float expected = r / std::sqrt(d * d - r * r) * focalPx;
+  int covered = 0;
+  for (float z : depth) covered += z < 1.0f;
+  EXPECT_NEAR(std::sqrt(covered / float(M_PI)), expected, 1.0f) << "silhouette radius, px";
+  int row = 0;
+  for (int x = 0; x < kSize; ++x) row += depth[std::size_t(kSize / 2) * kSize + x] < 1.0f;
+  EXPECT_NEAR(0.5f * row, expected, 1.0f) << "half the centre row's covered width, px";
+}
+
+TEST_F(BallsViewTest, CoincidentSpheresAddTheirThickness) {
+  const float r = 0.3f;
+  const gl::Buffer one = ballsAt({2.0f}), three = ballsAt({2.0f, 2.0f, 2.0f});
+  Frame f(shaders());
+  f.render(one, 1, r);
+  const float single = f.centre().b;
+  EXPECT_NEAR(single, 2.0f * r, 2e-3f) << "the chord through the centre is the diameter";
+  f.render(three, 3, r);
+  EXPECT_NEAR(f.centre().b, 3.0f * single, 6e-3f);
+}
+
+TEST_F(BallsViewTest, ASphereBehindAnOpaqueMeshAddsNoThickness) {
+  const float r = 0.3f;
+  const gl::Buffer water = ballsAt({3.0f, 1.2f}), wall = ballsAt({2.0f});
+  Frame f(shaders());
+  f.render(water, 1, r, &wall, 1, 0.5f);  // only the ball behind the obstacle
+  EXPECT_EQ(f.centre().b, 0.0f);
+  f.render(water, 2, r, &wall, 1, 0.5f);  // plus one in front of it: only that one counts
+  EXPECT_NEAR(f.centre().b, 2.0f * r, 2e-3f);
+}
+
+TEST_F(BallsViewTest, BlurSmoothsFlatRegionsAndKeepsDepthSteps) {
+  // Left half at 1 m (R around 0.3), right half at 2 m (R around 0.7), both with noise.
+  const int w = 96, h = 32, step = 48;
+  std::vector<glm::vec4> in(std::size_t(w) * h);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> noise(-0.1f, 0.1f);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const bool left = x < step;
+      in[std::size_t(y) * w + x] = {(left ? 0.3f : 0.7f) + noise(rng), 0.0f, (left ? 0.2f : 0.6f) + noise(rng),
+                                    left ? 1.0f : 2.0f};
+    }
+  gl::Texture2D source(w, h, GL_RGBA32F);
+  source.upload(GL_RGBA, GL_FLOAT, in.data());
+  WaterBlur blur(shaders());
+  blur.run(source, 8.0f, 0.5f);  // 8 px kernel at 1 m, 4 px at 2 m; steps over 0.5 m kept
+  const std::vector<glm::vec4> out = pixels(blur.result());
+  auto variance = [&](const std::vector<glm::vec4>& img) {
+    double sum = 0, sum2 = 0;
+    int n = 0;
+    for (int y = 8; y < h - 8; ++y)
+      for (int x = 10; x < step - 10; ++x) {
+        const double v = img[std::size_t(y) * w + x].r;
+        sum += v, sum2 += v * v, ++n;
+      }
+    return sum2 / n - (sum / n) * (sum / n);
+  };
+  EXPECT_LT(variance(out), 0.2 * variance(in)) << "a flat region is smoothed";
+  for (int y = 0; y < h; ++y) {
+    const glm::vec4 a = out[std::size_t(y) * w + step - 1], b = out[std::size_t(y) * w + step];
+    EXPECT_EQ(a.a, 1.0f) << "depth is kept";
+    EXPECT_EQ(b.a, 2.0f);
+    EXPECT_NEAR(a.r, 0.3f, 0.1f) << "row " << y << ": the near layer keeps its value at the step";
+    EXPECT_NEAR(b.r, 0.7f, 0.1f) << "row " << y << ": the far layer keeps its value at the step";
+    EXPECT_NEAR(a.b, 0.2f, 0.1f);
+    EXPECT_NEAR(b.b, 0.6f, 0.1f);
+  }
+}
