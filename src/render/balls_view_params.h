@@ -21,7 +21,7 @@ struct BallsViewParams {
   BallsDebug debug = BallsDebug::Final;
   glm::vec3 waterColor{0.18f, 0.45f, 0.91f};  // linear RGB: balls' albedo, water's tint (water-webgpu)
   float absorption = 20.0f;                   // 1/m: thickness 1/absorption transmits waterColor
-  float blurRadius = 2.5f;                    // blur kernel radius, in on-screen ball radii
+  float blurRadius = 4.0f;                    // blur kernel radius, in on-screen ball radii
   float depthThreshold = 3.0f;                // ball radii: no blur across larger view-depth steps
   bool foam = true;                           // white water from the per-ball foam
   float fresnelF0 = 0.02f;                    // reflectance at normal incidence (water)
