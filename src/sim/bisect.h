@@ -6,7 +6,8 @@
 namespace tidepool {
 
 // Assumes isStable(stable) and !isStable(unstable); stops at a relative width of `tolerance`.
-inline double bisectLimit(double stable, double unstable, double tolerance, const std::function<bool(double)>& isStable) {
+inline double bisectLimit(double stable, double unstable, double tolerance,
+                          const std::function<bool(double)>& isStable) {
   while ((unstable - stable) / stable > tolerance) {
     const double mid = 0.5 * (stable + unstable);
     (isStable(mid) ? stable : unstable) = mid;

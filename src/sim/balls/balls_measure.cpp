@@ -34,7 +34,8 @@ Bounce measureBounce(gl::ShaderLibrary& shaders, Integrator integrator, float e,
   for (int i = 0; i < int(20 * stepsPerContact) + 100; ++i) {
     b.stepOnce();
     const glm::vec4 x = b.downloadPositions()[0];
-    if (x.z < p.radius) ++result.contactSteps;
+    if (x.z < p.radius)
+      ++result.contactSteps;
     else if (result.contactSteps > 0) {
       result.restitution = b.downloadVelocities()[0].z;  // v_in = 1 m/s
       break;
