@@ -7,6 +7,7 @@
 #include <imgui.h>
 
 #include <chrono>
+#include <cmath>
 #include <ctime>
 
 #include "app/ui_panels.h"
@@ -156,6 +157,10 @@ int runWindow(const WindowJob& job) {
     if (!ui.paused || std::exchange(ui.stepOnce, false)) stage->step(kFrameSeconds, profiler);
     stage->render(target, profiler);
     profiler.endFrame();
+    {
+      const double metric = stage->liveMetric().second;
+      ui.history.push(float(profiler.totalMs()), std::isfinite(metric) ? float(metric) : 0.0f);
+    }
     if (const auto d = stage->divergence(); d && ui.divergence.empty()) {
       ui.divergence = d->message;
       log::error(d->message);

@@ -3,6 +3,7 @@
 // the same way: step() advances one frame of simulated time, render() draws it.
 #pragma once
 
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -35,6 +36,8 @@ class Stage {
   // two late), can go back to its last good state with half the time step, and settles the
   // check still in flight at the end of a headless run.
   virtual std::optional<DivergenceReport> divergence() const { return std::nullopt; }
+  // The model's current error metric for the live plot (name with units, value); NaN: none yet.
+  virtual std::pair<std::string, double> liveMetric() const { return {"", NAN}; }
   virtual bool recover() { return false; }
   virtual void flushChecks() {}
 };

@@ -23,9 +23,11 @@ double msPerStep(gl::ShaderLibrary& shaders, int n, balls::Integrator integrator
   balls::Balls model(shaders, p);
   const bench::Common timing{"auto", "", 5, 2};
   constexpr int kSteps = 5;
-  return bench::gpuMedianMs(timing, [&] {
-           for (int i = 0; i < kSteps; ++i) model.stepOnce();
-         }) / kSteps;
+  return bench::gpuMedianMs(timing,
+                            [&] {
+                              for (int i = 0; i < kSteps; ++i) model.stepOnce();
+                            }) /
+         kSteps;
 }
 
 Result restitution(Env& env) {
