@@ -49,7 +49,8 @@ Result orbit(Env& env) {
                                      sim::Integrator::Verlet, sim::Integrator::Rk4}) {
     const double stepMs = msPerStep(env.shaders, n, integrator, sim::Storage::Fp32);
     for (int s : steps)
-      r.rows.push_back(orbitRow(env, integrator, sim::Storage::Fp32, s, stepMs, sim::kIntegratorNames[int(integrator)]));
+      r.rows.push_back(
+          orbitRow(env, integrator, sim::Storage::Fp32, s, stepMs, sim::kIntegratorNames[int(integrator)]));
   }
   markPareto(r.rows);
   return r;
