@@ -5,11 +5,13 @@ namespace tidepool::bench {
 
 Benchmark addBallsBench(CLI::App& bench);    // balls_bench.cpp
 Benchmark addGridBench(CLI::App& bench);     // grid_bench.cpp
+Benchmark addMemoryBench(CLI::App& bench);   // memory_bench.cpp
 Benchmark addRipplesBench(CLI::App& bench);  // ripples_bench.cpp
 Benchmark addSwarmBench(CLI::App& bench);    // swarm_bench.cpp
 
 const std::vector<Registrar>& registrars() {
-  static const std::vector<Registrar> table = {addBallsBench, addGridBench, addRipplesBench, addSwarmBench};
+  static const std::vector<Registrar> table = {addBallsBench, addGridBench, addMemoryBench, addRipplesBench,
+                                               addSwarmBench};
   return table;
 }
 

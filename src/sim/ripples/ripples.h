@@ -12,6 +12,7 @@
 
 #include "gl/async_readback.h"
 #include "gl/buffer.h"
+#include "gl/buffer_ops.h"
 #include "gl/gpu_profiler.h"
 #include "gl/shader_library.h"
 #include "sim/divergence.h"
@@ -57,6 +58,7 @@ class Ripples {
   gl::Program& stepProgram();
 
   gl::ShaderLibrary& m_shaders;
+  gl::BufferOps m_ops;  // checkpoint copies
   Params m_params;
   int m_width = 0, m_height = 0;  // allocated size
   gl::Buffer m_state[2];
