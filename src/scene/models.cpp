@@ -1,5 +1,6 @@
 // The table of models a scene can name. Each model adds one line here when it lands.
 #include "scene/blank.h"
+#include "scene/life_stage.h"
 #include "scene/ripples_stage.h"
 #include "scene/stage.h"
 
@@ -10,6 +11,7 @@ const std::vector<ModelEntry>& models() {
       {"blank", "no simulation: clears to a colour (the shell before any model)", createBlankStage},
       {"ripples", "heightfield water: wave equation or the seed's spring model, 2D refraction view",
        createRipplesStage},
+      {"life", "particle life: species with asymmetric forces, glow + HDR view, shareable rules", createLifeStage},
   };
   return table;
 }
