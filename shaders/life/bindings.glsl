@@ -7,3 +7,4 @@
 #define LIFE_SPECIES_COLORS 6  // vec4 per species: linear RGB + 1 (read by the renderer)
 #define LIFE_FORCES_GROUP 64  // work-group size of forces.comp
 #define LIFE_MAX_SPECIES 20  // kMaxSpecies: the force table lives in shared memory
+#define LIFE_BRUTE_TILE 256  // work-group size and shared-memory tile of forces_brute.comp

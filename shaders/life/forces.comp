@@ -12,6 +12,7 @@ layout(local_size_x = LIFE_FORCES_GROUP) in;
 #include "common/index.glsl"
 #include "common/grid.glsl"
 #include "life/box.glsl"
+#include "life/pair_force.glsl"
 
 layout(std430, binding = LIFE_POSITIONS) readonly buffer Positions { vec4 positions[]; };
 layout(std430, binding = LIFE_ACCELERATIONS) writeonly buffer Accelerations { vec2 accelerations[]; };
@@ -26,7 +27,8 @@ uniform uint uCount;          // particles
 uniform uint uSpecies;        // S
 uniform float uCentralForce;  // 1/s^2
 
-shared vec4 sTable[LIFE_MAX_SPECIES * LIFE_MAX_SPECIES];
+shared vec4 sTableA[LIFE_MAX_SPECIES * LIFE_MAX_SPECIES];  // shapePair() of each entry
+shared float sTableB[LIFE_MAX_SPECIES * LIFE_MAX_SPECIES];
 shared float sReach[LIFE_MAX_SPECIES];  // largest radius of each species' row
 
 // Cells along one axis holding every point within `reach` of x: r0 directly, r1 wrapped round
@@ -51,14 +53,14 @@ void axisRanges(float x, float reach, int axis, out ivec2 r0, out ivec2 r1) {
 
 void main() {
   const uint pairs = uSpecies * uSpecies;
-  for (uint k = gl_LocalInvocationID.x; k < pairs; k += gl_WorkGroupSize.x) sTable[k] = forceTable[k];
+  for (uint k = gl_LocalInvocationID.x; k < pairs; k += gl_WorkGroupSize.x) shapePair(forceTable[k], sTableA[k], sTableB[k]);
 #if COUNT_PAIRS
   if (gl_LocalInvocationID.x == 0) sPairs = 0u;
 #endif
   barrier();
   for (uint s = gl_LocalInvocationID.x; s < uSpecies; s += gl_WorkGroupSize.x) {
     float r = 0.0;
-    for (uint j = 0u; j < uSpecies; ++j) r = max(r, sTable[s * uSpecies + j].y);
+    for (uint j = 0u; j < uSpecies; ++j) r = max(r, forceTable[s * uSpecies + j].y);
     sReach[s] = r;
   }
   barrier();
@@ -83,12 +85,8 @@ void main() {
           examined += end - begin;
           for (uint j = begin; j < end; ++j) {
             const vec4 pj = positions[j];
-            const vec4 f = sTable[row + uint(pj.w)];  // strength, radius, collision strength, collision radius
-            const vec2 r = boxDelta(pi.xy, pj.xy);
-            const float d = length(r);
-            if (j == i || !(d > 0.0 && d < f.y)) continue;
-            const float magnitude = f.x * max(0.0, 1.0 - d / f.y) - f.z * max(0.0, 1.0 - d / f.w);
-            force += magnitude * (r / d);
+            const uint k = row + uint(pj.w);
+            if (j != i) force += pairForce(boxDelta(pi.xy, pj.xy), sTableA[k], sTableB[k]);
           }
         }
     accelerations[i] = force;

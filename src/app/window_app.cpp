@@ -74,7 +74,7 @@ float g_scroll = 0.0f;  // accumulated by the GLFW callback between frames
 }  // namespace
 
 int runWindow(const WindowJob& job) {
-  const Scene scene = loadScene(resolveScenePath(job.scene));
+  const Scene scene = loadScene(resolveScenePath(job.scene), job.paramOverrides);
   gl::WindowContext context({job.width, job.height, "tidepool - " + scene.name, job.debugGl, job.vsync, true});
   GLFWwindow* window = context.window();
   gl::ShaderLibrary shaders(gl::ShaderLibrary::findRoot());

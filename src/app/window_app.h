@@ -6,6 +6,8 @@
 #include <optional>
 #include <string>
 
+#include "io/json.h"
+
 namespace tidepool {
 
 struct WindowJob {
@@ -15,6 +17,7 @@ struct WindowJob {
   std::filesystem::path screenshot;  // written after the last frame when set
   bool debugGl = false;
   bool vsync = true;
+  io::Json paramOverrides;  // scene params set from the command line (--rules)
 };
 
 int runWindow(const WindowJob& job);  // exit code; throws Error

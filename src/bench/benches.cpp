@@ -5,9 +5,10 @@ namespace tidepool::bench {
 
 Benchmark addGridBench(CLI::App& bench);     // grid_bench.cpp
 Benchmark addRipplesBench(CLI::App& bench);  // ripples_bench.cpp
+Benchmark addLifeBench(CLI::App& bench);     // life_bench.cpp
 
 const std::vector<Registrar>& registrars() {
-  static const std::vector<Registrar> table = {addGridBench, addRipplesBench};
+  static const std::vector<Registrar> table = {addGridBench, addRipplesBench, addLifeBench};
   return table;
 }
 

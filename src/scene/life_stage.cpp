@@ -3,6 +3,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "base/log.h"
 #include "render/life_view.h"
 #include "scene/param_json.h"
 #include "scene/scene.h"
@@ -10,6 +11,8 @@
 
 namespace tidepool {
 namespace {
+
+constexpr const char* kSaveName = "particle-life-system.json";
 
 // The web app's controls: what generateRules() takes, plus where to load rules from instead.
 struct Setup {
@@ -69,6 +72,8 @@ life::Rules resolveRules(const std::string& text, const std::string& where) {
   if (!fs::exists(path, ec))
     for (const fs::path& c : {findAssetDir() / "rules" / text, findAssetDir() / "rules" / (text + ".json")})
       if (fs::exists(c, ec)) path = c.string();
+  if (!fs::exists(path, ec) && !life::looksLikeShareCode(text))
+    throw Error(where + ".rules: '" + text + "' is neither a rules file, a preset in assets/rules nor a share code");
   try {
     return life::loadRules(path);
   } catch (const Error& e) {
@@ -129,6 +134,10 @@ class LifeStage final : public Stage {
   }
   void key(int c) override {
     if (c == 'C') m_cameraPlaced = false, m_settings.zoom = 1.0f, m_settings.centre = glm::vec3(0.0f);
+    if (c == 'S') {  // the web app's "Save system", under its suggested name
+      io::writeJsonFile(kSaveName, life::rulesToJson(m_model.rules()));
+      log::info(std::string("saved the rules to ") + kSaveName);
+    }
     if (c == 'N') {
       life::SplitMix32 next(std::uint32_t(m_setup.seed) ^ 0x85ebca6bu);
       m_setup.seed = int(next.nextU32() & 0x7fffffffu);  // a new seed, itself reproducible

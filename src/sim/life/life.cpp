@@ -92,13 +92,14 @@ void Life::push(glm::vec2 point, glm::vec2 velocity, float radius) {
   m_pushRadius = std::max(radius, 1e-3f);
 }
 
-void Life::computeForces() {
+void Life::sortByCell() {
   m_grid->build(m_pos[m_current], m_count);
   const int next = 1 - m_current;
   m_grid->reorder(m_pos[m_current], {{&m_pos[m_current], &m_pos[next]}, {&m_vel[m_current], &m_vel[next]}});
   m_current = next;
-  forcePass(false);
 }
+
+void Life::evaluateForces() { forcePass(false); }
 
 void Life::forcePass(bool countPairs) {
   std::vector<gl::ShaderDefine> d = defines();

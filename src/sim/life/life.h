@@ -38,7 +38,12 @@ class Life {
   void reset();                                               // the seed's initial particles
   void step(double frameSeconds, gl::GpuProfiler& profiler);  // one step of min(maxDt, frame)
   void stepOnce(float dt);
-  void computeForces();  // grid build + reorder + forces at the current positions -> accelerations()
+  void computeForces() {  // at the current positions -> accelerations()
+    sortByCell();
+    evaluateForces();
+  }
+  void sortByCell();      // grid build (count + scan) and reorder of positions and velocities
+  void evaluateForces();  // the force pass alone, on positions already in cell order
   // Mouse brush for the next step: velocity (world units/s) added with a Gaussian of `radius`.
   void push(glm::vec2 point, glm::vec2 velocity, float radius);
 
@@ -47,6 +52,7 @@ class Life {
   const gl::Buffer& velocities() const { return m_vel[m_current]; }  // vec4 (vx, vy, ax, ay)
   const gl::Buffer& accelerations() const { return m_accel; }        // vec2, same order as positions()
   const gl::Buffer& speciesColors() const { return m_colors; }       // vec4 per species
+  const gl::Buffer& forceTable() const { return m_table; }           // vec4 per pair, see life/bindings.glsl
   const grid::UniformGrid& grid() const { return *m_grid; }
   void upload(const std::vector<glm::vec4>& positions, const std::vector<glm::vec4>& velocities);
   double time() const { return m_time; }
