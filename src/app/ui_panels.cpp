@@ -55,7 +55,8 @@ bool drawMainPanel(const Scene& scene, Stage& stage, const gl::GpuProfiler& prof
     ImGui::SameLine();
     if (ImGui::Button("Copy share code")) {
       ImGui::SetClipboardText(share.c_str());  // the GLFW backend: glfwSetClipboardString
-      ui.message = "share code copied (" + std::to_string(share.size()) + " characters): tidepool run life --rules <code>";
+      ui.message =
+          "share code copied (" + std::to_string(share.size()) + " characters): tidepool run life --rules <code>";
       ui.messageIsError = false;
     }
   }

@@ -28,14 +28,17 @@ struct LifeOptions {
 
 life::Rules rulesFor(const LifeOptions& o, std::size_t n) {
   const float scale = float(std::sqrt(double(n) / 65536.0));
-  return life::generateRules({.species = o.species, .particleCount = int(n), .size = {1024.0f * scale, 576.0f * scale},
-                              .loopingBorders = o.looping, .seed = std::uint32_t(o.seed)});
+  return life::generateRules({.species = o.species,
+                              .particleCount = int(n),
+                              .size = {1024.0f * scale, 576.0f * scale},
+                              .loopingBorders = o.looping,
+                              .seed = std::uint32_t(o.seed)});
 }
 
 void bruteForce(gl::ShaderLibrary& shaders, const life::Life& model) {
   gl::Program& p = shaders.program({"life/forces_brute.comp"}, model.rules().loopingBorders
-                                                                    ? std::vector<gl::ShaderDefine>{{"LOOPING", "1"}}
-                                                                    : std::vector<gl::ShaderDefine>{});
+                                                                   ? std::vector<gl::ShaderDefine>{{"LOOPING", "1"}}
+                                                                   : std::vector<gl::ShaderDefine>{});
   p.use();
   p.set("uBoxSize", model.rules().size);
   p.set("uCount", GLuint(model.count()));
@@ -54,11 +57,12 @@ void settle(life::Life& model, int steps) {
 }
 
 int run(Env& env, const LifeOptions& o) {
-  std::printf("life benchmark on %s (%d species, seed %d, %s, dt 0.025, density 65536 per 1024x576, %d settle "
-              "steps, medians of %d)\n",
-              env.device.c_str(), o.species, o.seed, o.looping ? "looping" : "walls", o.settle, env.common.repeats);
-  Table table({"N", "box", "grid", "pairs/particle", "ms/step", "steps/s", "sort ms", "forces ms", "integrate ms",
-               "pairs/s"});
+  std::printf(
+      "life benchmark on %s (%d species, seed %d, %s, dt 0.025, density 65536 per 1024x576, %d settle "
+      "steps, medians of %d)\n",
+      env.device.c_str(), o.species, o.seed, o.looping ? "looping" : "walls", o.settle, env.common.repeats);
+  Table table(
+      {"N", "box", "grid", "pairs/particle", "ms/step", "steps/s", "sort ms", "forces ms", "integrate ms", "pairs/s"});
   for (std::size_t n : parseSizes(o.sizes)) {
     life::Life model(env.shaders, rulesFor(o, n));
     settle(model, o.settle);
@@ -113,7 +117,8 @@ int run(Env& env, const LifeOptions& o) {
 }  // namespace
 
 Benchmark addLifeBench(CLI::App& bench) {
-  auto* sub = bench.add_subcommand("life", "particle life: ms per step and pass, candidate pairs/s, brute-force crossover");
+  auto* sub =
+      bench.add_subcommand("life", "particle life: ms per step and pass, candidate pairs/s, brute-force crossover");
   auto o = std::make_shared<LifeOptions>();
   sub->add_option("--n", o->sizes, "particle counts, e.g. 65536..4194304 or 2^16,2^20");
   sub->add_option("--brute", o->brute, "sizes for the brute-force crossover table, or none");

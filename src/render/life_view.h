@@ -17,13 +17,13 @@
 namespace tidepool {
 
 struct LifeViewParams {
-  bool glow = true;              // the Gaussian halo pass
-  bool particles = true;         // the disc / sub-pixel pass
-  float glowSize = 12.0f;        // half-size of the glow quad (world units); alpha = exp(-6 |o|^2) / 64
+  bool glow = true;        // the Gaussian halo pass
+  bool particles = true;   // the disc / sub-pixel pass
+  float glowSize = 12.0f;  // half-size of the glow quad (world units); alpha = exp(-6 |o|^2) / 64
   float glowIntensity = 1.0f / 64.0f;
-  float radius = 1.0f;           // particle disc radius (world units)
-  float exposure = 1.0f;         // HDR scale before the tone map
-  bool dither = true;            // blue-noise dither to 8 bits (off: round to nearest)
+  float radius = 1.0f;    // particle disc radius (world units)
+  float exposure = 1.0f;  // HDR scale before the tone map
+  bool dither = true;     // blue-noise dither to 8 bits (off: round to nearest)
 };
 void visit(ParamVisitor& v, LifeViewParams& p);
 

@@ -44,8 +44,8 @@ void visit(ParamVisitor& v, Setup& s, bool withRules) {
 
 struct ViewSettings {
   LifeViewParams look;
-  float zoom = 1.0f;             // 1: the whole box fits the image
-  glm::vec3 centre{0.0f};        // world units (z unused)
+  float zoom = 1.0f;       // 1: the whole box fits the image
+  glm::vec3 centre{0.0f};  // world units (z unused)
 };
 
 void visit(ParamVisitor& v, ViewSettings& s) {
@@ -55,13 +55,27 @@ void visit(ParamVisitor& v, ViewSettings& s) {
 }
 
 life::Rules rulesFor(const Setup& s) {
-  return life::generateRules({s.species, s.particleCount, {s.width, s.height}, s.friction, s.centralForce,
-                              s.symmetricForces, s.loopingBorders, std::uint32_t(s.seed)});
+  return life::generateRules({s.species,
+                              s.particleCount,
+                              {s.width, s.height},
+                              s.friction,
+                              s.centralForce,
+                              s.symmetricForces,
+                              s.loopingBorders,
+                              std::uint32_t(s.seed)});
 }
 
 Setup setupOf(const life::Rules& r, std::string rulesSource) {
-  return {std::move(rulesSource), r.speciesCount(), r.particleCount, r.size.x, r.size.y, r.friction, r.centralForce,
-          r.symmetricForces, r.loopingBorders, int(r.seed & 0x7fffffffu)};
+  return {std::move(rulesSource),
+          r.speciesCount(),
+          r.particleCount,
+          r.size.x,
+          r.size.y,
+          r.friction,
+          r.centralForce,
+          r.symmetricForces,
+          r.loopingBorders,
+          int(r.seed & 0x7fffffffu)};
 }
 
 // A path as given, then assets/rules/<name>[.json]; anything else is tried as a share code.

@@ -12,7 +12,9 @@ using namespace tidepool;
 using test::runTidepool;
 
 namespace {
-life::Rules small() { return life::generateRules({.species = 3, .particleCount = 1024, .size = {256, 144}, .seed = 6}); }
+life::Rules small() {
+  return life::generateRules({.species = 3, .particleCount = 1024, .size = {256, 144}, .seed = 6});
+}
 }  // namespace
 
 TEST(LifeCli, RenderTakesAShareCodeOrARulesFile) {
@@ -49,8 +51,8 @@ TEST(LifeCli, BadRulesAreAOneLineErrorNamingTheField) {
 }
 
 TEST(LifeCli, BenchPrintsPassesPairsAndCrossover) {
-  auto r = runTidepool({"bench", "life", "--n", "1024", "--brute", "256,512", "--settle", "1", "--repeats", "1",
-                        "--warmup", "0"});
+  auto r = runTidepool(
+      {"bench", "life", "--n", "1024", "--brute", "256,512", "--settle", "1", "--repeats", "1", "--warmup", "0"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("pairs/s"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("crossover"), std::string::npos) << r.out;

@@ -45,14 +45,15 @@ class Fields {
     if (!j) return fallback;
     const double v = finite(*j, path(key));
     if (std::floor(v) != v || v < min || v > max)
-      throw Error(path(key) + " = " + j->dump() + ": expected a whole number in [" + number(min) + ", " +
-                  number(max) + "]");
+      throw Error(path(key) + " = " + j->dump() + ": expected a whole number in [" + number(min) + ", " + number(max) +
+                  "]");
     return v;
   }
   static float finite(const io::Json& j, const std::string& where) {
     if (!j.is_number()) throw Error(where + ": expected a number, got " + j.dump());
     const double v = j.get<double>();
-    if (!std::isfinite(v) || !std::isfinite(float(v))) throw Error(where + " = " + j.dump() + " is not a finite number");
+    if (!std::isfinite(v) || !std::isfinite(float(v)))
+      throw Error(where + " = " + j.dump() + " is not a finite number");
     return float(v);
   }
 
@@ -76,9 +77,9 @@ float Rules::maxRadius() const {
 }
 
 bool Rules::operator==(const Rules& o) const {
-  if (particleCount != o.particleCount || size != o.size || friction != o.friction ||
-      centralForce != o.centralForce || symmetricForces != o.symmetricForces || loopingBorders != o.loopingBorders ||
-      seed != o.seed || species.size() != o.species.size())
+  if (particleCount != o.particleCount || size != o.size || friction != o.friction || centralForce != o.centralForce ||
+      symmetricForces != o.symmetricForces || loopingBorders != o.loopingBorders || seed != o.seed ||
+      species.size() != o.species.size())
     return false;
   for (std::size_t i = 0; i < species.size(); ++i) {
     const Species &a = species[i], &b = o.species[i];
@@ -235,7 +236,8 @@ Rules rulesFromJson(const io::Json& json, const std::string& where) {
     const io::Json* color = s.find("color", true);
     if (!color->is_array() || (color->size() != 3 && color->size() != 4))
       throw Error(sp + ".color: expected [r, g, b] or [r, g, b, a], got " + color->dump());
-    for (int c = 0; c < 3; ++c) out.color[c] = Fields::finite((*color)[std::size_t(c)], sp + ".color[" + std::to_string(c) + "]");
+    for (int c = 0; c < 3; ++c)
+      out.color[c] = Fields::finite((*color)[std::size_t(c)], sp + ".color[" + std::to_string(c) + "]");
     out.spawnWeight = s.real("spawnWeight", false, 1.0f);
     const io::Json* forces = s.find("forces", true);
     if (!forces->is_array()) throw Error(sp + ".forces: expected an array, got " + forces->dump());
@@ -263,14 +265,10 @@ io::Json rulesToJson(const Rules& r) {
                        {"forces", std::move(forces)},
                        {"spawnWeight", s.spawnWeight}});
   }
-  return {{"particleCount", r.particleCount},
-          {"species", std::move(species)},
-          {"simulationSize", {r.size.x, r.size.y}},
-          {"friction", r.friction},
-          {"centralForce", r.centralForce},
-          {"symmetricForces", r.symmetricForces},
-          {"loopingBorders", r.loopingBorders},
-          {"seed", r.seed}};
+  return {{"particleCount", r.particleCount},       {"species", std::move(species)},
+          {"simulationSize", {r.size.x, r.size.y}}, {"friction", r.friction},
+          {"centralForce", r.centralForce},         {"symmetricForces", r.symmetricForces},
+          {"loopingBorders", r.loopingBorders},     {"seed", r.seed}};
 }
 
 }  // namespace tidepool::life

@@ -90,16 +90,20 @@ TEST(LifeRules, SymmetricGenerationAveragesPairs) {
 
 TEST(LifeRules, JsonRoundTripIsExact) {
   for (bool looping : {false, true}) {
-    const Rules r = generateRules({.species = 7, .particleCount = 3000, .centralForce = 0.3f,
-                                   .loopingBorders = looping, .seed = 77});
+    const Rules r = generateRules(
+        {.species = 7, .particleCount = 3000, .centralForce = 0.3f, .loopingBorders = looping, .seed = 77});
     const std::string text = rulesToJson(r).dump(2);
     EXPECT_TRUE(rulesFromJson(io::parseJson(text, "mem"), "mem") == r);
   }
 }
 
 TEST(LifeRules, ShareCodeRoundTripIsExact) {
-  const Rules r = generateRules({.species = 20, .particleCount = 1 << 20, .friction = 3.5f,
-                                 .symmetricForces = true, .loopingBorders = true, .seed = 0xdeadbeef});
+  const Rules r = generateRules({.species = 20,
+                                 .particleCount = 1 << 20,
+                                 .friction = 3.5f,
+                                 .symmetricForces = true,
+                                 .loopingBorders = true,
+                                 .seed = 0xdeadbeef});
   const std::string code = encodeShareCode(r);
   EXPECT_TRUE(looksLikeShareCode(code));
   EXPECT_EQ(code.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789-_"),
@@ -145,7 +149,8 @@ TEST(LifeRules, MalformedInputsNameTheField) {
        "x: species[1].forces[2].radius = -1 must be >= 0"},
       {[](io::Json& j) { j["species"][0]["forces"][1]["collisionRadius"] = 1e3; },
        "x: species[0].forces[1].collisionRadius = 1000 is larger than radius"},
-      {[](io::Json& j) { j["species"][2]["forces"][0].erase("strength"); }, "x.species[2].forces[0].strength is missing"},
+      {[](io::Json& j) { j["species"][2]["forces"][0].erase("strength"); },
+       "x.species[2].forces[0].strength is missing"},
       {[](io::Json& j) { j["species"][2]["forces"][0]["strength"] = 1e300; },
        "x.species[2].forces[0].strength = 1e+300 is not a finite number"},
       {[](io::Json& j) { j["species"][0]["forces"].erase(0); }, "x: species[0].forces has 2 entries"},

@@ -39,8 +39,12 @@ TEST_F(LifeStep, BinnedForcesMatchBruteForce) {
     SCOPED_TRACE(looping ? "looping" : "walls");
     // 4096 particles at the article's density (65536 in 1024x576) in a box that is no multiple
     // of the cell (the largest radius), so the last cell of each axis is partial.
-    Rules rules = generateRules({.species = 6, .particleCount = 4096, .size = {250.0f, 151.0f}, .centralForce = 0.5f,
-                                 .loopingBorders = looping, .seed = 21});
+    Rules rules = generateRules({.species = 6,
+                                 .particleCount = 4096,
+                                 .size = {250.0f, 151.0f},
+                                 .centralForce = 0.5f,
+                                 .loopingBorders = looping,
+                                 .seed = 21});
     Life model(shaders(), rules);
     // A tenth of the particles right on the seams, where wrapping and clamping matter.
     std::vector<glm::vec4> pos = model.positions().read<glm::vec4>(model.count());
@@ -72,7 +76,8 @@ TEST_F(LifeStep, FrictionAloneDecaysSpeedExponentially) {
     Life model(shaders(), rules, params);
     const auto speeds = [&] {
       std::vector<double> out;
-      for (const glm::vec4& v : model.velocities().read<glm::vec4>(model.count())) out.push_back(glm::length(glm::vec2(v)));
+      for (const glm::vec4& v : model.velocities().read<glm::vec4>(model.count()))
+        out.push_back(glm::length(glm::vec2(v)));
       std::sort(out.begin(), out.end());  // particles are reordered: compare the sorted speeds
       return out;
     };
