@@ -1,5 +1,6 @@
 // The interactive window: GLFW + Dear ImGui, live parameter tuning, per-pass GPU times.
 // Keys: Space pause, . single step, R reset, F5 reload shaders, F12 screenshot, H hide UI, Esc quit.
+// Other letters go to the stage (Stage::key; life: C centre, N new rules, S save rules).
 #pragma once
 
 #include <filesystem>

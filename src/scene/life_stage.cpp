@@ -106,7 +106,10 @@ class LifeStage final : public Stage {
   void visitParams(ParamVisitor& v) override {
     if (v.beginGroup({"rules", "Rules", "the system (web-app controls); share it with the code below"})) {
       visit(v, m_setup, false);
-      v.text({"share_code", "Share code", "paste into --rules or a scene's \"rules\""}, m_shareCode);
+      // The code is ~1.5k characters for 8 species: show its start; the panel's button copies it all.
+      std::string preview = m_shareCode.size() > 28 ? m_shareCode.substr(0, 24) + "..." : m_shareCode;
+      if (!m_error.empty()) v.text({"error", "Refused", "the last edit was not applied"}, m_error);
+      v.text({"share_code", "Share code", "tidepool run life --rules <code>; 'Copy share code' copies it"}, preview);
       v.endGroup();
     }
     if (v.beginGroup({"model", "Stepping", ""})) {
@@ -180,9 +183,10 @@ class LifeStage final : public Stage {
     try {
       m_model.setRules(rules, false);
       m_shareCode = life::encodeShareCode(rules);
+      m_error.clear();
     } catch (const Error& e) {
       m_setup = m_applied;  // e.g. looping in a box smaller than twice the radius: keep the old rules
-      m_shareCode = std::string("not applied: ") + e.what();
+      m_error = std::string("not applied: ") + e.what();
       return;
     }
     m_applied = m_setup;
@@ -193,6 +197,7 @@ class LifeStage final : public Stage {
   Setup m_setup, m_applied;
   ViewSettings m_settings;
   std::string m_shareCode;
+  std::string m_error;  // why the last edit of the setup was refused
   bool m_cameraPlaced = false;
 };
 
