@@ -89,3 +89,33 @@ TEST_F(LifeStep, FrictionAloneDecaysSpeedExponentially) {
     for (std::size_t i = 0; i < before.size(); ++i) ASSERT_NEAR(after[i], before[i] * factor, 1e-5 * before[i] + 1e-7);
   }
 }
+
+TEST_F(LifeStep, PushBrushAddsAGaussianVelocityForOneStep) {
+  Rules rules = generateRules({.species = 1, .particleCount = 1024, .friction = 0.0f, .seed = 2});
+  rules.species[0].forces[0] = {0, 0, 4, 0};
+  Life model(shaders(), rules);
+  std::vector<glm::vec4> pos = model.positions().read<glm::vec4>(model.count());
+  model.upload(pos, std::vector<glm::vec4>(model.count(), glm::vec4(0.0f)));
+  const glm::vec2 centre(10.0f, -20.0f), push(30.0f, 0.0f);
+  const float radius = 64.0f;
+  model.push(centre, push, radius);
+  model.stepOnce(0.01f);
+  const std::vector<glm::vec4> p = model.positions().read<glm::vec4>(model.count());
+  const std::vector<glm::vec4> v = model.velocities().read<glm::vec4>(model.count());
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    // p moved by v·dt from where the brush saw it: evaluate the Gaussian there.
+    const glm::vec2 before = glm::vec2(p[i]) - glm::vec2(v[i]) * 0.01f;
+    const glm::vec2 r = before - centre;
+    const float want = push.x * std::exp(-glm::dot(r, r) / (radius * radius));
+    ASSERT_NEAR(v[i].x, want, 1e-3f * push.x);
+    ASSERT_EQ(v[i].y, 0.0f);
+  }
+  model.stepOnce(0.01f);  // the brush acts once per push()
+  const std::vector<glm::vec4> v2 = model.velocities().read<glm::vec4>(model.count());
+  float maxSpeedBefore = 0, maxSpeedAfter = 0;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    maxSpeedBefore = std::max(maxSpeedBefore, std::abs(v[i].x));
+    maxSpeedAfter = std::max(maxSpeedAfter, std::abs(v2[i].x));
+  }
+  EXPECT_FLOAT_EQ(maxSpeedAfter, maxSpeedBefore);
+}
