@@ -13,6 +13,7 @@ namespace tidepool {
 namespace {
 
 constexpr const char* kSaveName = "particle-life-system.json";
+constexpr int kMaxSeed = 999999999;  // ImGui sliders take at most half the int range
 
 // The web app's controls: what generateRules() takes, plus where to load rules from instead.
 struct Setup {
@@ -39,7 +40,7 @@ void visit(ParamVisitor& v, Setup& s, bool withRules) {
   v.real({"central_force", "Central force", "1/s^2: pull toward the centre"}, s.centralForce, 0.0f, 10.0f);
   v.flag({"symmetric_forces", "Symmetric forces", "average (i,j) and (j,i)"}, s.symmetricForces);
   v.flag({"looping_borders", "Looping borders", "torus instead of walls"}, s.loopingBorders);
-  v.integer({"seed", "Seed", "rule generator seed; a change generates new rules"}, s.seed, 0, 2147483647);
+  v.integer({"seed", "Seed", "rule generator seed; a change generates new rules"}, s.seed, 0, kMaxSeed);
 }
 
 struct ViewSettings {
@@ -75,7 +76,7 @@ Setup setupOf(const life::Rules& r, std::string rulesSource) {
           r.centralForce,
           r.symmetricForces,
           r.loopingBorders,
-          int(r.seed & 0x7fffffffu)};
+          int(r.seed % (kMaxSeed + 1u))};
 }
 
 // A path as given, then assets/rules/<name>[.json]; anything else is tried as a share code.
@@ -157,7 +158,7 @@ class LifeStage final : public Stage {
     }
     if (c == 'N') {
       life::SplitMix32 next(std::uint32_t(m_setup.seed) ^ 0x85ebca6bu);
-      m_setup.seed = int(next.nextU32() & 0x7fffffffu);  // a new seed, itself reproducible
+      m_setup.seed = int(next.nextU32() % (kMaxSeed + 1u));  // a new seed, itself reproducible
     }
   }
   double simTime() const override { return m_model.time(); }
