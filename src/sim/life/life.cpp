@@ -23,8 +23,10 @@ void Life::setRules(const Rules& rules, bool respawn) {
   const bool newGrid = !m_grid || rules.size != m_rules.size || rules.maxRadius() != m_rules.maxRadius();
   m_rules = rules;
   if (newGrid) {
-    // Cell = the largest radius; a floor keeps tiny radii from asking for millions of cells.
-    const float cell = std::max(m_rules.maxRadius(), std::max(m_rules.size.x, m_rules.size.y) / 2048.0f);
+    // Cell = the largest radius, but no more cells than particles (or 2048 per axis): tiny radii
+    // would otherwise make the per-step scan of cell counts the dominant cost.
+    const float perParticle = std::sqrt(m_rules.size.x * m_rules.size.y / float(m_rules.particleCount));
+    const float cell = std::max({m_rules.maxRadius(), perParticle, std::max(m_rules.size.x, m_rules.size.y) / 2048.0f});
     const glm::vec2 half = 0.5f * m_rules.size;
     m_grid = std::make_unique<grid::UniformGrid>(
         m_shaders, grid::GridParams{{-half.x, -half.y, 0.0f}, {half.x, half.y, 0.0f}, cell},

@@ -119,3 +119,29 @@ TEST_F(LifeStep, PushBrushAddsAGaussianVelocityForOneStep) {
   }
   EXPECT_FLOAT_EQ(maxSpeedAfter, maxSpeedBefore);
 }
+
+TEST_F(LifeStep, VerletIsSecondOrderAndEulerFirstOnTheCentralForce) {
+  // One particle, no pair forces, no friction: the central force -c·p is a harmonic oscillator,
+  // p(t) = p0 cos(wt) + v0/w sin(wt) with w = sqrt(c). Halving dt divides the error at t = 1 by
+  // about 2 for symplectic Euler and about 4 for velocity Verlet.
+  Rules rules = generateRules(
+      {.species = 1, .particleCount = 1, .size = {100, 100}, .friction = 0.0f, .centralForce = 4.0f, .seed = 1});
+  rules.species[0].forces[0] = {0, 0, 10, 0};  // no force, but 10 x 10 cells
+  const double w = 2.0, p0 = 30.0, v0 = 10.0;  // amplitude 30.4: never reaches the walls
+  const double exact = p0 * std::cos(w) + v0 / w * std::sin(w);
+  for (Integrator integrator : {Integrator::Euler, Integrator::Verlet}) {
+    SCOPED_TRACE(kIntegratorNames[int(integrator)]);
+    double errors[2];
+    for (int k = 0; k < 2; ++k) {
+      Params params;
+      params.integrator = integrator;
+      Life model(shaders(), rules, params);
+      model.upload({glm::vec4(float(p0), 0.0f, 0.0f, 0.0f)}, {glm::vec4(float(v0), 0.0f, 0.0f, 0.0f)});
+      const int steps = 50 << k;
+      for (int i = 0; i < steps; ++i) model.stepOnce(1.0f / float(steps));
+      errors[k] = std::abs(model.positions().read<glm::vec4>(1)[0].x - exact);
+    }
+    const double order = std::log2(errors[0] / errors[1]);
+    EXPECT_NEAR(order, integrator == Integrator::Verlet ? 2.0 : 1.0, 0.2) << errors[0] << " " << errors[1];
+  }
+}
