@@ -161,6 +161,21 @@ class LifeStage final : public Stage {
       m_setup.seed = int(next.nextU32() % (kMaxSeed + 1u));  // a new seed, itself reproducible
     }
   }
+  // A rules JSON dropped on the window: the web app's "Load system". Overrides Stage::dropFile
+  // where the app has that hook (main); errors show in the panel, nothing is half-loaded.
+  bool dropFile(const std::string& path) {
+    try {
+      const life::Rules rules = life::loadRules(path);
+      m_model.setRules(rules, true);
+      m_setup = m_applied = setupOf(rules, path);
+      m_shareCode = life::encodeShareCode(rules);
+      m_error.clear();
+      m_cameraPlaced = false;
+    } catch (const Error& e) {
+      m_error = std::string("not loaded: ") + e.what();
+    }
+    return true;
+  }
   double simTime() const override { return m_model.time(); }
   std::string status() const override { return m_model.status(); }
   std::string shareText() const override { return m_shareCode; }

@@ -3,7 +3,7 @@
 // pans, the wheel zooms about the cursor; keys C centre the view, N new random rules, S saves
 // the rules to particle-life-system.json (R, the app's reset, restarts with the same rules).
 // Rules come from the scene's "rules" (a rules JSON path, a preset name from assets/rules, or a
-// share code) or are generated from its seed.
+// share code) or are generated from its seed; a rules JSON dropped on the window replaces them.
 #pragma once
 
 #include "scene/stage.h"
