@@ -153,7 +153,7 @@ std::vector<Force> effectiveForces(const Rules& r) {
 }
 
 std::vector<InitialParticle> spawnParticles(const Rules& r) {
-  // A stream independent of the rule stream: golden-ratio offset of the seed.
+  // A stream apart from the rule stream: the seed xor 0x6a09e667 (the fractional bits of sqrt 2).
   SplitMix32 rng(r.seed ^ 0x6a09e667u);
   std::vector<double> cumulative;
   double total = 0;

@@ -89,8 +89,9 @@ Rules generateRules(const GenerateOptions& options);
 std::vector<Force> effectiveForces(const Rules& rules);  // S·S entries, index i·S + j
 
 // Initial particles (x, y, vx, vy, species) for `rules`, from a splitmix32 stream seeded by
-// rules.seed (a second stream, so rules and particles stay independent): species by spawn
-// weight (roulette), position uniform in the box, velocity uniform in ±10 per axis.
+// rules.seed ^ 0x6a09e667 (apart from the rule stream; the web app uses Math.random here, so
+// its particles cannot be reproduced): per particle, in this order, species by spawn weight
+// (roulette), x, y uniform in the box, vx, vy uniform in ±10.
 struct InitialParticle {
   glm::vec2 position, velocity;
   int species;
