@@ -32,26 +32,27 @@ def splitmix32(seed):
 
 def generate(a):
     rng = splitmix32(a.seed)
-    species = []
+    keys = ("strength", "collisionStrength", "radius", "collisionRadius")
+    species, table = [], []
     for _ in range(a.species):
         color = [f32((0.25 + 0.75 * rng()) ** 2.2) for _ in range(3)] + [1.0]
-        forces = []
+        row = []
         for _ in range(a.species):
             strength = 100.0 * (0.25 + 0.75 * rng())
             strength *= 1.0 if rng() < 0.5 else -1.0
             collision = (5.0 + 15.0 * rng()) * abs(strength)
             radius = 2.0 + rng() * 30.0
             collision_radius = rng() * 0.5 * radius
-            forces.append({"strength": f32(strength), "collisionStrength": f32(collision),
-                           "radius": f32(radius), "collisionRadius": f32(collision_radius)})
-        species.append({"color": color, "forces": forces, "spawnWeight": f32(rng())})
-    if a.symmetric:
+            row.append([strength, collision, radius, collision_radius])
+        table.append(row)
+        species.append({"color": color, "forces": None, "spawnWeight": f32(rng())})
+    if a.symmetric:  # in double, as the app's symmetrizeForces
         for i in range(a.species):
             for j in range(i + 1, a.species):
-                fa, fb = species[i]["forces"][j], species[j]["forces"][i]
-                m = {k: f32((fa[k] + fb[k]) * 0.5) for k in fa}
-                species[i]["forces"][j] = dict(m)
-                species[j]["forces"][i] = dict(m)
+                for k in range(4):
+                    table[i][j][k] = table[j][i][k] = (table[i][j][k] + table[j][i][k]) / 2.0
+    for i, s in enumerate(species):
+        s["forces"] = [{key: f32(v) for key, v in zip(keys, f)} for f in table[i]]
     return {"particleCount": a.count, "species": species, "simulationSize": a.size,
             "friction": a.friction, "centralForce": a.central, "symmetricForces": a.symmetric,
             "loopingBorders": a.looping, "seed": a.seed}

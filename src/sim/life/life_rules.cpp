@@ -1,5 +1,6 @@
 #include "sim/life/life_rules.h"
 
+#include <array>
 #include <cmath>
 #include <sstream>
 
@@ -106,31 +107,37 @@ Rules generateRules(const GenerateOptions& o) {
   r.loopingBorders = o.loopingBorders;
   r.seed = o.seed;
   SplitMix32 rng(o.seed);
-  r.species.resize(std::size_t(o.species));
-  for (Species& s : r.species) {
+  const std::size_t n = std::size_t(o.species);
+  // The app's numbers are JS doubles until they reach the GPU: generate (and average) in
+  // double, round to float once.
+  std::vector<std::array<double, 4>> table(n * n);  // strength, collisionStrength, radius, collisionRadius
+  r.species.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    Species& s = r.species[i];
     double c[3];
     for (double& channel : c) channel = std::pow(0.25 + 0.75 * rng.next(), 2.2);
     s.color = {float(c[0]), float(c[1]), float(c[2])};
-    s.forces.resize(std::size_t(o.species));
-    for (Force& f : s.forces) {
+    for (std::size_t j = 0; j < n; ++j) {
       const double magnitude = 0.25 + 0.75 * rng.next();
       const double strength = 100.0 * magnitude * (rng.next() < 0.5 ? 1.0 : -1.0);
       const double collision = (5.0 + 15.0 * rng.next()) * std::abs(strength);
       const double radius = 2.0 + rng.next() * 30.0;
       const double collisionRadius = rng.next() * 0.5 * radius;
-      f = {float(strength), float(collision), float(radius), float(collisionRadius)};
+      table[i * n + j] = {strength, collision, radius, collisionRadius};
     }
     s.spawnWeight = float(rng.next());
   }
-  if (o.symmetricForces) {
-    // Average in float like the app does on its Float32 values, each unordered pair once.
-    for (int i = 0; i < o.species; ++i)
-      for (int j = i + 1; j < o.species; ++j) {
-        Force &a = r.species[i].forces[j], &b = r.species[j].forces[i];
-        const Force m{(a.strength + b.strength) * 0.5f, (a.collisionStrength + b.collisionStrength) * 0.5f,
-                      (a.radius + b.radius) * 0.5f, (a.collisionRadius + b.collisionRadius) * 0.5f};
-        a = b = m;
-      }
+  if (o.symmetricForces)  // the app's symmetrizeForces: each unordered pair once
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = i + 1; j < n; ++j)
+        for (int k = 0; k < 4; ++k)
+          table[i * n + j][k] = table[j * n + i][k] = (table[i * n + j][k] + table[j * n + i][k]) / 2.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    r.species[i].forces.resize(n);
+    for (std::size_t j = 0; j < n; ++j) {
+      const auto& f = table[i * n + j];
+      r.species[i].forces[j] = {float(f[0]), float(f[1]), float(f[2]), float(f[3])};
+    }
   }
   return r;
 }
