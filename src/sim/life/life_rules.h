@@ -3,7 +3,7 @@
 //   After lisyarus, "Particle life" (lisyarus.github.io/webgpu/particle-life.html, 2025).
 //
 //   Rules r = generateRules({.species = 8, .particleCount = 65536, .seed = 42});
-//   std::string code = encodeShareCode(r);      // "AQAAAQAI..." (base64url, version + checksum)
+//   std::string code = encodeShareCode(r);      // "AgAAAQAI..." (base64url, version + checksum)
 //   Rules same = decodeShareCode(code);         // bit-identical to r
 //   io::writeJsonFile("mine.json", rulesToJson(r));
 //   Rules back = rulesFromJson(io::readJsonFile("mine.json"), "mine.json");  // throws naming the field
@@ -106,10 +106,12 @@ Rules rulesFromJson(const io::Json& json, const std::string& where);
 io::Json rulesToJson(const Rules& rules);
 void validateRules(const Rules& rules, const std::string& where);  // the same checks as the reader
 
-// Share code: base64url (no padding) of a little-endian packed form: version byte (1), count,
-// species, size, friction, central force, flags, seed, per species colour + weight + forces,
-// then a CRC-32 of everything before it. Round trips bit-exactly. Decoding throws Error on a
-// bad alphabet, length, version or checksum, and validates like the JSON reader.
+// Share code: base64url (no padding) of a little-endian packed form: version byte, count,
+// species, size, friction, central force, flags, seed, then (version 1) per species colour,
+// weight and forces, and a CRC-32 of everything before it. Rules that are exactly what their
+// seed generates use version 2, the header alone (40 characters), and are regenerated on
+// decoding. Round trips bit-exactly. Decoding throws Error on a bad alphabet, length, version
+// or checksum, and validates like the JSON reader.
 std::string encodeShareCode(const Rules& rules);
 Rules decodeShareCode(const std::string& code);
 bool looksLikeShareCode(const std::string& text);  // base64url alphabet only, not a file name

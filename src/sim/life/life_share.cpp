@@ -1,5 +1,8 @@
 // Share codes and rule loading (life_rules.h): a packed little-endian binary form of the rules,
 // base64url encoded, with a version byte and a CRC-32 so a mangled paste is refused, not run.
+// Version 1 carries the whole table (~1.6k characters for 8 species); version 2, used whenever
+// the rules are exactly what their seed generates, carries only the generator's inputs
+// (40 characters) and regenerates the table bit for bit.
 #include <cstring>
 #include <filesystem>
 
@@ -9,7 +12,8 @@
 namespace tidepool::life {
 namespace {
 
-constexpr std::uint8_t kVersion = 1;
+constexpr std::uint8_t kFullTable = 1;  // header + colours, weights and forces
+constexpr std::uint8_t kSeeded = 2;     // header only: the rules are generateRules(header)
 constexpr char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789-_";
 
 std::uint32_t crc32(const std::uint8_t* data, std::size_t n) {
@@ -81,9 +85,15 @@ bool looksLikeShareCode(const std::string& text) {
   return true;
 }
 
+GenerateOptions optionsOf(const Rules& r) {
+  return {r.speciesCount(), r.particleCount,   r.size,           r.friction,
+          r.centralForce,   r.symmetricForces, r.loopingBorders, r.seed};
+}
+
 std::string encodeShareCode(const Rules& r) {
+  const bool seeded = r.speciesCount() >= 1 && r.speciesCount() <= kMaxSpecies && generateRules(optionsOf(r)) == r;
   Writer w;
-  w.u8(kVersion);
+  w.u8(seeded ? kSeeded : kFullTable);
   w.u32(std::uint32_t(r.particleCount));
   w.u8(std::uint8_t(r.speciesCount()));
   w.f32(r.size.x);
@@ -92,7 +102,7 @@ std::string encodeShareCode(const Rules& r) {
   w.f32(r.centralForce);
   w.u8(std::uint8_t((r.symmetricForces ? 1 : 0) | (r.loopingBorders ? 2 : 0)));
   w.u32(r.seed);
-  for (const Species& s : r.species) {
+  for (const Species& s : seeded ? std::vector<Species>() : r.species) {
     for (int c = 0; c < 3; ++c) w.f32(s.color[c]);
     w.f32(s.spawnWeight);
     for (const Force& f : s.forces) {
@@ -132,9 +142,9 @@ Rules decodeShareCode(const std::string& code) {
     }
   }
   if (b.size() < 5) throw Error("share code: too short (truncated when copied?)");
-  if (b[0] != kVersion)
-    throw Error("share code: version " + std::to_string(b[0]) + " is not supported (this build reads version " +
-                std::to_string(kVersion) + ")");
+  if (b[0] != kFullTable && b[0] != kSeeded)
+    throw Error("share code: version " + std::to_string(b[0]) +
+                " is not supported (this build reads versions 1 and 2)");
   const std::size_t body = b.size() - 4;
   std::uint32_t stored = 0;
   for (int i = 0; i < 4; ++i) stored |= std::uint32_t(b[body + std::size_t(i)]) << (8 * i);
@@ -155,6 +165,14 @@ Rules decodeShareCode(const std::string& code) {
   if (species < 1 || species > kMaxSpecies)
     throw Error("share code: species = " + std::to_string(species) + " is out of range [1, " +
                 std::to_string(kMaxSpecies) + "]");
+  if (b[0] == kSeeded) {
+    if (!in.done()) throw Error("share code: unexpected extra bytes after the rules");
+    GenerateOptions options = optionsOf(r);
+    options.species = species;
+    Rules generated = generateRules(options);
+    validateRules(generated, "share code");
+    return generated;
+  }
   r.species.resize(std::size_t(species));
   for (Species& s : r.species) {
     for (int c = 0; c < 3; ++c) s.color[c] = in.f32();

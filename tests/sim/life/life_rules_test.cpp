@@ -111,6 +111,15 @@ TEST(LifeRules, ShareCodeRoundTripIsExact) {
             std::string::npos);
   EXPECT_TRUE(decodeShareCode(code) == r);
   EXPECT_TRUE(loadRules(code) == r);
+  EXPECT_LE(code.size(), 48u) << "rules straight from their seed share as the generator's inputs";
+  // Edited rules carry their whole table, still bit-exact.
+  Rules edited = r;
+  edited.species[3].forces[7].strength = -12.345678f;
+  edited.species[19].color = {0.1f, 0.2f, 0.3f};
+  const std::string full = encodeShareCode(edited);
+  EXPECT_GT(full.size(), 1000u);
+  EXPECT_TRUE(decodeShareCode(full) == edited);
+  EXPECT_FALSE(decodeShareCode(full) == r);
   // One changed character or a cut code is refused, never half-loaded.
   std::string bad = code;
   bad[20] = bad[20] == 'A' ? 'B' : 'A';
