@@ -193,3 +193,10 @@ TEST(LifeRules, PresetsLoadAndAreWhatTheirSeedGenerates) {
   }
   EXPECT_GE(count, 3);
 }
+
+TEST(LifeRules, ShareCodeOfThePresetIsStable) {
+  // The 'cells' preset (seed 2, 8 species, 16384 particles in 512 x 288): a version-2 code,
+  // computed independently with Python's struct, zlib.crc32 and base64.urlsafe_b64encode.
+  const Rules cells = loadRules(std::string(TIDEPOOL_SOURCE_DIR) + "/assets/rules/cells.json");
+  EXPECT_EQ(encodeShareCode(cells), "AgBAAAAIAAAARAAAkEMAACBBAAAAAAACAAAAsuj5Hg");
+}
