@@ -1,9 +1,10 @@
 // The life model end to end: `--rules` takes a share code or a rules file (the web app's
-// format) on render; bad rules stop the run with one line naming the field; the benchmark
-// prints its tables at tiny sizes.
+// format) on render; bad rules stop the run with one line naming the field; the window draws
+// the life panel (its widgets within ImGui's limits); the benchmark prints its tables.
 #include <gtest/gtest.h>
 
 #include "io/json.h"
+#include "io/png.h"
 #include "sim/life/life_rules.h"
 #include "support/gl_test.h"
 #include "support/run_process.h"
@@ -56,4 +57,21 @@ TEST(LifeCli, BenchPrintsPassesPairsAndCrossover) {
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("pairs/s"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("crossover"), std::string::npos) << r.out;
+}
+
+TEST(LifeCli, WindowDrawsTheSceneAndItsPanelUnderXvfb) {
+  test::TempDir dir;
+  dir.write("life.json", R"({"model": "life", "params": {"species": 4, "particle_count": 2048, "width": 256,
+                                                            "height": 144, "seed": 3}})");
+  const std::string shot = (dir / "shot.png").string();
+  auto r = test::runProcess({"xvfb-run", "-a", "-s", "-screen 0 800x600x24", TIDEPOOL_EXE, "run",
+                             (dir / "life.json").string(), "--backend", "window", "--size", "640x480", "--frames", "3",
+                             "--screenshot", shot});
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  EXPECT_FALSE(r.signaled);
+  const io::Image img = io::readPng(shot);
+  int lit = 0;  // particles and glow right of the panel
+  for (int y = 0; y < 480; ++y)
+    for (int x = 560; x < 640; ++x) lit += img.rgba[(std::size_t(y) * 640 + x) * 4 + 1] > 40;
+  EXPECT_GT(lit, 500);
 }
