@@ -107,9 +107,10 @@ class LifeStage final : public Stage {
   void visitParams(ParamVisitor& v) override {
     if (v.beginGroup({"rules", "Rules", "the system (web-app controls); share it with the code below"})) {
       visit(v, m_setup, false);
-      // The code is ~1.5k characters for 8 species: show its start; the panel's button copies it all.
+      // 42 characters for rules straight from a seed, ~1.6k for edited ones (8 species): show the
+      // start; the panel's button copies it all.
       std::string preview = m_shareCode.size() > 28 ? m_shareCode.substr(0, 24) + "..." : m_shareCode;
-      if (!m_error.empty()) v.text({"error", "Refused", "the last edit was not applied"}, m_error);
+      if (!m_error.empty()) v.text({"error", "Refused", "the last edit, load or save did not happen"}, m_error);
       v.text({"share_code", "Share code", "tidepool run life --rules <code>; 'Copy share code' copies it"}, preview);
       v.endGroup();
     }
@@ -151,10 +152,18 @@ class LifeStage final : public Stage {
     }
   }
   void key(int c) override {
-    if (c == 'C') m_cameraPlaced = false, m_settings.zoom = 1.0f, m_settings.centre = glm::vec3(0.0f);
+    if (c == 'C') {
+      m_cameraPlaced = false;
+      m_settings.zoom = 1.0f;
+      m_settings.centre = glm::vec3(0.0f);
+    }
     if (c == 'S') {  // the web app's "Save system", under its suggested name
-      io::writeJsonFile(kSaveName, life::rulesToJson(m_model.rules()));
-      log::info(std::string("saved the rules to ") + kSaveName);
+      try {
+        io::writeJsonFile(kSaveName, life::rulesToJson(m_model.rules()));
+        log::info(std::string("saved the rules to ") + kSaveName);
+      } catch (const Error& e) {
+        m_error = std::string("not saved: ") + e.what();
+      }
     }
     if (c == 'N') {
       life::SplitMix32 next(std::uint32_t(m_setup.seed) ^ 0x85ebca6bu);
