@@ -109,7 +109,7 @@ int runWindow(const WindowJob& job) {
     if (keys.pressed(GLFW_KEY_F5)) ui.reloadRequested = true;
     if (keys.pressed(GLFW_KEY_F12)) ui.screenshotRequested = true;
     if (keys.pressed(GLFW_KEY_H)) ui.showUi = !ui.showUi;
-    for (int k = GLFW_KEY_A; k <= GLFW_KEY_Z; ++k)  // other letters are the model's (life: C, N)
+    for (int k = GLFW_KEY_A; k <= GLFW_KEY_Z; ++k)  // other letters are the model's (life: C, N, S)
       if (k != GLFW_KEY_R && k != GLFW_KEY_H && keys.pressed(k)) stage->key('A' + (k - GLFW_KEY_A));
 
     ImGui_ImplOpenGL3_NewFrame();
