@@ -32,15 +32,15 @@ void main() {
   groupSync();
 
   // 2. Each invocation scans VECS consecutive chunk sums, the group scans the invocation totals.
-  uint local[VECS];
+  uint chunkPrefix[VECS];
   uint run = 0u;
   for (uint j = 0u; j < VECS; ++j) {
-    local[j] = run;
+    chunkPrefix[j] = run;
     run += sChunk[SCAN_PAD(t * VECS + j)];
   }
   uint total;
   const uint before = groupExclusiveScan(run, total);
-  for (uint j = 0u; j < VECS; ++j) sChunk[SCAN_PAD(t * VECS + j)] = before + local[j];
+  for (uint j = 0u; j < VECS; ++j) sChunk[SCAN_PAD(t * VECS + j)] = before + chunkPrefix[j];
   groupSync();
 
   // 3. Add chunk prefix and block offset, store (coalesced, like the loads).

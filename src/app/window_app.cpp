@@ -7,6 +7,7 @@
 #include <imgui.h>
 
 #include <chrono>
+#include <cmath>
 #include <ctime>
 
 #include "app/ui_panels.h"
@@ -69,7 +70,8 @@ Input readInput(GLFWwindow* window, glm::vec2& lastCursor, float& scroll) {
   return in;
 }
 
-float g_scroll = 0.0f;  // accumulated by the GLFW callback between frames
+float g_scroll = 0.0f;               // accumulated by the GLFW callback between frames
+std::vector<std::string> g_dropped;  // files dropped on the window since the last frame
 
 }  // namespace
 
@@ -89,6 +91,9 @@ int runWindow(const WindowJob& job) {
   glfwSetScrollCallback(window, [](GLFWwindow* w, double dx, double dy) {
     ImGui_ImplGlfw_ScrollCallback(w, dx, dy);
     g_scroll += float(dy);
+  });
+  glfwSetDropCallback(window, [](GLFWwindow*, int count, const char** paths) {
+    for (int i = 0; i < count; ++i) g_dropped.emplace_back(paths[i]);
   });
 
   int fbw = 0, fbh = 0;
@@ -143,6 +148,10 @@ int runWindow(const WindowJob& job) {
       }
     }
     stage->input(readInput(window, lastCursor, g_scroll));
+    for (const std::string& path : std::exchange(g_dropped, {})) {
+      ui.messageIsError = !stage->dropFile(path);
+      ui.message = (ui.messageIsError ? "this model takes no files: " : "dropped ") + path;
+    }
 
     context.framebufferSize(fbw, fbh);
     if (fbw > 0 && fbh > 0) target.resize(fbw, fbh);
@@ -150,6 +159,10 @@ int runWindow(const WindowJob& job) {
     if (!ui.paused || std::exchange(ui.stepOnce, false)) stage->step(kFrameSeconds, profiler);
     stage->render(target, profiler);
     profiler.endFrame();
+    {
+      const double metric = stage->liveMetric().second;
+      ui.history.push(float(profiler.totalMs()), std::isfinite(metric) ? float(metric) : 0.0f);
+    }
     if (const auto d = stage->divergence(); d && ui.divergence.empty()) {
       ui.divergence = d->message;
       log::error(d->message);

@@ -50,7 +50,7 @@ double median(std::vector<double> v) {
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-bool softwareRenderer() {
+bool softwareRenderer() {  // declared in bench.h
   const GLubyte* r = glGetString(GL_RENDERER);
   const std::string renderer = r ? reinterpret_cast<const char*>(r) : "";
   return renderer.find("llvmpipe") != std::string::npos || renderer.find("softpipe") != std::string::npos;

@@ -57,6 +57,9 @@ double median(std::vector<double> values);
 // On a software renderer (llvmpipe) the wall clock around glFinish is used instead.
 double gpuMedianMs(const Common& common, const std::function<void()>& work);
 
+// True on llvmpipe / softpipe, whose GL timer queries do not measure execution.
+bool softwareRenderer();
+
 // A line to print under tables measured on a software renderer (empty for hardware).
 std::string timingCaveat(const std::string& device);
 std::string fixed(double value, int decimals);

@@ -3,12 +3,15 @@
 
 namespace tidepool::bench {
 
+Benchmark addBallsBench(CLI::App& bench);    // balls_bench.cpp
 Benchmark addGridBench(CLI::App& bench);     // grid_bench.cpp
 Benchmark addRipplesBench(CLI::App& bench);  // ripples_bench.cpp
 Benchmark addLifeBench(CLI::App& bench);     // life_bench.cpp
+Benchmark addSwarmBench(CLI::App& bench);    // swarm_bench.cpp
 
 const std::vector<Registrar>& registrars() {
-  static const std::vector<Registrar> table = {addGridBench, addRipplesBench, addLifeBench};
+  static const std::vector<Registrar> table = {addBallsBench, addGridBench, addLifeBench, addRipplesBench,
+                                               addSwarmBench};
   return table;
 }
 

@@ -7,6 +7,7 @@
 //   scan     4 N read + 4 (N + 1) written (the minimum; the kernels move about 3 N words, see prefix_scan.h)
 //   reorder  per particle: 16 position (cell) + 4 indexInCell + 4 cellStart read, 16 per array read and written
 //   copy     4 N read + 4 N written
+// Each row's results are compared with the CPU after timing (note column; --no-check skips it).
 // --scan-shapes 256x4,512x8,... adds a table of the N-uint32 scan per work-group shape.
 // Every number is the median of --repeats GL_TIME_ELAPSED queries after --warmup untimed runs.
 #include <chrono>
@@ -29,6 +30,7 @@ struct GridOptions {
   std::string perCell = "1,8";       // target particles per cell
   int arrays = 2;                    // vec4 arrays reordered (positions, velocities, ...)
   std::string scanShapes = "256x4";  // PrefixScan work-group shapes; the first one is the grid's
+  bool noCheck = false;              // skip comparing every row's results with the CPU
 };
 
 // Median time (ms) of `work` over the common repeats after the warmup runs. GPU time from
@@ -96,7 +98,8 @@ std::vector<grid::ScanConfig> parseShapes(const std::string& text) {
     char x = 0, p = 0, rest = 0;
     const int got = std::sscanf(token.c_str(), "%u%c%u%c%c", &g, &x, &v, &p, &rest);
     if (!((got == 3 && x == 'x') || (got == 4 && x == 'x' && p == 'p')))
-      throw Error("--scan-shapes '" + token + "' is not like 256x4 or 256x4p (invocations x uvec4 per invocation, "
+      throw Error("--scan-shapes '" + token +
+                  "' is not like 256x4 or 256x4p (invocations x uvec4 per invocation, "
                   "p: scan-then-propagate)");
     out.push_back({g, v, got == 4});
   }
@@ -133,17 +136,54 @@ void addShapeRows(Env& env, Table& table, bool wallClock, std::size_t n, const s
   }
 }
 
+// Compares the grid after build + reorder with the CPU (grid_reference.h); "" when right.
+// Every array holds the positions, so dst[0] must be the positions in cell order.
+std::string checkGrid(const grid::UniformGrid& grid, const std::vector<glm::vec4>& pos, const gl::Buffer& sorted) {
+  const std::size_t n = pos.size();
+  const std::vector<uint32_t> counts = grid::reference::histogram(grid.shape(), pos);
+  if (grid.cellCount().read<uint32_t>(grid.cells()) != counts) return "WRONG cell counts; ";
+  const std::vector<uint32_t> starts = grid::reference::exclusiveScan(counts);
+  if (grid.cellStart().read<uint32_t>(grid.cells() + 1) != starts) return "WRONG cellStart; ";
+  const std::vector<glm::vec4> got = sorted.read<glm::vec4>(n);
+  std::vector<bool> seen(n, false);
+  std::size_t cell = 0;
+  for (std::size_t j = 0; j < n; ++j) {
+    while (starts[cell + 1] <= j) ++cell;
+    const std::size_t id = std::size_t(got[j].w);
+    if (id >= n || seen[id] || got[j] != pos[id]) return "WRONG reorder (particle lost or duplicated); ";
+    seen[id] = true;
+    if (grid::reference::cellOf(grid.shape(), glm::vec3(got[j])) != cell) return "WRONG reorder (cell order); ";
+  }
+  return "";
+}
+
 std::vector<std::string> runRow(Env& env, const GridOptions& opt, const grid::ScanConfig& scanShape, bool wallClock,
                                 std::size_t n, double perCell) {
   const std::size_t limit = grid::maxStorageBlockBytes();
   const std::string nText = std::to_string(n);
   if (n * sizeof(glm::vec4) > limit)
-    return {nText, "", "", "", "", "", "", "", "", "", "", "", "", "", "", "",
-            "skipped: " + std::to_string(n * sizeof(glm::vec4) >> 20) + " MiB of positions exceed this driver's SSBO limit of " +
-                std::to_string(limit >> 20) + " MiB"};
+    return {nText,
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "skipped: " + std::to_string(n * sizeof(glm::vec4) >> 20) +
+                " MiB of positions exceed this driver's SSBO limit of " + std::to_string(limit >> 20) + " MiB"};
   // A cube of side s cells of size 1 holding about perCell particles per cell.
   const uint32_t side = std::max<uint32_t>(1, uint32_t(std::lround(std::cbrt(double(n) / perCell))));
-  grid::UniformGrid grid(env.shaders, {.domainMin = glm::vec3(0.0f), .domainMax = glm::vec3(float(side)), .cellSize = 1.0f}, n);
+  grid::UniformGrid grid(env.shaders,
+                         {.domainMin = glm::vec3(0.0f), .domainMax = glm::vec3(float(side)), .cellSize = 1.0f}, n);
   const std::size_t cells = grid.cells();
 
   std::mt19937 rng(uint32_t(n) ^ uint32_t(perCell * 1000));
@@ -166,21 +206,21 @@ std::vector<std::string> runRow(Env& env, const GridOptions& opt, const grid::Sc
     grid.build(positions, n);
     grid.reorder(positions, arrays);
   });
-  std::string note;
-  if (grid.cellStart().read<uint32_t>(1, cells)[0] != n) note += "WRONG grid total; ";
+  std::string note = opt.noCheck ? "" : checkGrid(grid, pos, dst[0]);
 
   // The scan target is stated for N uint32: scan, naive scan and copy of exactly those bytes.
   std::vector<uint32_t> values(n);
-  uint64_t sum = 0;
-  for (uint32_t& v : values) sum += v = rng() % 16;
+  for (uint32_t& v : values) v = rng() % 16;
   gl::Buffer in(n * 4, values.data()), out((n + 1) * 4), copy(n * 4);
   grid::PrefixScan scan(env.shaders, scanShape);
   grid::NaiveScan naive(env.shaders);
   scan.reserve(n);
+  const std::vector<uint32_t> want = opt.noCheck ? std::vector<uint32_t>() : grid::reference::exclusiveScan(values);
   const double uscanMs = medianMs(env.common, wallClock, [&] { scan.run(in, out, n); });
-  if (out.read<uint32_t>(1, n)[0] != uint32_t(sum)) note += "WRONG scan total; ";
+  if (!opt.noCheck && out.read<uint32_t>(n + 1) != want) note += "WRONG scan; ";
   const double naiveMs = medianMs(env.common, wallClock, [&] { naive.run(in, out, n); });
-  if (out.read<uint32_t>(1, n)[0] != uint32_t(sum)) note += "WRONG naive total; ";
+  if (!opt.noCheck && out.read<uint32_t>(n + 1) != want) note += "WRONG naive scan; ";
+  if (note.empty() && !opt.noCheck) note = "checked";
   const double copyMs = medianMs(env.common, wallClock, [&] { in.copyTo(copy, n * 4); });
 
   const double scanBytes = 4.0 * n + 4.0 * (n + 1);
@@ -217,8 +257,8 @@ int runGridBench(Env& env, const GridOptions& opt) {
               wallClock ? "WALL CLOCK around glFinish (this driver's GL timer queries are not meaningful)"
                         : "GL_TIME_ELAPSED queries");
   std::fflush(stdout);
-  Table table({"N", "cells", "ppc", "count_ms", "scan_ms", "reorder_ms", "total_ms", "scanN_ms", "naive_ms",
-               "copy_ms", "scan_GBps", "reorder_GBps", "copy_GBps", "scan/copy%", "naive/scan_x", "grid_MiB", "note"});
+  Table table({"N", "cells", "ppc", "count_ms", "scan_ms", "reorder_ms", "total_ms", "scanN_ms", "naive_ms", "copy_ms",
+               "scan_GBps", "reorder_GBps", "copy_GBps", "scan/copy%", "naive/scan_x", "grid_MiB", "note"});
   for (std::size_t n : sizes) {
     if (n == 0 || n > grid::PrefixScan::kMaxCount) throw Error("--n: sizes must be between 1 and 2^31");
     for (double ppc : perCell) {
@@ -233,7 +273,8 @@ int runGridBench(Env& env, const GridOptions& opt) {
   table.print();
   if (!env.common.csv.empty()) table.writeCsv(env.common.csv);
   if (shapes.size() > 1) {
-    std::printf("\nscan of N uint32 by work-group shape (invocations x uvec4 per invocation; p: scan-then-propagate)\n");
+    std::printf(
+        "\nscan of N uint32 by work-group shape (invocations x uvec4 per invocation; p: scan-then-propagate)\n");
     Table byShape({"N", "shape", "dispatches", "scan_ms", "scan_GBps", "copy_GBps", "scan/copy%", "note"});
     for (std::size_t n : sizes) addShapeRows(env, byShape, wallClock, n, shapes);
     byShape.print();
@@ -253,6 +294,7 @@ Benchmark addGridBench(CLI::App& bench) {
                   "scan work-group shapes, e.g. 256x4,512x4,256x8,256x4p (p: scan-then-propagate; the first "
                   "is used in the main table, several add a table comparing them)")
       ->capture_default_str();
+  sub->add_flag("--no-check", opt->noCheck, "skip comparing each row's grid and scans with the CPU");
   return {sub, [opt](Env& env) { return runGridBench(env, *opt); }};
 }
 

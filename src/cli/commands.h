@@ -16,6 +16,7 @@ Command addRender(CLI::App& app);
 Command addRun(CLI::App& app);
 Command addBench(CLI::App& app);
 Command addSweep(CLI::App& app);
+Command addValidate(CLI::App& app);
 
 // "1280x720" -> width, height (throws CLI::ValidationError style Error otherwise).
 void parseSize(const std::string& text, int& width, int& height);

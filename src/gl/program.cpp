@@ -53,8 +53,11 @@ void Program::dispatchThreads(std::size_t threads) const {
   if (threads == 0) return;
   const std::size_t local = localSize().x;
   std::size_t groups = (threads + local - 1) / local;
-  GLint maxX = 0;
-  glGetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &maxX);
+  static const GLint maxX = [] {  // one GL query per process, not per dispatch
+    GLint v = 0;
+    glGetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &v);
+    return v;
+  }();
   const std::size_t x = std::min<std::size_t>(groups, std::size_t(maxX));
   const std::size_t y = (groups + x - 1) / x;
   glDispatchCompute(GLuint(x), GLuint(y), 1);

@@ -59,9 +59,9 @@ class UniformGrid {
   // (max < min for z) or too many cells. particleCapacity only pre-allocates (build() grows).
   UniformGrid(gl::ShaderLibrary& shaders, const GridParams& params, std::size_t particleCapacity = 0);
 
-  void build(const gl::Buffer& positions, std::size_t count);      // countParticles() + scanCells()
+  void build(const gl::Buffer& positions, std::size_t count);           // countParticles() + scanCells()
   void countParticles(const gl::Buffer& positions, std::size_t count);  // clear, atomicAdd pass
-  void scanCells();                                                 // cellCount -> cellStart
+  void scanCells();                                                     // cellCount -> cellStart
   // Moves each array to cell order for the positions and count of the last build (the positions
   // must be unchanged since). GRID_REORDER_MAX_ARRAYS arrays per dispatch; permutation optional.
   void reorder(const gl::Buffer& positions, std::span<const ReorderArray> arrays, gl::Buffer* permutation = nullptr);
@@ -77,7 +77,7 @@ class UniformGrid {
   glm::uvec3 dims() const { return m_shape.dims; }
   bool is2D() const { return m_shape.dims.z == 1 && m_params.domainMax.z == m_params.domainMin.z; }
   std::size_t cells() const { return m_shape.cells(); }
-  std::size_t particleCount() const { return m_count; }  // of the last build
+  std::size_t particleCount() const { return m_count; }            // of the last build
   const gl::Buffer& cellCount() const { return m_cellCount; }      // uint per cell
   const gl::Buffer& cellStart() const { return m_cellStart; }      // uint per cell + 1 (total)
   const gl::Buffer& indexInCell() const { return m_indexInCell; }  // uint per particle

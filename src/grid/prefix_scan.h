@@ -4,7 +4,9 @@
 //   in  = {2, 0, 3, 1}          (n = 4 uints)
 //   out = {0, 2, 2, 5, 6}       (n + 1 uints)
 //
-// PrefixScan works on blocks of 4096 elements by default, one work group each, in one of two orders:
+// PrefixScan works on blocks of 4096 elements by default, one work group each, in one of two orders
+// (reduce-then-scan: Merrill & Grimshaw 2009; scan-then-propagate: Harris, Sengupta & Owens,
+// GPU Gems 3 ch. 39, 2007):
 //   reduce-then-scan (default), level L of n_L elements:
 //     scan_reduce   blockSums[b] = sum of block b                         reads n_L
 //     (scan blockSums in place: level L + 1, recursively)
@@ -55,8 +57,8 @@ class PrefixScan {
   // out[0..n] = exclusive scan of in[0..n). `in` holds >= n uints, `out` >= n + 1; they may be
   // the same buffer (in place). n = 0 writes out[0] = 0. Throws Error for bad sizes.
   void run(const gl::Buffer& in, gl::Buffer& out, std::size_t n);
-  void reserve(std::size_t n);            // allocates the block sums for n up front
-  std::size_t memoryBytes() const;        // block-sum buffers (bytes)
+  void reserve(std::size_t n);                     // allocates the block sums for n up front
+  std::size_t memoryBytes() const;                 // block-sum buffers (bytes)
   std::size_t dispatchesFor(std::size_t n) const;  // compute dispatches one run(n) issues
   const Config& config() const { return m_config; }
 

@@ -170,9 +170,9 @@ class LifeStage final : public Stage {
       m_setup.seed = int(next.nextU32() % (kMaxSeed + 1u));  // a new seed, itself reproducible
     }
   }
-  // A rules JSON dropped on the window: the web app's "Load system". Overrides Stage::dropFile
-  // where the app has that hook (main); errors show in the panel, nothing is half-loaded.
-  bool dropFile(const std::string& path) {
+  // A rules JSON dropped on the window: the web app's "Load system". Errors show in the panel
+  // (true: the file was this model's to read), nothing is half-loaded.
+  bool dropFile(const std::string& path) override {
     try {
       const life::Rules rules = life::loadRules(path);
       m_model.setRules(rules, true);

@@ -11,8 +11,8 @@
 namespace tidepool {
 
 struct Health {
-  double time = 0;        // simulated seconds at the check
-  double nanCount = 0;    // non-finite values in the state
+  double time = 0;          // simulated seconds at the check
+  double nanCount = 0;      // non-finite values in the state
   double maxMagnitude = 0;  // largest |value| of the watched quantity
 };
 

@@ -1,5 +1,6 @@
 #include "sweep/sweep.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -76,7 +77,9 @@ void drawChart(const Result& result, const std::string& device, const fs::path& 
   {
     std::ofstream out(dat);
     for (const std::string& m : order) {
-      out << "\"" << m << "\" \"y\"\n";
+      std::string title = m;  // gnuplot's enhanced text would take '_' for a subscript
+      std::replace(title.begin(), title.end(), '_', '-');
+      out << "\"" << title << "\" \"y\"\n";
       for (const Row* r : byMethod[m])
         if (std::isfinite(r->x) && std::isfinite(r->y) && (!result.chart.logY || r->y > 0))
           out << csvNumber(r->x) << " " << csvNumber(r->y) << "\n";

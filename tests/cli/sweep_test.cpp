@@ -26,9 +26,10 @@ TEST(Sweep, ParetoFrontKeepsOnlyUndominatedStableRows) {
   EXPECT_FALSE(rows[4].pareto);
 }
 
-TEST(Sweep, RipplesStudiesWriteCsvAndCharts) {
+TEST(Sweep, StudiesWriteCsvAndCharts) {
   test::TempDir dir;
-  for (const std::string study : {"ripples-stability", "ripples-dispersion"}) {
+  for (const std::string study :
+       {"ripples-stability", "ripples-dispersion", "balls-restitution", "swarm-orbit", "swarm-precision"}) {
     auto r = test::runTidepool(
         {"sweep", study, "--quick", "--csv-dir", dir.path().string(), "--chart-dir", dir.path().string()});
     ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
@@ -38,7 +39,7 @@ TEST(Sweep, RipplesStudiesWriteCsvAndCharts) {
     EXPECT_EQ(header.rfind("study,model,method,dt,substeps,resolution,gpu_ms_per_sim_s,", 0), 0u) << header;
     EXPECT_NE(header.find(",stable,pareto,device"), std::string::npos);
     int rows = 0;
-    while (std::getline(csv, line)) rows += line.rfind(study + ",ripples,", 0) == 0;
+    while (std::getline(csv, line)) rows += line.rfind(study + ",", 0) == 0;
     EXPECT_GE(rows, 4);
     const io::Image png = io::readPng(dir / (study + ".png"));
     EXPECT_EQ(png.width, 1000);

@@ -60,7 +60,8 @@ void checkGrid(gl::ShaderLibrary& shaders, const GridParams& params, const std::
     extra[i] = glm::vec4(-float(i), 0.5f, 0.25f, float(i % 7));
   }
   gl::Buffer posBuf = vec4Buffer(pos), velBuf = vec4Buffer(vel), extraBuf = vec4Buffer(extra);
-  gl::Buffer posOut(posBuf.size()), velOut(velBuf.size()), extraOut(extraBuf.size()), perm(std::max<std::size_t>(n, 1) * 4);
+  gl::Buffer posOut(posBuf.size()), velOut(velBuf.size()), extraOut(extraBuf.size()),
+      perm(std::max<std::size_t>(n, 1) * 4);
   grid.build(posBuf, n);
   grid.reorder(posBuf, {{&posBuf, &posOut}, {&velBuf, &velOut}, {&extraBuf, &extraOut}}, &perm);
 
@@ -171,7 +172,8 @@ TEST_F(Grid, MemoryIsReported) {
   UniformGrid grid(shaders(), {.domainMin = {0, 0, 0}, .domainMax = {64, 64, 64}, .cellSize = 1.0f}, 1000);
   const std::size_t cells = 64 * 64 * 64;
   // counts + starts + indexInCell + scan levels (64 + 1 block sums)
-  EXPECT_EQ(grid.memoryBytes(), cells * 4 + (cells + 1) * 4 + 1000 * 4 + (cells / PrefixScan::Config{}.block() + 1) * 4);
+  EXPECT_EQ(grid.memoryBytes(),
+            cells * 4 + (cells + 1) * 4 + 1000 * 4 + (cells / PrefixScan::Config{}.block() + 1) * 4);
 }
 
 TEST_F(Grid, BadInputThrowsOneLineErrors) {

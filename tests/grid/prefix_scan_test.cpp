@@ -23,8 +23,7 @@ std::vector<uint32_t> randomCounts(std::size_t n, uint32_t seed) {
   for (std::size_t i = 0; i < n;) {
     const uint32_t kind = rng() % 8;
     const std::size_t run = std::min<std::size_t>(n - i, 1 + rng() % 300);
-    for (std::size_t k = 0; k < run; ++k, ++i)
-      v[i] = kind < 3 ? 0u : kind < 7 ? rng() % 16 : rng() % (1u << 20);
+    for (std::size_t k = 0; k < run; ++k, ++i) v[i] = kind < 3 ? 0u : kind < 7 ? rng() % 16 : rng() % (1u << 20);
   }
   return v;
 }
@@ -58,7 +57,8 @@ std::vector<std::size_t> edgeSizes(int maxLog2, PrefixScan::Config config = {}) 
   const std::size_t wg = config.groupSize, block = config.block();
   std::vector<std::size_t> sizes = {0, 1, 2, 3, 4, 5, wg - 1, wg, wg + 1, block - 1, block, block + 1};
   for (int k = 2; k <= maxLog2; ++k)
-    for (std::size_t n : {(std::size_t(1) << k) - 1, std::size_t(1) << k, (std::size_t(1) << k) + 1}) sizes.push_back(n);
+    for (std::size_t n : {(std::size_t(1) << k) - 1, std::size_t(1) << k, (std::size_t(1) << k) + 1})
+      sizes.push_back(n);
   return sizes;
 }
 }  // namespace
@@ -100,9 +100,9 @@ TEST_F(Scan, ThreeLevelsBeyondBlockSquared) {
 
 TEST_F(Scan, OtherWorkGroupShapesAndScanThenPropagate) {
   // Shapes smaller and larger than any subgroup: the scan must not depend on the warp size.
-  for (PrefixScan::Config config : {PrefixScan::Config{32, 1}, PrefixScan::Config{64, 3}, PrefixScan::Config{512, 2},
-                                    PrefixScan::Config{1024, 4}, PrefixScan::Config{64, 1, true},
-                                    PrefixScan::Config{256, 4, true}}) {
+  for (PrefixScan::Config config :
+       {PrefixScan::Config{32, 1}, PrefixScan::Config{64, 3}, PrefixScan::Config{512, 2}, PrefixScan::Config{1024, 4},
+        PrefixScan::Config{64, 1, true}, PrefixScan::Config{256, 4, true}}) {
     PrefixScan scan(shaders(), config);
     uint32_t seed = 900;
     for (std::size_t n : edgeSizes(12, config)) {
@@ -165,9 +165,9 @@ TEST_F(Scan, BadSizesThrowOneLineErrors) {
   PrefixScan scan(shaders());
   NaiveScan naive(shaders());
   gl::Buffer small(16), out(64);
-  EXPECT_THROW(scan.run(small, out, 5), Error);   // input holds 4
-  EXPECT_THROW(scan.run(out, small, 4), Error);   // output needs 5
-  EXPECT_THROW(naive.run(out, out, 4), Error);    // naive scan is not in place
+  EXPECT_THROW(scan.run(small, out, 5), Error);  // input holds 4
+  EXPECT_THROW(scan.run(out, small, 4), Error);  // output needs 5
+  EXPECT_THROW(naive.run(out, out, 4), Error);   // naive scan is not in place
   const std::size_t tooBig = maxStorageBlockBytes() / 4;
   try {
     scan.run(out, out, tooBig);

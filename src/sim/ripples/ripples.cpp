@@ -159,6 +159,7 @@ void Ripples::watch() {
 }
 
 void Ripples::judge(const Health& h) {
+  m_lastMaxHeight = h.maxMagnitude;
   if (h.nanCount == 0 && h.maxMagnitude <= heightBound()) {
     std::swap(m_pending, m_good);
     m_goodTime = h.time;

@@ -5,6 +5,7 @@
 //   Using Height Fields" (GDC 2008).
 #pragma once
 
+#include <cmath>
 #include <optional>
 #include <random>
 #include <string>
@@ -46,6 +47,7 @@ class Ripples {
   bool recover();              // back to the last good state with half the time step; false if none
   void flushChecks();          // waits for the check in flight (end of a headless run)
   double heightBound() const;  // |h| above this counts as a blow-up (m, or seed units)
+  double lastMaxHeight() const { return m_lastMaxHeight; }  // max |h| of the last check (NaN before)
 
  private:
   void allocate();
@@ -71,6 +73,7 @@ class Ripples {
   int m_framesSinceCheck = 0;
   double m_lastDt = 0;
   std::optional<DivergenceReport> m_divergence;
+  double m_lastMaxHeight = NAN;
   std::mt19937 m_rng{12345};
 };
 

@@ -1,0 +1,11 @@
+// Binding points of the balls model, shared by C++ (src/sim/balls) and GLSL. At most 8 storage
+// blocks per kernel (GL 4.3's guaranteed minimum).
+#define BALLS_POS_IN 0         // vec4 (position m, w = 1), cell order
+#define BALLS_VEL_IN 1         // vec4 (velocity m/s, w = foam), cell order
+#define BALLS_POS_OUT 2        // vec4, written
+#define BALLS_VEL_OUT 3        // vec4, written
+#define BALLS_ACC 4            // vec4 acceleration m/s^2 (velocity Verlet)
+#define BALLS_CELL_START 5     // uint per grid cell + 1 (grid/bindings.glsl's layout)
+#define BALLS_OBST_POS 6       // vec4 obstacle particles (own frame), cell order of the obstacle grid
+#define BALLS_OBST_CELL_START 7  // uint per obstacle-grid cell + 1
+#define BALLS_STATS 2          // stats pass: 8 floats of partial sums per work group (reuses POS_OUT)

@@ -1,0 +1,63 @@
+#version 430 core
+// One step of the balls (explicit or symplectic Euler), or the force-and-kick half of velocity
+// Verlet: contact accelerations from every body within 2r, the walls, gravity, then integration.
+// Reads the cell-ordered arrays, writes the other buffers (no read/write hazard between balls).
+#include "balls/bindings.glsl"
+
+layout(local_size_x = 128) in;
+#include "common/index.glsl"
+
+layout(std430, binding = BALLS_POS_IN) readonly buffer PosIn { vec4 posIn[]; };
+layout(std430, binding = BALLS_VEL_IN) readonly buffer VelIn { vec4 velIn[]; };
+layout(std430, binding = BALLS_VEL_OUT) writeonly buffer VelOut { vec4 velOut[]; };
+#ifdef INTEGRATOR_VERLET
+layout(std430, binding = BALLS_ACC) writeonly buffer AccOut { vec4 accOut[]; };
+uniform float uKick;  // fraction of dt·a added to the (half-step) velocity: 0.5, or 0 to only evaluate a
+#else
+layout(std430, binding = BALLS_POS_OUT) writeonly buffer PosOut { vec4 posOut[]; };
+#endif
+
+#include "balls/contact.glsl"
+
+vec3 gAccel;
+vec3 gVelocity;
+void onContact(vec3 n, float overlap, vec3 otherVelocity, float massRatio, float share) {
+  gAccel += contactAccel(n, overlap, gVelocity - otherVelocity, massRatio, share);
+}
+
+#include "balls/neighbours.glsl"
+#include "balls/walls.glsl"
+
+uniform uint uCount;
+uniform vec3 uGravity;    // m/s^2, rotated with the domain
+uniform float uDecay;     // exp(−damping·dt)
+uniform float uFoamGain;  // per m travelled
+uniform float uFoamDecay; // factor per step
+
+void main() {
+  const uint i = globalIndex();
+  if (i >= uCount) return;
+  const vec3 p = posIn[i].xyz;
+  gVelocity = velIn[i].xyz;
+  gAccel = uGravity;
+  forEachContact(i, p, gVelocity);
+  gAccel += wallsAccel(p, gVelocity);
+  float foam = velIn[i].w;
+#ifdef INTEGRATOR_VERLET
+  const vec3 v = (gVelocity + uKick * uDt * gAccel) * (uKick > 0.0 ? uDecay : 1.0);
+  accOut[i] = vec4(gAccel, 0.0);
+  velOut[i] = vec4(v, foam);
+#else
+#ifdef INTEGRATOR_EXPLICIT
+  vec3 x = p + uDt * gVelocity;
+  vec3 v = (gVelocity + uDt * gAccel) * uDecay;
+#else
+  vec3 v = (gVelocity + uDt * gAccel) * uDecay;
+  vec3 x = p + uDt * v;
+#endif
+  confineToDomain(x, v);
+  foam = min(1.0, (foam + uFoamGain * uDt * length(gVelocity)) * uFoamDecay);
+  posOut[i] = vec4(x, posIn[i].w);
+  velOut[i] = vec4(v, foam);
+#endif
+}

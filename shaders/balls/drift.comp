@@ -1,0 +1,29 @@
+#version 430 core
+// Velocity Verlet, first half (kick-drift): v½ = v + dt/2 · a,  x += dt · v½, in place.
+// The force-and-kick half is collide.comp with INTEGRATOR_VERLET.
+#include "balls/bindings.glsl"
+
+layout(local_size_x = 128) in;
+#include "common/index.glsl"
+
+layout(std430, binding = BALLS_POS_OUT) buffer Pos { vec4 pos[]; };
+layout(std430, binding = BALLS_VEL_OUT) buffer Vel { vec4 vel[]; };
+layout(std430, binding = BALLS_ACC) readonly buffer Acc { vec4 acc[]; };
+
+uniform uint uCount;
+uniform float uDt;
+uniform float uRadius;
+uniform float uFoamGain;
+uniform float uFoamDecay;
+#include "balls/walls.glsl"
+
+void main() {
+  const uint i = globalIndex();
+  if (i >= uCount) return;
+  vec3 v = vel[i].xyz + 0.5 * uDt * acc[i].xyz;
+  vec3 x = pos[i].xyz + uDt * v;
+  confineToDomain(x, v);
+  const float foam = min(1.0, (vel[i].w + uFoamGain * uDt * length(v)) * uFoamDecay);
+  pos[i] = vec4(x, pos[i].w);
+  vel[i] = vec4(v, foam);
+}

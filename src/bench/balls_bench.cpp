@@ -1,0 +1,98 @@
+// `tidepool bench balls <scene> --n 65536,... --steps 10:310`: median GPU ms per step over a
+// window of steps, split by pass, with steps per second and GPU bytes per ball. --n sets the
+// ball count of lattice scenes (bench-lattice); other scenes run as they are.
+#include <chrono>
+#include <cstdio>
+#include <map>
+#include <regex>
+
+#include "base/error.h"
+#include "bench/bench.h"
+#include "scene/balls_stage.h"
+#include "sim/balls/balls.h"
+
+namespace tidepool::bench {
+namespace {
+
+struct Window {
+  int first = 10, last = 310;  // steps [first, last) are timed
+};
+
+Window parseWindow(const std::string& text) {
+  static const std::regex form(R"((\d+):(\d+))");
+  std::smatch m;
+  if (!std::regex_match(text, m, form) || std::stoi(m[1]) >= std::stoi(m[2]))
+    throw Error("--steps '" + text + "' is not FIRST:LAST with FIRST < LAST (e.g. 10:310)");
+  return {std::stoi(m[1]), std::stoi(m[2])};
+}
+
+int run(Env& env, const std::string& sceneName, const std::string& sizes, const std::string& window) {
+  const Scene scene = loadScene(resolveScenePath(sceneName));
+  const balls::Params base = ballsParams(scene);
+  const Window w = parseWindow(window);
+  const bool lattice = base.fill == balls::Fill::Lattice;
+  std::printf("balls benchmark on %s: scene %s, steps %d..%d, medians per step\n", env.device.c_str(),
+              scene.name.c_str(), w.first, w.last);
+  Table table({"balls", "r", "grid ms", "drift ms", "collide ms", "ms/step", "steps/s", "bytes/ball"});
+  std::vector<std::size_t> counts = lattice ? parseSizes(sizes) : std::vector<std::size_t>{0};
+  for (std::size_t n : counts) {
+    balls::Params p = base;
+    if (lattice) p.latticeCount = int(n);
+    balls::Balls model(env.shaders, p);
+    gl::GpuProfiler profiler;
+    std::map<std::string, std::vector<double>> passes;
+    std::vector<double> totals, wall;
+    const bool software = softwareRenderer();  // time whole steps on the wall clock there
+    for (int step = 0; step < w.last; ++step) {
+      if (software) glFinish();
+      const auto start = std::chrono::steady_clock::now();
+      profiler.beginFrame();
+      model.stepOnce(&profiler);
+      profiler.endFrame();
+      if (software) {
+        glFinish();
+        if (step >= w.first)
+          wall.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+      }
+      if (step + 1 == w.first) {
+        profiler.finish();
+        profiler.takeCompleted();  // warm-up steps are not timed
+      }
+    }
+    profiler.finish();
+    for (const auto& frame : profiler.takeCompleted()) {
+      double total = 0;
+      for (const auto& [name, ms] : frame.passes) {
+        passes[name].push_back(ms);
+        total += ms;
+      }
+      totals.push_back(total);
+    }
+    auto med = [&](const char* name) { return passes.count(name) ? median(passes[name]) : 0.0; };
+    const double perStep = software ? median(wall) : median(totals);
+    table.add({std::to_string(model.count()), fixed(model.radius(), 5), fixed(med("balls.grid"), 4),
+               fixed(med("balls.drift"), 4), fixed(med("balls.collide"), 4), fixed(perStep, 4),
+               fixed(perStep > 0 ? 1000.0 / perStep : 0.0, 0), std::to_string(model.bytesPerBall())});
+  }
+  table.print();
+  if (const std::string caveat = timingCaveat(env.device); !caveat.empty())
+    std::printf("%s; its per-pass timer queries read 0\n", caveat.c_str());
+  if (!env.common.csv.empty()) table.writeCsv(env.common.csv);
+  return 0;
+}
+
+}  // namespace
+
+Benchmark addBallsBench(CLI::App& bench) {
+  auto* sub = bench.add_subcommand("balls", "balls step: ms per pass over a step window, steps/s, bytes per ball");
+  struct Opts {
+    std::string scene = "bench-lattice", sizes = "65536,1M,4M,16M", window = "10:310";
+  };
+  auto o = std::make_shared<Opts>();
+  sub->add_option("scene", o->scene, "scene (default bench-lattice)");
+  sub->add_option("--n", o->sizes, "ball counts for lattice scenes, e.g. 65536,1M,16M");
+  sub->add_option("--steps", o->window, "timed step window FIRST:LAST");
+  return {sub, [o](Env& env) { return run(env, o->scene, o->sizes, o->window); }};
+}
+
+}  // namespace tidepool::bench

@@ -1,0 +1,99 @@
+#include "scene/balls_stage.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "render/balls_view.h"
+#include "scene/param_json.h"
+
+namespace tidepool {
+namespace {
+
+constexpr int kStatsInterval = 30;  // frames between statistics read-backs
+
+struct ViewSettings {
+  BallsViewParams look;
+  OrbitCameraParams camera{glm::vec3(0.5f, 0.5f, 0.35f), 2.4f, -1.0f, 0.45f, 45.0f};
+};
+
+void visit(ParamVisitor& v, ViewSettings& s) {
+  visit(v, s.look);
+  if (v.beginGroup({"camera", "Camera", "left drag rotates, right drag pans, wheel zooms"})) {
+    visit(v, s.camera);
+    v.endGroup();
+  }
+}
+
+void visitAll(ParamVisitor& v, balls::Params& model, ViewSettings& view) {
+  balls::visit(v, model);
+  if (v.beginGroup({"view", "View", "how the balls are drawn"})) {
+    visit(v, view);
+    v.endGroup();
+  }
+}
+
+class BallsStage final : public Stage {
+ public:
+  BallsStage(gl::ShaderLibrary& shaders, const balls::Params& model, const ViewSettings& view)
+      : m_model(shaders, model), m_view(shaders), m_settings(view) {}
+
+  void visitParams(ParamVisitor& v) override { visitAll(v, m_model.params(), m_settings); }
+  void reset() override {
+    m_model.reset();
+    m_frames = 0;
+  }
+  void step(double, gl::GpuProfiler& profiler) override {
+    m_model.step(profiler);
+    if (m_frames++ % kStatsInterval == 0) m_stats = m_model.stats();
+  }
+  void render(RenderTarget& target, gl::GpuProfiler& profiler) override {
+    m_view.params() = m_settings.look;
+    m_view.camera().params() = m_settings.camera;
+    m_view.render(m_model, target, profiler);
+  }
+  void input(const Input& in) override {
+    m_view.camera().params() = m_settings.camera;
+    m_view.camera().handle(in);
+    m_settings.camera = m_view.camera().params();
+  }
+  double simTime() const override { return m_model.time(); }
+  std::pair<std::string, double> liveMetric() const override {
+    return {"max overlap (% of r)", m_frames > 0 ? 100.0 * m_stats.maxOverlap : NAN};
+  }
+  std::string status() const override {
+    char buf[256];
+    std::snprintf(buf, sizeof buf,
+                  "%zu balls + %zu fixed, r = %.4g m; KE %.4g, PE %.4g; overlap max %.1f%% mean %.2f%% of r",
+                  m_model.count(), m_model.obstacleCount(), m_model.radius(), m_stats.kinetic, m_stats.potential,
+                  100.0 * m_stats.maxOverlap, 100.0 * m_stats.meanOverlap);
+    return buf;
+  }
+
+ private:
+  balls::Balls m_model;
+  BallsView m_view;
+  ViewSettings m_settings;
+  balls::Stats m_stats;
+  long m_frames = 0;
+};
+
+}  // namespace
+
+balls::Params ballsParams(const Scene& scene) {
+  if (scene.model != "balls") throw Error(scene.file.string() + ": not a balls scene (model " + scene.model + ")");
+  balls::Params model;
+  ViewSettings view;
+  readParams(
+      scene.params, [&](ParamVisitor& v) { visitAll(v, model, view); }, scene.file.string() + ": params");
+  return model;
+}
+
+std::unique_ptr<Stage> createBallsStage(const io::Json& params, const std::string& where, gl::ShaderLibrary& shaders) {
+  balls::Params model;
+  ViewSettings view;
+  readParams(
+      params, [&](ParamVisitor& v) { visitAll(v, model, view); }, where);
+  return std::make_unique<BallsStage>(shaders, model, view);
+}
+
+}  // namespace tidepool

@@ -1,0 +1,153 @@
+#include "sim/balls/balls_init.h"
+
+#include <cmath>
+#include <random>
+
+namespace tidepool::balls {
+namespace {
+
+constexpr float kPi = 3.14159265358979f;
+
+void addJitter(std::vector<glm::vec4>& points, float amount) {
+  if (amount <= 0) return;
+  std::mt19937 rng(1234);
+  std::uniform_real_distribution<float> u(-amount, amount);
+  for (glm::vec4& q : points) q += glm::vec4(u(rng), u(rng), u(rng), 0.0f);
+}
+
+float capsuleDistance(glm::vec3 q, glm::vec3 c, float halfLength, float radius) {
+  const float x = std::clamp(q.x - c.x, -halfLength, halfLength);
+  return glm::length(q - glm::vec3(c.x + x, c.y, c.z)) - radius;
+}
+
+}  // namespace
+
+std::vector<glm::vec3> hcpLattice(glm::vec3 lo, glm::vec3 hi, float r) {
+  std::vector<glm::vec3> out;
+  const float sx = 2 * r, sy = r * std::sqrt(3.0f), sz = 2 * r * std::sqrt(6.0f) / 3;
+  for (int k = 0; lo.z + k * sz <= hi.z; ++k) {
+    const float z = lo.z + k * sz;
+    const float yShift = (k % 4 == 1 || k % 4 == 3) ? sy / 3 : (k % 4 == 2 ? 2 * sy / 3 : 0.0f);
+    for (int j = 0; lo.y + yShift + j * sy <= hi.y; ++j) {
+      const float y = lo.y + yShift + j * sy;
+      const float xShift = ((k % 2) ? r : 0.0f) + ((j % 2) ? r : 0.0f);
+      for (int i = 0; lo.x + std::fmod(xShift, sx) + i * sx <= hi.x; ++i)
+        out.emplace_back(lo.x + std::fmod(xShift, sx) + i * sx, y, z);
+    }
+  }
+  return out;
+}
+
+Params resolved(const Params& p) {
+  Params q = p;
+  if (p.fill != Fill::Lattice || !p.latticeScaling) return q;
+  const int side = int(std::ceil(std::cbrt(double(p.latticeCount)) - 1e-9));
+  int g = 1;
+  while (g < side) g *= 2;
+  q.radius = (p.domainMax.x - p.domainMin.x) / (2.0f * float(g));
+  q.gravity = p.gravity * (64.0f / float(g));
+  return q;
+}
+
+std::vector<glm::vec4> waterParticles(const Params& input) {
+  const Params p = resolved(input);
+  const float r = p.radius;
+  const glm::vec3 lo = p.domainMin + r, hi = p.domainMax - r;
+  std::vector<glm::vec4> out;
+  switch (p.fill) {
+    case Fill::Block:
+    case Fill::Slab: {
+      glm::vec3 a = glm::max(p.fillMin + r, lo), b = glm::min(p.fillMax - r, hi);
+      if (p.fill == Fill::Slab) {
+        a = lo;
+        b = glm::vec3(hi.x, hi.y, std::min(hi.z, p.domainMin.z + p.slabHeight - r));
+      }
+      for (const glm::vec3& q : hcpLattice(a, b, r))
+        if (p.obstacle == Shape::None || !insideObstacle(p, q)) out.emplace_back(q, 1.0f);
+      break;
+    }
+    case Fill::Random: {
+      std::mt19937 rng(42);
+      const glm::vec3 a = glm::max(p.fillMin, lo), b = glm::min(p.fillMax, hi);
+      std::uniform_real_distribution<float> ux(a.x, b.x), uy(a.y, b.y), uz(a.z, b.z);
+      for (int i = 0; i < p.randomCount; ++i) out.emplace_back(ux(rng), uy(rng), uz(rng), 1.0f);
+      break;
+    }
+    case Fill::Lattice: {
+      // CUDA sample: a cubic lattice of spacing 2r from the corner, edge ceil(N^(1/3)).
+      const int side = int(std::ceil(std::cbrt(double(p.latticeCount)) - 1e-9));
+      for (int i = 0; int(out.size()) < p.latticeCount; ++i) {
+        const int x = i % side, y = (i / side) % side, z = i / (side * side);
+        out.emplace_back(lo + 2.0f * r * glm::vec3(x, y, z), 1.0f);
+      }
+      break;
+    }
+    case Fill::None: break;
+  }
+  addJitter(out, p.jitter * r);
+  return out;
+}
+
+bool insideObstacle(const Params& p, glm::vec3 q) {
+  const glm::vec3 c = p.obstacleCentre, s = p.obstacleSize;
+  const float r = p.radius;
+  switch (p.obstacle) {
+    case Shape::None: return false;
+    case Shape::Sphere: return glm::length(q - c) <= s.x;
+    case Shape::Box: return glm::all(glm::lessThanEqual(glm::abs(q - c), s));
+    case Shape::Capsule: return capsuleDistance(q, c, s.z, s.x) <= 0.0f;
+    case Shape::Cup: {
+      // Open cylinder with a bottom: radius s.x, height s.z from c.z up, walls 2.5 balls thick.
+      const float wall = std::max(2.5f * r * 2.0f, 0.12f * s.x);
+      const float rho = glm::length(glm::vec2(q - c));
+      if (q.z < c.z || q.z > c.z + s.z || rho > s.x) return false;
+      return rho >= s.x - wall || q.z <= c.z + wall;
+    }
+    case Shape::Helix: {
+      // A ramp winding 1.5 turns up from c.z to c.z + s.z between radii 0.3 s.x and s.x.
+      const float rho = glm::length(glm::vec2(q - c));
+      if (rho < 0.3f * s.x || rho > s.x) return false;
+      const float turns = 1.5f, thickness = 3.0f * r;
+      const float pitch = s.z / turns;
+      float angle = std::atan2(q.y - c.y, q.x - c.x);
+      if (angle < 0) angle += 2 * kPi;
+      for (int t = 0; t < 2; ++t) {
+        const float rampZ = c.z + pitch * (angle / (2 * kPi) + float(t));
+        if (rampZ <= c.z + s.z && std::abs(q.z - rampZ) <= 0.5f * thickness) return true;
+      }
+      return false;
+    }
+  }
+  return false;
+}
+
+std::vector<glm::vec4> obstacleParticles(const Params& p) {
+  std::vector<glm::vec4> out;
+  if (p.obstacle == Shape::None) return out;
+  const float r = p.radius;
+  glm::vec3 lo = p.obstacleCentre - glm::vec3(p.obstacleSize.x, p.obstacleSize.x, p.obstacleSize.z) - 2 * r;
+  glm::vec3 hi = p.obstacleCentre + glm::vec3(p.obstacleSize.x, p.obstacleSize.x, p.obstacleSize.z) + 2 * r;
+  if (p.obstacle == Shape::Box) {
+    lo = p.obstacleCentre - p.obstacleSize - r;
+    hi = p.obstacleCentre + p.obstacleSize + r;
+  } else if (p.obstacle == Shape::Capsule) {
+    lo = p.obstacleCentre - glm::vec3(p.obstacleSize.z + p.obstacleSize.x, p.obstacleSize.x, p.obstacleSize.x) - r;
+    hi = p.obstacleCentre + glm::vec3(p.obstacleSize.z + p.obstacleSize.x, p.obstacleSize.x, p.obstacleSize.x) + r;
+  }
+  const float d = 2.0f * r;
+  for (const glm::vec3& q : hcpLattice(lo, hi, r)) {
+    if (!insideObstacle(p, q)) continue;
+    if (p.obstacleShell) {
+      // Keep particles with a neighbour position outside: the surface layer only.
+      bool surface = false;
+      for (const glm::vec3 o : {glm::vec3(d, 0, 0), glm::vec3(-d, 0, 0), glm::vec3(0, d, 0), glm::vec3(0, -d, 0),
+                                glm::vec3(0, 0, d), glm::vec3(0, 0, -d)})
+        surface |= !insideObstacle(p, q + o);
+      if (!surface) continue;
+    }
+    out.emplace_back(q, 0.0f);
+  }
+  return out;
+}
+
+}  // namespace tidepool::balls

@@ -1,0 +1,70 @@
+#include "sim/balls/balls_params.h"
+
+namespace tidepool::balls {
+
+void visit(ParamVisitor& v, Params& p) {
+  if (v.beginGroup({"particles", "Particles", "count, size and initial state (re-creates the particles)"})) {
+    v.real({"radius", "Radius", "r, m"}, p.radius, 1e-4f, 0.5f);
+    v.vector({"domain_min", "Domain min", "m"}, p.domainMin, -100.0f, 100.0f);
+    v.vector({"domain_max", "Domain max", "m"}, p.domainMax, -100.0f, 100.0f);
+    v.choice({"fill", "Fill", "block, slab, random, lattice (benchmark) or none"}, p.fill, kFillNames);
+    v.vector({"fill_min", "Fill min", "block / random region, m"}, p.fillMin, -100.0f, 100.0f);
+    v.vector({"fill_max", "Fill max", "block / random region, m"}, p.fillMax, -100.0f, 100.0f);
+    v.real({"slab_height", "Slab height", "m"}, p.slabHeight, 0.0f, 100.0f);
+    v.integer({"random_count", "Random count", "particles"}, p.randomCount, 1, 1 << 26);
+    v.integer({"lattice_count", "Lattice count", "particles"}, p.latticeCount, 1, 1 << 26);
+    v.flag({"lattice_scaling", "Lattice scaling", "r = 1/G and gravity x 64/G as the CUDA sample"}, p.latticeScaling);
+    v.real({"jitter", "Jitter", "initial noise, fraction of r"}, p.jitter, 0.0f, 0.5f);
+    v.integer({"max_particles", "Max particles", "refuse larger requests"}, p.maxParticles, 1, 1 << 28);
+    v.endGroup();
+  }
+  if (v.beginGroup({"engine", "Engine", "time step, contact law, integrator"})) {
+    v.choice({"contact", "Contact", "penalty (the seed's), spring-dashpot (linear DEM) or cuda-sample"}, p.contact,
+             kContactNames);
+    v.choice({"integrator", "Integrator", "explicit Euler, symplectic Euler or velocity Verlet"}, p.integrator,
+             kIntegratorNames);
+    v.real({"dt", "Time step", "s"}, p.dt, 1e-6f, 1.0f);
+    v.integer({"substeps", "Substeps", "steps per frame"}, p.substeps, 1, 1000);
+    v.vector({"gravity", "Gravity", "m/s^2"}, p.gravity, -1000.0f, 1000.0f);
+    v.real({"damping", "Damping", "1/s, frame-rate independent"}, p.damping, 0.0f, 1000.0f);
+    v.real({"contact_time", "Contact time", "t_c of spring-dashpot, s"}, p.contactTime, 1e-6f, 10.0f);
+    v.real({"restitution", "Restitution", "e of spring-dashpot"}, p.restitution, 0.01f, 1.0f);
+    v.real({"friction", "Friction", "tangential Coulomb coefficient (spring-dashpot)"}, p.friction, 0.0f, 2.0f);
+    v.real({"penalty_factor", "Penalty factor", "seed: 0.96"}, p.penaltyFactor, 0.0f, 2.0f);
+    v.real({"cuda_spring", "CUDA spring", "per-step velocity change per overlap"}, p.cudaSpring, 0.0f, 2.0f);
+    v.real({"cuda_damping", "CUDA damping", "per step"}, p.cudaDamping, 0.0f, 1.0f);
+    v.real({"cuda_shear", "CUDA shear", "per step"}, p.cudaShear, 0.0f, 1.0f);
+    v.real({"cuda_boundary_damping", "CUDA wall factor", "velocity factor at walls"}, p.cudaBoundaryDamping, -1.0f,
+           1.0f);
+    v.real({"foam_gain", "Foam gain", "per m of travel"}, p.foamGain, 0.0f, 1000.0f);
+    v.real({"foam_decay", "Foam decay", "factor per 0.5 ms"}, p.foamDecay, 0.5f, 1.0f);
+    v.endGroup();
+  }
+  if (v.beginGroup({"walls", "Walls", "piston and domain rotation"})) {
+    v.integer({"piston_axis", "Piston axis", "0 none, 1 x, 2 y, 3 z: that axis' max wall moves"}, p.pistonAxis, 0, 3);
+    v.real({"piston_travel", "Piston travel", "fraction of the domain"}, p.pistonTravel, 0.0f, 0.9f);
+    v.real({"piston_period", "Piston period", "s"}, p.pistonPeriod, 0.01f, 1000.0f);
+    v.real({"rotation", "Rotation", "degrees about x (gravity follows)"}, p.rotation, -360.0f, 360.0f);
+    v.real({"rotation_rate", "Rotation rate", "degrees per s"}, p.rotationRate, -3600.0f, 3600.0f);
+    v.endGroup();
+  }
+  if (v.beginGroup({"tap", "Tap", "emits balls over time"})) {
+    v.flag({"enabled", "Enabled", ""}, p.tap);
+    v.vector({"position", "Position", "nozzle centre, m"}, p.tapPosition, -100.0f, 100.0f);
+    v.vector({"direction", "Direction", "of the jet"}, p.tapDirection, -1.0f, 1.0f);
+    v.real({"speed", "Speed", "m/s"}, p.tapSpeed, 0.0f, 100.0f);
+    v.real({"radius", "Nozzle radius", "m"}, p.tapRadius, 0.0f, 10.0f);
+    v.integer({"max", "Max balls", "the tap stops after adding this many"}, p.tapMax, 0, 1 << 26);
+    v.endGroup();
+  }
+  if (v.beginGroup({"obstacle", "Obstacle", "fixed particles from a shape (rebuilt when edited)"})) {
+    v.choice({"shape", "Shape", "none, sphere, box, capsule, cup or helix"}, p.obstacle, kShapeNames);
+    v.flag({"shell", "Shell only", "surface shell instead of a solid fill"}, p.obstacleShell);
+    v.vector({"centre", "Centre", "m"}, p.obstacleCentre, -100.0f, 100.0f);
+    v.vector({"size", "Size", "half extents (box), radius x and height z (others), m"}, p.obstacleSize, 0.0f, 100.0f);
+    v.real({"spin", "Spin", "rad/s about the vertical axis"}, p.obstacleSpin, -100.0f, 100.0f);
+    v.endGroup();
+  }
+}
+
+}  // namespace tidepool::balls

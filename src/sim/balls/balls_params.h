@@ -1,0 +1,86 @@
+// Parameters of the balls model: N equal balls of radius r in a box, contact model, integrator,
+// walls (movable), gravity (rotating with the domain), damping; declared once for JSON and UI.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <glm/glm.hpp>
+#include <string>
+
+#include "scene/param.h"
+
+namespace tidepool::balls {
+
+enum class Contact { Penalty, SpringDashpot, CudaSample };
+constexpr std::array<const char*, 3> kContactNames = {"penalty", "spring-dashpot", "cuda-sample"};
+enum class Integrator { ExplicitEuler, SymplecticEuler, VelocityVerlet };
+constexpr std::array<const char*, 3> kIntegratorNames = {"explicit-euler", "symplectic-euler", "verlet"};
+enum class Fill { Block, Slab, Random, Lattice, None };
+constexpr std::array<const char*, 5> kFillNames = {"block", "slab", "random", "lattice", "none"};
+enum class Shape { None, Sphere, Box, Capsule, Cup, Helix };
+constexpr std::array<const char*, 6> kShapeNames = {"none", "sphere", "box", "capsule", "cup", "helix"};
+
+struct Params {
+  // Particles and domain
+  float radius = 0.01f;                                 // r, m
+  glm::vec3 domainMin{0.0f}, domainMax{1.0f};           // box, m
+  Fill fill = Fill::Block;                              // initial water
+  glm::vec3 fillMin{0.0f}, fillMax{0.25f, 1.0f, 0.5f};  // block / random region, m
+  float slabHeight = 0.2f;                              // slab: water up to this height, m
+  int randomCount = 10000;                              // random fill: particles
+  int latticeCount = 65536;                             // lattice (bench): particles on a cubic lattice at the corner
+  bool latticeScaling = true;                           // lattice: r = width/(2G), gravity x 64/G (CUDA sample)
+  float jitter = 0.001f;                                // initial position noise, fraction of r
+  int maxParticles = 16 << 20;                          // refuse larger requests before allocating
+  // Engine
+  Contact contact = Contact::SpringDashpot;
+  Integrator integrator = Integrator::SymplecticEuler;
+  float dt = 5e-4f;                       // s per step
+  int substeps = 8;                       // steps per frame
+  glm::vec3 gravity{0.0f, 0.0f, -9.81f};  // m/s^2 in the unrotated domain
+  float damping = 0.0f;                   // 1/s: v *= exp(-damping dt)
+  // spring-dashpot: k and gamma from the contact duration and restitution (per unit effective mass)
+  float contactTime = 0.01f;  // t_c, s
+  float restitution = 0.5f;   // e
+  float friction = 0.0f;      // Coulomb coefficient (tangential), 0: frictionless
+  // penalty (the seed's): velocity change 0.96 * share * overlap per step; walls 2 * overlap
+  float penaltyFactor = 0.96f;
+  // cuda-sample: per-step velocity changes (NVIDIA CUDA "particles" sample)
+  float cudaSpring = 0.5f, cudaDamping = 0.02f, cudaShear = 0.1f, cudaBoundaryDamping = -0.5f;
+  // Walls: the piston moves one wall in and out; the domain may rotate about x (gravity follows)
+  int pistonAxis = 0;         // 0 none, 1 x, 2 y, 3 z (the max wall of that axis)
+  float pistonTravel = 0.5f;  // fraction of the domain the wall travels
+  float pistonPeriod = 4.0f;  // s per in-and-out
+  float rotation = 0.0f;      // degrees about x
+  float rotationRate = 0.0f;  // degrees per s
+  // Obstacle: fixed particles from a shape, optionally spinning about the vertical axis
+  Shape obstacle = Shape::None;
+  bool obstacleShell = false;  // a surface shell instead of a solid fill
+  glm::vec3 obstacleCentre{0.5f, 0.5f, 0.4f};
+  glm::vec3 obstacleSize{0.2f, 0.2f, 0.2f};  // half extents / radius (x) and height (z), per shape
+  float obstacleSpin = 0.0f;                 // rad/s about the vertical axis through its centre
+  // Tap: emits balls over time (up to tapMax in total) from a disc facing tapDirection
+  bool tap = false;
+  glm::vec3 tapPosition{0.5f, 0.5f, 0.05f};  // m
+  glm::vec3 tapDirection{0.0f, 0.0f, 1.0f};
+  float tapSpeed = 2.5f;    // m/s
+  float tapRadius = 0.04f;  // nozzle radius, m
+  int tapMax = 20000;       // balls the tap adds at most
+  // Foam (for the renderer): grows with speed, decays
+  float foamGain = 1.0f, foamDecay = 0.997f;  // seed: 10 in its slower units
+};
+
+void visit(ParamVisitor& v, Params& p);
+
+// Spring constant and dashpot coefficient per unit effective mass from t_c and e:
+//   k = (pi^2 + ln^2 e) / t_c^2,  gamma = -2 ln e / t_c   (linear spring-dashpot, exact t_c and e)
+inline float springPerMass(const Params& p) {
+  const float le = std::log(std::max(p.restitution, 1e-6f));
+  return (9.8696044f + le * le) / (p.contactTime * p.contactTime);
+}
+inline float dashpotPerMass(const Params& p) {
+  return -2.0f * std::log(std::max(p.restitution, 1e-6f)) / p.contactTime;
+}
+
+}  // namespace tidepool::balls

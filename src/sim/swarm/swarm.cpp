@@ -1,0 +1,157 @@
+#include "sim/swarm/swarm.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/gtc/packing.hpp>
+
+#include "base/error.h"
+#include "swarm/bindings.glsl"
+
+namespace tidepool::sim {
+namespace {
+
+std::string mib(double bytes) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.0f MiB", bytes / (1024.0 * 1024.0));
+  return buf;
+}
+
+std::string countText(std::size_t n) {
+  if (n % (1 << 20) == 0) return std::to_string(n >> 20) + "M";
+  return std::to_string(n);
+}
+
+}  // namespace
+
+std::size_t swarmBytesPerParticle(Storage storage) { return storage == Storage::Fp16 ? 8 : 16; }
+
+void checkSwarmFits(std::size_t count, Storage storage, std::size_t extraBytesPerParticle) {
+  const double stateBytes = double(count) * double(swarmBytesPerParticle(storage));
+  const char* name = kStorageNames[std::size_t(storage)];
+  GLint64 maxBlock = 0;
+  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
+  if (maxBlock > 0 && stateBytes > double(maxBlock))
+    throw Error("swarm: " + countText(count) + " particles need " + mib(stateBytes) + " of " + name +
+                " state, more than this GPU's GL_MAX_SHADER_STORAGE_BLOCK_SIZE (" + mib(double(maxBlock)) +
+                "); use fewer particles" + (storage == Storage::Fp32 ? " or storage \"fp16\"" : ""));
+  if (GLAD_GL_NVX_gpu_memory_info) {
+    GLint freeKb = 0;
+    glGetIntegerv(GL_GPU_MEMORY_INFO_CURRENT_AVAILABLE_VIDMEM_NVX, &freeKb);
+    const double need = stateBytes + double(count) * double(extraBytesPerParticle);
+    if (freeKb > 0 && need > 0.9 * double(freeKb) * 1024.0)
+      throw Error("swarm: " + countText(count) + " particles need " + mib(need) + " but only " +
+                  mib(double(freeKb) * 1024.0) + " of GPU memory is free; use fewer particles");
+  }
+}
+
+void visit(ParamVisitor& v, SwarmParams& p) {
+  v.integer({"particles", "Particles", "particle count; changing it re-allocates and resets"}, p.particles, 1,
+            kMaxSwarmParticles);
+  v.choice({"storage", "Storage", "fp32: 16 B/particle; fp16 (packHalf2x16): 8 B, half the memory traffic"}, p.storage,
+           kStorageNames);
+  v.choice({"integrator", "Integrator", "explicit Euler, symplectic Euler (the seed's), velocity Verlet, RK4"},
+           p.integrator, kIntegratorNames);
+  v.real({"speed", "Speed", "simulated seconds per real second"}, p.speed, 0.0f, 4.0f);
+  v.integer({"substeps", "Substeps", "integrator steps per frame"}, p.substeps, 1, 64);
+  v.real({"gravity", "Gravity", "world units/s^2, downwards"}, p.gravity, 0.0f, 10.0f);
+  v.real({"friction", "Friction", "1/s: velocity decays as exp(-friction t), whatever the frame rate"}, p.friction,
+         0.0f, 10.0f);
+  v.real({"epsilon", "Softening", "world units^2 added to |d|^2 in the attractor force"}, p.epsilon, 0.0f, 1.0f);
+  v.flag({"bounce", "Bounce", "mirror walls at the image border; off: free flight"}, p.bounce);
+  v.choice({"preset", "Attractors", "animated attractor preset"}, p.preset, kPresetNames);
+  v.real({"mouse_strength", "Mouse strength", "attractor at the cursor while the left button is held; < 0 repels"},
+         p.mouseStrength, -10.0f, 10.0f);
+  v.integer({"seed", "Seed", "random initial positions"}, p.seed, 0, 1000000);
+}
+
+Swarm::Swarm(gl::ShaderLibrary& shaders, const SwarmParams& params) : m_shaders(shaders), m_params(params) { reset(); }
+
+void Swarm::allocate(std::size_t count, Storage storage) {
+  if (count == m_count && storage == m_storage && m_state) return;
+  checkSwarmFits(count, storage);
+  m_state = gl::Buffer();  // free the old state before asking for the new one
+  m_count = 0;
+  m_state = gl::Buffer(count * swarmBytesPerParticle(storage));
+  m_count = count;
+  m_storage = storage;
+}
+
+void Swarm::reset() {
+  allocate(std::size_t(m_params.particles), m_params.storage);
+  m_time = 0.0;
+  gl::Program& init =
+      m_shaders.program({"swarm/swarm_init.comp"}, {{"STORAGE_FP16", m_storage == Storage::Fp16 ? "1" : "0"}});
+  init.use();
+  init.set("uCount", unsigned(m_count));
+  init.set("uSeed", unsigned(m_params.seed));
+  m_state.bindBase(GL_SHADER_STORAGE_BUFFER, SWARM_STATE_BINDING);
+  init.dispatchThreads(m_count);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+}
+
+void Swarm::upload(std::span<const SwarmParticle> particles) {
+  allocate(particles.size(), m_params.storage);
+  m_params.particles = int(particles.size());  // a later reset() keeps this count
+  m_time = 0.0;
+  if (m_storage == Storage::Fp32) {
+    m_state.upload(particles);
+    return;
+  }
+  std::vector<glm::uvec2> packed(particles.size());
+  for (std::size_t i = 0; i < particles.size(); ++i)
+    packed[i] = {glm::packHalf2x16(particles[i].pos), glm::packHalf2x16(particles[i].vel)};
+  m_state.upload(std::span<const glm::uvec2>(packed));
+}
+
+std::vector<SwarmParticle> Swarm::download() const {
+  if (m_storage == Storage::Fp32) return m_state.read<SwarmParticle>(m_count);
+  const std::vector<glm::uvec2> packed = m_state.read<glm::uvec2>(m_count);
+  std::vector<SwarmParticle> out(m_count);
+  for (std::size_t i = 0; i < m_count; ++i)
+    out[i] = {glm::unpackHalf2x16(packed[i].x), glm::unpackHalf2x16(packed[i].y)};
+  return out;
+}
+
+std::vector<Attractor> Swarm::attractorsAt(double t) const {
+  std::vector<Attractor> all = presetAttractors(m_params.preset, t);
+  all.insert(all.end(), m_extra.begin(), m_extra.end());
+  if (m_mouse) all.push_back({*m_mouse, double(m_params.mouseStrength)});
+  if (all.size() > SWARM_MAX_ATTRACTORS) all.resize(SWARM_MAX_ATTRACTORS);
+  return all;
+}
+
+gl::Program& Swarm::stepProgram() const {
+  return m_shaders.program({"swarm/swarm_step.comp"}, {{"INTEGRATOR", std::to_string(int(m_params.integrator))},
+                                                       {"STORAGE_FP16", m_storage == Storage::Fp16 ? "1" : "0"}});
+}
+
+void Swarm::step(double dt) {
+  // Forces at the start, middle and end of the step: RK4 needs all three, Verlet the first and last.
+  const double times[3] = {m_time, m_time + 0.5 * dt, m_time + dt};
+  std::vector<glm::vec4> attractors(3 * SWARM_MAX_ATTRACTORS, glm::vec4(0.0f));
+  int count = 0;
+  for (int level = 0; level < 3; ++level) {
+    const std::vector<Attractor> at = attractorsAt(times[level]);
+    count = int(at.size());
+    for (int k = 0; k < count; ++k)
+      attractors[std::size_t(level * SWARM_MAX_ATTRACTORS + k)] =
+          glm::vec4(glm::vec2(at[std::size_t(k)].pos), float(at[std::size_t(k)].strength), 0.0f);
+  }
+  gl::Program& p = stepProgram();
+  p.use();
+  p.set("uCount", unsigned(m_count));
+  p.set("uDt", float(dt));
+  p.set("uDamping", float(std::exp(-double(m_params.friction) * dt)));
+  p.set("uAspect", glm::vec2(float(m_aspect), 1.0f));
+  p.set("uBounce", m_params.bounce ? 1 : 0);
+  p.set("uGravity", glm::vec2(0.0f, -m_params.gravity));
+  p.set("uEpsilon", m_params.epsilon);
+  p.set("uAttractorCount", count);
+  glProgramUniform4fv(p.id(), p.uniform("uAttractors[0]"), GLsizei(attractors.size()), &attractors[0].x);
+  m_state.bindBase(GL_SHADER_STORAGE_BUFFER, SWARM_STATE_BINDING);
+  p.dispatchThreads(m_count);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  m_time += dt;
+}
+
+}  // namespace tidepool::sim

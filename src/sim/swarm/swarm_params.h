@@ -1,0 +1,43 @@
+// Parameters of the swarm model (particles-webgpu seed): N free 2D particles pulled by
+// attractors, force = gravity + sum_k s_k * d_k / (|d_k|^2 + eps), friction per unit time.
+//
+// Units: positions are stored in NDC [-1,1]^2; the physics runs in world units, where
+// world = ndc * (aspect, 1), so a circle stays round in a wide image. Time is simulated seconds.
+#pragma once
+
+#include <array>
+
+#include "scene/param.h"
+
+namespace tidepool::sim {
+
+enum class Integrator { ExplicitEuler, SymplecticEuler, Verlet, Rk4 };
+inline constexpr std::array<const char*, 4> kIntegratorNames = {"explicit_euler", "symplectic_euler", "verlet", "rk4"};
+
+enum class Storage { Fp32, Fp16 };  // fp16: packHalf2x16, 8 bytes per particle instead of 16
+inline constexpr std::array<const char*, 2> kStorageNames = {"fp32", "fp16"};
+
+enum class Preset { None, Orbit, Sines, CentralAttractive, CentralRepulsive };
+inline constexpr std::array<const char*, 5> kPresetNames = {"none", "orbit", "sines", "central_attractive",
+                                                            "central_repulsive"};
+
+inline constexpr int kMaxSwarmParticles = 64 << 20;  // the JSON/UI ceiling; the GPU may allow less
+
+struct SwarmParams {
+  int particles = 1 << 20;          // count; changing it re-allocates
+  Storage storage = Storage::Fp32;  // changing it resets
+  Integrator integrator = Integrator::SymplecticEuler;
+  float speed = 0.5f;             // simulated seconds per real second
+  int substeps = 1;               // integrator steps per frame
+  float gravity = 0.3f;           // world units / s^2, downwards (seed: 3 x 0.1)
+  float friction = 0.06f;         // 1/s: v *= exp(-friction dt) (seed: 0.9995 per 1/120 s)
+  float epsilon = 0.01f;          // world units^2: softening of the 1/r force
+  bool bounce = true;             // mirror walls at the image border, else free flight
+  Preset preset = Preset::Orbit;  // animated attractors
+  float mouseStrength = 7.0f;     // strength of the mouse attractor (left button)
+  int seed = 1;                   // initial positions (uniform in the box)
+};
+
+void visit(ParamVisitor& v, SwarmParams& p);
+
+}  // namespace tidepool::sim

@@ -1,0 +1,105 @@
+// The swarm stage: UI-style parameter edits re-allocate or are refused with a one-line status,
+// dropped images recolour, the mouse adds an attractor.
+#include <gtest/gtest.h>
+
+#include "io/png.h"
+#include "scene/swarm_stage.h"
+#include "sim/swarm/swarm_params.h"
+#include "support/gl_test.h"
+
+using namespace tidepool;
+
+namespace {
+
+class SwarmStages : public test::GlTest {};
+
+// Sets one integer parameter the way the ImGui editor does: through visitParams.
+class SetInteger final : public ParamVisitor {
+ public:
+  SetInteger(const char* key, int value) : m_key(key), m_value(value) {}
+  void real(const ParamInfo&, float&, float, float) override {}
+  void integer(const ParamInfo& info, int& value, int, int) override {
+    if (m_key == info.key) value = m_value;
+  }
+  void flag(const ParamInfo&, bool&) override {}
+  void text(const ParamInfo&, std::string&) override {}
+  void color(const ParamInfo&, glm::vec3&) override {}
+  void vector(const ParamInfo&, glm::vec3&, float, float) override {}
+  void choiceIndex(const ParamInfo&, int&, std::span<const char* const>) override {}
+  bool beginGroup(const ParamInfo&) override { return true; }
+  void endGroup() override {}
+
+ private:
+  std::string m_key;
+  int m_value;
+};
+
+std::unique_ptr<Stage> smallSwarm(gl::ShaderLibrary& shaders, const std::string& extra = "") {
+  return createSwarmStage(io::parseJson("{\"particles\": 5000" + extra + "}", "test"), "test: params", shaders);
+}
+
+}  // namespace
+
+TEST_F(SwarmStages, CountChangesReallocateAndTooLargeOnesAreRefusedKeepingTheParticles) {
+  auto stage = smallSwarm(shaders());
+  gl::GpuProfiler profiler;
+  RenderTarget target(32, 16);
+  SetInteger more("particles", 7000);
+  stage->visitParams(more);
+  stage->step(1.0 / 30.0, profiler);
+  EXPECT_EQ(stage->status().rfind("7000 particles", 0), 0u) << stage->status();
+
+  GLint64 maxBlock = 0;
+  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
+  if (maxBlock / 16 >= sim::kMaxSwarmParticles) GTEST_SKIP() << "this GPU fits the largest count the UI offers";
+  SetInteger tooMany("particles", sim::kMaxSwarmParticles);
+  stage->visitParams(tooMany);
+  stage->step(1.0 / 30.0, profiler);
+  stage->render(target, profiler);
+  const std::string status = stage->status();
+  EXPECT_EQ(status.rfind("7000 particles", 0), 0u) << status;
+  EXPECT_NE(status.find("GL_MAX_SHADER_STORAGE_BLOCK_SIZE"), std::string::npos) << status;
+}
+
+TEST_F(SwarmStages, DroppedImageRecoloursAndABadOneIsReported) {
+  test::TempDir dir;
+  io::writePng(dir / "red.png", io::Image{2, 2, std::vector<std::uint8_t>(16, 255)});
+  auto stage = smallSwarm(shaders(), ", \"view\": {\"color_mode\": \"image\", \"image\": \"colors\"}");
+  gl::GpuProfiler profiler;
+  RenderTarget target(32, 16);
+  stage->render(target, profiler);
+  EXPECT_EQ(stage->status().find('\n'), std::string::npos) << "the preset image loads: " << stage->status();
+  stage->step(1.0 / 30.0, profiler);
+  EXPECT_TRUE(stage->dropFile((dir / "red.png").string()));
+  stage->render(target, profiler);
+  EXPECT_EQ(stage->simTime(), 0.0) << "a new image restarts from the start positions it colours";
+  EXPECT_EQ(stage->status().find('\n'), std::string::npos) << stage->status();
+  EXPECT_TRUE(stage->dropFile((dir / "missing.png").string()));
+  stage->render(target, profiler);
+  EXPECT_NE(stage->status().find("missing.png"), std::string::npos) << stage->status();
+}
+
+TEST_F(SwarmStages, LeftButtonAddsTheMouseAttractor) {
+  auto stage = smallSwarm(shaders(), ", \"preset\": \"none\", \"gravity\": 0, \"mouse_strength\": 9");
+  gl::GpuProfiler profiler;
+  RenderTarget target(64, 32);
+  stage->render(target, profiler);  // sets the aspect
+  Input in;
+  in.viewport = {64, 32};
+  in.cursor = {48, 8};  // NDC (0.5, 0.5)
+  in.left = true;
+  stage->input(in);
+  for (int i = 0; i < 30; ++i) stage->step(1.0 / 30.0, profiler);
+  stage->render(target, profiler);
+  // Particles gather at the cursor: its pixel neighbourhood is far brighter than average.
+  const std::vector<std::uint8_t> px = target.readRgba8();
+  double total = 0, near = 0;
+  for (int y = 0; y < 32; ++y)
+    for (int x = 0; x < 64; ++x) {
+      const double v =
+          px[std::size_t(y * 64 + x) * 4] + px[std::size_t(y * 64 + x) * 4 + 1] + px[std::size_t(y * 64 + x) * 4 + 2];
+      total += v;
+      if (std::abs(x - 48) <= 3 && std::abs(y - 8) <= 3) near += v;
+    }
+  EXPECT_GT(near / 49.0, 3.0 * total / (64.0 * 32.0));
+}

@@ -1,0 +1,142 @@
+// Physics of the balls against theory (shared/ACCURACY-REFERENCES.md §2.2): free fall, the
+// spring-dashpot restitution, momentum in a head-on collision, energy behaviour of the
+// integrators on an undamped contact, and a settled column.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "sim/balls/balls.h"
+#include "sim/balls/balls_measure.h"
+#include "support/gl_test.h"
+
+using namespace tidepool;
+using namespace tidepool::balls;
+
+namespace {
+
+class BallsPhysics : public test::GlTest {};
+
+Params oneBallBox() {
+  Params p;
+  p.fill = Fill::None;
+  p.radius = 0.01f;
+  p.domainMin = glm::vec3(0.0f);
+  p.domainMax = glm::vec3(1.0f);
+  p.contact = Contact::SpringDashpot;
+  p.integrator = Integrator::SymplecticEuler;
+  p.substeps = 1;
+  return p;
+}
+
+}  // namespace
+
+TEST_F(BallsPhysics, FreeFallFollowsTheParabolaBeforeContact) {
+  Params p = oneBallBox();
+  p.dt = 1e-3f;
+  Balls b(shaders(), p);
+  const double z0 = 0.8, g = 9.81;
+  b.upload({glm::vec4(0.5f, 0.5f, float(z0), 1.0f)}, {glm::vec4(0.0f)});
+  for (int n = 1; n <= 300; ++n) {  // 0.3 s: still above the floor
+    b.stepOnce();
+    const double t = n * double(p.dt), z = b.downloadPositions()[0].z;
+    // Symplectic Euler is exact up to a first-order drift: z_n = z0 − g·dt²·n(n+1)/2.
+    ASSERT_NEAR(z, z0 - g * p.dt * p.dt * n * (n + 1) / 2.0, 2e-5) << "step " << n;
+    ASSERT_NEAR(z, z0 - 0.5 * g * t * t, g * p.dt * t + 1e-5) << "step " << n;
+  }
+}
+
+TEST_F(BallsPhysics, SpringDashpotRestitutionMatchesAt50StepsPerContactAndConverges) {
+  for (float e : {0.5f, 0.9f}) {
+    const Bounce b50 = measureBounce(shaders(), Integrator::SymplecticEuler, e, 50);
+    EXPECT_NEAR(b50.restitution / e, 1.0, 0.02) << "e = " << e << ": measured " << b50.restitution;
+    EXPECT_NEAR(b50.contactSteps, 50, 2) << "the contact lasts t_c";
+    const double err20 = std::abs(measureBounce(shaders(), Integrator::SymplecticEuler, e, 20).restitution / e - 1.0);
+    const double err50 = std::abs(b50.restitution / e - 1.0);
+    const double err100 = std::abs(measureBounce(shaders(), Integrator::SymplecticEuler, e, 100).restitution / e - 1.0);
+    EXPECT_LT(err50, err20);
+    EXPECT_LT(err100, err50) << "first order: the error shrinks with dt";
+  }
+  const double verlet = measureBounce(shaders(), Integrator::VelocityVerlet, 0.9f, 50).restitution;
+  EXPECT_NEAR(verlet / 0.9, 1.0, 0.02) << "velocity Verlet: " << verlet;
+}
+
+TEST_F(BallsPhysics, HeadOnCollisionConservesMomentumAndSwapsEqualMasses) {
+  for (float e : {1.0f, 0.5f}) {
+    Params p = oneBallBox();
+    p.gravity = glm::vec3(0.0f);
+    p.restitution = e;
+    p.contactTime = 0.01f;
+    p.dt = 2e-4f;
+    Balls b(shaders(), p);
+    b.upload({glm::vec4(0.45f, 0.5f, 0.5f, 1.0f), glm::vec4(0.55f, 0.5f, 0.5f, 1.0f)},
+             {glm::vec4(1.0f, 0.0f, 0.0f, 0.0f), glm::vec4(-1.0f, 0.0f, 0.0f, 0.0f)});
+    for (int i = 0; i < 500; ++i) {
+      b.stepOnce();
+      const std::vector<glm::vec4> v = b.downloadVelocities();
+      ASSERT_NEAR(double(v[0].x) + v[1].x, 0.0, 1e-6) << "momentum, step " << i;
+    }
+    const std::vector<glm::vec4> x = b.downloadPositions(), v = b.downloadVelocities();
+    const int left = x[0].x < x[1].x ? 0 : 1;
+    EXPECT_NEAR(v[left].x, -e, 0.02 * e) << "e = " << e;
+    EXPECT_NEAR(v[1 - left].x, e, 0.02 * e);
+  }
+}
+
+TEST_F(BallsPhysics, ExplicitEulerGainsEnergyOnAnUndampedContactTheOthersDoNot) {
+  // Five periods of an undamped contact oscillation at t_c/dt = 25.
+  const double explicitEuler = contactAmplitudeGrowth(shaders(), Integrator::ExplicitEuler, 1.0 / 25, 5);
+  const double symplectic = contactAmplitudeGrowth(shaders(), Integrator::SymplecticEuler, 1.0 / 25, 5);
+  const double verlet = contactAmplitudeGrowth(shaders(), Integrator::VelocityVerlet, 1.0 / 25, 5);
+  EXPECT_GT(explicitEuler, 1.5) << "explicit Euler must gain energy";
+  EXPECT_LT(symplectic, 1.15) << "symplectic Euler stays bounded";
+  EXPECT_LT(verlet, 1.05) << "velocity Verlet stays bounded";
+}
+
+TEST_F(BallsPhysics, UndampedContactStabilityLimitIsTwoOverOmega) {
+  // ω0 = π / t_c for e = 1, so symplectic Euler and Verlet are stable while dt < 2/ω0 = 0.6366 t_c.
+  const double theory = 2.0 / M_PI;
+  for (Integrator integrator : {Integrator::SymplecticEuler, Integrator::VelocityVerlet}) {
+    const double measured = stableStepLimit(shaders(), integrator, 0.01);
+    std::printf("%s: largest stable dt = %.4f t_c (theory %.4f t_c)\n", kIntegratorNames[int(integrator)], measured,
+                theory);
+    EXPECT_NEAR(measured / theory, 1.0, 0.10) << kIntegratorNames[int(integrator)];
+  }
+  // Explicit Euler has no stable step on an undamped oscillator: it grows even at t_c/100.
+  EXPECT_GT(contactGrowthRatio(shaders(), Integrator::ExplicitEuler, 1.0 / 100, 10), 1.5);
+  EXPECT_EQ(stableStepLimit(shaders(), Integrator::ExplicitEuler, 0.05), 0.0);
+}
+
+// About 8k balls settling in a packed column. The spring-dashpot law is stiff by construction
+// (t_c = 2 ms); the seed's penalty law corrects 0.48·overlap per step as a velocity, so its
+// stiffness is 0.48/dt per unit mass: it is run as the seed runs it, with the seed's gravity
+// (0.9 m/s²) and a short step, where its overlaps are small too.
+TEST_F(BallsPhysics, SettledColumnKeepsEveryBallWithSmallOverlaps) {
+  for (Contact contact : {Contact::SpringDashpot, Contact::Penalty}) {
+    SCOPED_TRACE(kContactNames[int(contact)]);
+    const bool penalty = contact == Contact::Penalty;
+    Params p;
+    p.radius = 0.01f;
+    p.domainMin = glm::vec3(0.0f);
+    p.domainMax = penalty ? glm::vec3(0.72f, 0.72f, 0.3f) : glm::vec3(0.34f, 0.34f, 0.7f);
+    p.fill = Fill::Block;
+    p.fillMin = p.domainMin;
+    p.fillMax = penalty ? glm::vec3(0.72f, 0.72f, 0.1f) : glm::vec3(0.34f, 0.34f, 0.42f);
+    p.contact = contact;
+    p.gravity = glm::vec3(0.0f, 0.0f, penalty ? -0.9f : -9.81f);
+    p.contactTime = 0.002f;
+    p.restitution = 0.3f;
+    p.dt = penalty ? 5e-5f : 1e-4f;
+    p.damping = penalty ? 5.0f : 2.0f;
+    p.substeps = 100;
+    Balls b(shaders(), p);
+    const std::size_t n = b.count();
+    ASSERT_GT(n, 7000u);
+    gl::GpuProfiler profiler;
+    for (int frame = 0; frame < 20; ++frame) b.step(profiler);
+    const Stats s = b.stats();
+    EXPECT_EQ(s.count, n);
+    EXPECT_EQ(s.nonFinite, 0u);
+    EXPECT_EQ(s.outside, 0u);
+    EXPECT_LT(s.maxOverlap, 0.05) << "max overlap, fraction of r (mean " << s.meanOverlap << ")";
+  }
+}
