@@ -113,9 +113,9 @@ Command addRun(CLI::App& app) {
             const bool window =
                 backend == gl::Backend::Window || (backend == gl::Backend::Auto && gl::displayAvailable());
             if (window) {
-              WindowJob job{o->scene, w, h, std::nullopt, o->screenshot, o->debugGl || kDebugBuild, !o->noVsync};
+              const bool debugGl = o->debugGl || kDebugBuild;
+              WindowJob job{o->scene, w, h, std::nullopt, o->screenshot, debugGl, !o->noVsync, overrides};
               if (o->frames > 0) job.maxFrames = o->frames;
-              job.paramOverrides = overrides;
               return runWindow(job);
             }
             // No display: render the scene's default clip headless and say where it went.
