@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <limits>
 
 #include "base/error.h"
 #include "io/json.h"
@@ -175,6 +176,23 @@ TEST(LifeRules, MalformedInputsNameTheField) {
     EXPECT_NE(message.find(c.message), std::string::npos) << "got: " << message << "\nwanted: " << c.message;
   }
   EXPECT_NE(errorOf([] { generateRules({.species = 0}); }).find("species = 0 is out of range"), std::string::npos);
+}
+
+TEST(LifeRules, NaNIsRefusedNamingTheField) {
+  // JSON text cannot spell NaN, but a full-table share code (valid checksum) or an edited table can.
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  Rules r = generateRules({.species = 3, .particleCount = 1000, .seed = 5});
+  r.species[1].forces[2].strength = nan;
+  const std::string code = encodeShareCode(r);
+  EXPECT_NE(errorOf([&] { decodeShareCode(code); }).find("share code: species[1].forces[2].strength is not a finite"),
+            std::string::npos);
+  r.species[1].forces[2].strength = 1.0f;
+  r.species[0].forces[0].collisionRadius = nan;
+  EXPECT_NE(errorOf([&] { validateRules(r, "x"); }).find("x: species[0].forces[0].collisionRadius = "),
+            std::string::npos);
+  r.species[0].forces[0].collisionRadius = 1.0f;
+  r.friction = nan;
+  EXPECT_NE(errorOf([&] { decodeShareCode(encodeShareCode(r)); }).find("share code: friction = "), std::string::npos);
 }
 
 TEST(LifeRules, PresetsLoadAndAreWhatTheirSeedGenerates) {
