@@ -74,6 +74,15 @@ bool drawMainPanel(const Scene& scene, Stage& stage, const gl::GpuProfiler& prof
   if (ImGui::Button("Reload shaders (F5)")) ui.reloadRequested = true;
   ImGui::SameLine();
   if (ImGui::Button("Screenshot (F12)")) ui.screenshotRequested = true;
+  if (const std::string share = stage.shareText(); !share.empty()) {
+    ImGui::SameLine();
+    if (ImGui::Button("Copy share code")) {
+      ImGui::SetClipboardText(share.c_str());  // the GLFW backend: glfwSetClipboardString
+      ui.message =
+          "share code copied (" + std::to_string(share.size()) + " characters): tidepool run life --rules <code>";
+      ui.messageIsError = false;
+    }
+  }
   if (!ui.divergence.empty()) {
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.3f, 1.0f), "%s", ui.divergence.c_str());

@@ -21,8 +21,8 @@ BufferOps::BufferOps(ShaderLibrary& shaders)
   GLint64 maxBlock = 0;
   glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
   // Chunk offsets stay multiples of 64 KiB, far above any SSBO offset alignment.
-  m_chunk = std::max<std::size_t>(std::min<std::size_t>(std::size_t(maxBlock), std::size_t(1) << 30) & ~std::size_t(0xffff),
-                                  std::size_t(1) << 16);
+  m_chunk = std::max<std::size_t>(
+      std::min<std::size_t>(std::size_t(maxBlock), std::size_t(1) << 30) & ~std::size_t(0xffff), std::size_t(1) << 16);
 }
 
 void BufferOps::fill(Buffer& buffer, uint32_t value, std::size_t bytes) const {

@@ -51,7 +51,8 @@ TEST_F(BufferOpsTest, CopyMovesExactlyTheWordsAskedFor) {
 TEST_F(BufferOpsTest, BuffersBeyondTheStorageBlockLimitAreDoneInChunks) {
   GLint64 maxBlock = 0;
   glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
-  if (maxBlock > (std::int64_t(256) << 20)) GTEST_SKIP() << "SSBO limit " << maxBlock << " bytes: too big to exceed here";
+  if (maxBlock > (std::int64_t(256) << 20))
+    GTEST_SKIP() << "SSBO limit " << maxBlock << " bytes: too big to exceed here";
   const std::size_t bytes = std::size_t(maxBlock) + (std::size_t(1) << 20) + 12;  // past the limit, odd tail
   const BufferOps ops(shaders());
   Buffer a(bytes), b(bytes);
