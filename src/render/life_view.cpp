@@ -1,5 +1,8 @@
 #include "render/life_view.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "life/bindings.glsl"
 #include "render/blue_noise.h"
 
@@ -26,6 +29,16 @@ glm::vec2 LifeView::toWorld(glm::vec2 pixel, glm::ivec2 viewport) const {
   const glm::vec2 ndc(2.0f * pixel.x / float(viewport.x) - 1.0f, 1.0f - 2.0f * pixel.y / float(viewport.y));
   const glm::vec2 extent(m_camera.extentX, m_camera.extentX * float(viewport.y) / float(viewport.x));
   return m_camera.centre + ndc * extent;
+}
+
+void LifeView::pan(glm::vec2 cursor, glm::vec2 delta, glm::ivec2 viewport) {
+  m_camera.centre -= toWorld(cursor, viewport) - toWorld(cursor - delta, viewport);
+}
+
+void LifeView::zoomAbout(glm::vec2 cursor, float clicks, glm::ivec2 viewport) {
+  const glm::vec2 anchor = toWorld(cursor, viewport);
+  m_camera.extentX *= std::pow(1.25f, -clicks);
+  m_camera.centre += anchor - toWorld(cursor, viewport);
 }
 
 void LifeView::drawParticles(const life::Life& model, const char* fragment, float halfSize, float ppu,

@@ -43,6 +43,10 @@ class LifeView {
   // Fits the whole box into an image of this size (the article's "Center view").
   static LifeCamera fit(glm::vec2 boxSize, glm::ivec2 viewport);
   glm::vec2 toWorld(glm::vec2 pixel, glm::ivec2 viewport) const;  // pixel: origin top-left
+  // Right drag: the world point that was under cursor - delta moves to the cursor.
+  void pan(glm::vec2 cursor, glm::vec2 delta, glm::ivec2 viewport);
+  // Wheel: zoom in by 1.25^clicks (out when negative), the world point under the cursor fixed.
+  void zoomAbout(glm::vec2 cursor, float clicks, glm::ivec2 viewport);
   float pixelsPerUnit(int imageWidth) const { return float(imageWidth) / (2.0f * m_camera.extentX); }
   const gl::Texture2D& hdr() const { return m_hdr; }  // the last frame before the tone map (tests)
 

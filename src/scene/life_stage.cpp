@@ -143,13 +143,10 @@ class LifeStage final : public Stage {
     LifeCamera& cam = m_view.camera();
     const glm::vec2 here = m_view.toWorld(in.cursor, in.viewport);
     const glm::vec2 before = m_view.toWorld(in.cursor - in.cursorDelta, in.viewport);
-    if (in.right) cam.centre -= here - before;
     if (in.left && in.cursorDelta != glm::vec2(0.0f))
       m_model.push(here, (here - before) * m_model.params().pushStrength, cam.extentX / 16.0f);
-    if (in.scroll != 0.0f) {
-      cam.extentX *= std::pow(1.25f, -in.scroll);  // the world point under the cursor stays put
-      cam.centre += here - m_view.toWorld(in.cursor, in.viewport);
-    }
+    if (in.right) m_view.pan(in.cursor, in.cursorDelta, in.viewport);
+    if (in.scroll != 0.0f) m_view.zoomAbout(in.cursor, in.scroll, in.viewport);
   }
   void key(int c) override {
     if (c == 'C') {

@@ -131,3 +131,37 @@ TEST_F(LifeViewTest, ComposeTonemapsAndDithersToEightBits) {
   for (std::size_t i = 0; i < rgba.size(); i += 4) lit += rgba[i] + rgba[i + 1] + rgba[i + 2] > 30;
   EXPECT_GT(lit, int(rgba.size() / 4) / 4) << "glow covers the box";
 }
+
+// The view controls: C fits the whole box (one axis exactly, the other inside), the wheel zooms
+// about the cursor (the world point under it stays), right drag moves the world with the cursor.
+TEST_F(LifeViewTest, CentreFitsTheBoxWheelZoomsAboutTheCursorDragPans) {
+  const glm::ivec2 viewport(800, 450);
+  for (glm::vec2 box : {glm::vec2(1024, 576), glm::vec2(1024, 1024), glm::vec2(2000, 300)}) {
+    LifeView view(shaders());
+    view.camera() = LifeView::fit(box, viewport);
+    const glm::vec2 lo = view.toWorld({0, float(viewport.y)}, viewport),
+                    hi = view.toWorld({float(viewport.x), 0}, viewport);
+    EXPECT_LE(lo.x, -0.5f * box.x + 1e-3f);
+    EXPECT_LE(lo.y, -0.5f * box.y + 1e-3f);
+    EXPECT_GE(hi.x, 0.5f * box.x - 1e-3f);
+    EXPECT_GE(hi.y, 0.5f * box.y - 1e-3f);
+    EXPECT_TRUE(std::abs(hi.x - 0.5f * box.x) < 1e-3f || std::abs(hi.y - 0.5f * box.y) < 1e-3f)
+        << "one axis fits exactly: the box fills the image as far as the aspect allows";
+  }
+  LifeView view(shaders());
+  view.camera() = LifeView::fit({1024, 576}, viewport);
+  const glm::vec2 cursor(600, 100);
+  const glm::vec2 anchor = view.toWorld(cursor, viewport);
+  const float extent = view.camera().extentX;
+  view.zoomAbout(cursor, 3.0f, viewport);
+  EXPECT_NEAR(view.camera().extentX, extent / std::pow(1.25f, 3.0f), 1e-3f);
+  EXPECT_NEAR(view.toWorld(cursor, viewport).x, anchor.x, 1e-3f);
+  EXPECT_NEAR(view.toWorld(cursor, viewport).y, anchor.y, 1e-3f);
+  view.zoomAbout(cursor, -3.0f, viewport);
+  EXPECT_NEAR(view.camera().extentX, extent, 1e-3f);
+
+  const glm::vec2 grabbed = view.toWorld(cursor, viewport), delta(-120, 45);
+  view.pan(cursor + delta, delta, viewport);
+  EXPECT_NEAR(view.toWorld(cursor + delta, viewport).x, grabbed.x, 1e-3f);
+  EXPECT_NEAR(view.toWorld(cursor + delta, viewport).y, grabbed.y, 1e-3f);
+}
