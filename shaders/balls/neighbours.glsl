@@ -25,22 +25,24 @@ uniform float uRadius;  // m
 void forEachContact(uint self, vec3 p, vec3 v) {
   const float reach = 2.0 * uRadius;
   const ivec3 c = cellCoord(p);
+  // Cells are numbered x fastest, so the three cells x-1..x+1 of a row hold one contiguous run
+  // of balls: 9 runs instead of 27 cells (fewer cellStart reads and loop heads).
+  const int x0 = max(c.x - 1, 0), x1 = min(c.x + 1, int(uGridDims.x) - 1);
   for (int dz = -1; dz <= 1; ++dz)
-    for (int dy = -1; dy <= 1; ++dy)
-      for (int dx = -1; dx <= 1; ++dx) {
-        const ivec3 nc = c + ivec3(dx, dy, dz);
-        if (!cellInGrid(nc)) continue;
-        const uint cell = cellIndex(nc);
-        const uint end = cellStart[cell + 1u];
-        for (uint j = cellStart[cell]; j < end; ++j) {
-          if (j == self) continue;
-          const vec3 d = p - posIn[j].xyz;
-          const float dist2 = dot(d, d);
-          if (dist2 >= reach * reach || dist2 == 0.0) continue;  // coincident balls have no normal
-          const float dist = sqrt(dist2);
-          onContact(d / dist, reach - dist, velIn[j].xyz, 0.5, 0.5);
-        }
+    for (int dy = -1; dy <= 1; ++dy) {
+      const ivec3 row = ivec3(x0, c.y + dy, c.z + dz);
+      if (!cellInGrid(row)) continue;
+      const uint first = cellIndex(row);
+      const uint end = cellStart[first + uint(x1 - x0) + 1u];
+      for (uint j = cellStart[first]; j < end; ++j) {
+        if (j == self) continue;
+        const vec3 d = p - posIn[j].xyz;
+        const float dist2 = dot(d, d);
+        if (dist2 >= reach * reach || dist2 == 0.0) continue;  // coincident balls have no normal
+        const float dist = sqrt(dist2);
+        onContact(d / dist, reach - dist, velIn[j].xyz, 0.5, 0.5);
       }
+    }
 #ifdef HAS_OBSTACLE
   // The ball in the obstacle's frame: rotate by −angle about the vertical axis through the pivot.
   const vec2 cs = uObstacleRotation;

@@ -4,8 +4,9 @@
 //              h += (mean4 − h)·min(posDamping·dt, 1) (positional smoothing), h += dt·v
 //              — the wave equation ∂²h/∂t² = c²∇²h with the 5-point Laplacian.
 //   RULE_SEED  water-simulation-gpu's model: v += dt·(−k·h + c·(mean4 − h)), v *= friction, h += dt·v
-// Heights of a 16x16 tile plus a one-cell apron are staged in shared memory, so each cell's
-// neighbour reads come from shared memory rather than from the SSBO.
+// Heights of a 16x16 tile plus the 64 edge cells around it are staged in shared memory, so the
+// neighbour reads come from shared memory: each invocation reads its own cell's (h, v) once
+// (coalesced) and 64 of them one apron cell each (the stencil never reads the tile's corners).
 #include "ripples/bindings.glsl"
 
 layout(local_size_x = 16, local_size_y = 16) in;
@@ -26,21 +27,28 @@ const int kTile = 18;  // 16 + apron on both sides
 shared float sHeight[kTile * kTile];
 
 void main() {
-  const ivec2 groupOrigin = ivec2(gl_WorkGroupID.xy) * 16 - 1;
+  const ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  const ivec2 lid = ivec2(gl_LocalInvocationID.xy);
+  // Invocations past the grid's edge load their boundary image (clamped or wrapped), which is
+  // what the edge cells read as their outside neighbour.
+  const vec2 own = stateIn[cellIndex(neighbourCell(p))];
+  sHeight[(lid.y + 1) * kTile + lid.x + 1] = own.x;
   const int local = int(gl_LocalInvocationIndex);
-  for (int t = local; t < kTile * kTile; t += 256) {
-    const ivec2 cell = neighbourCell(groupOrigin + ivec2(t % kTile, t / kTile));
-    sHeight[t] = stateIn[cellIndex(cell)].x;
+  if (local < 64) {
+    const int k = (local & 15) + 1;
+    const int side = local >> 4;  // 0: row above, 1: row below, 2: column left, 3: column right
+    const ivec2 a = side == 0 ? ivec2(k, 0) : side == 1 ? ivec2(k, kTile - 1) : side == 2 ? ivec2(0, k) : ivec2(kTile - 1, k);
+    const ivec2 cell = neighbourCell(ivec2(gl_WorkGroupID.xy) * 16 - 1 + a);
+    sHeight[a.y * kTile + a.x] = stateIn[cellIndex(cell)].x;
   }
   barrier();
 
-  const ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(p, uSize))) return;
-  const ivec2 s = ivec2(gl_LocalInvocationID.xy) + 1;
-  const float h = sHeight[s.y * kTile + s.x];
+  const ivec2 s = lid + 1;
+  const float h = own.x;
   const float sum4 = sHeight[s.y * kTile + s.x - 1] + sHeight[s.y * kTile + s.x + 1] +
                      sHeight[(s.y - 1) * kTile + s.x] + sHeight[(s.y + 1) * kTile + s.x];
-  float v = stateIn[cellIndex(p)].y;
+  float v = own.y;
 
 #ifdef RULE_SEED
   v += uDt * (-uElasticity * h + uWaveFactor * (0.25 * sum4 - h));

@@ -12,7 +12,7 @@
 namespace tidepool {
 
 int renderHeadless(const RenderJob& job) {
-  const Scene scene = loadScene(resolveScenePath(job.scene));
+  const Scene scene = loadScene(resolveScenePath(job.scene), job.paramOverrides);
   const int frames = job.frames.value_or(scene.clip.frames);
   const int width = job.width.value_or(scene.clip.width);
   const int height = job.height.value_or(scene.clip.height);

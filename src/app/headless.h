@@ -6,11 +6,13 @@
 #include <string>
 
 #include "gl/context.h"
+#include "io/json.h"
 
 namespace tidepool {
 
 struct RenderJob {
   std::string scene;                 // path or bare name (assets/scenes/<name>.json)
+  io::Json paramOverrides;           // scene params set from the command line (--rules)
   std::optional<int> frames;         // default: the scene's clip.frames
   std::optional<int> width, height;  // default: the scene's clip size
   std::filesystem::path outDir;      // PNG frames (frame_00000.png ...); empty: none

@@ -50,7 +50,7 @@ void ParamEditor::choiceIndex(const ParamInfo& info, int& index, std::span<const
 }
 
 bool ParamEditor::beginGroup(const ParamInfo& info) {
-  const bool open = ImGui::TreeNodeEx(info.key, ImGuiTreeNodeFlags_DefaultOpen, "%s", info.label);
+  const bool open = ImGui::TreeNodeEx(info.key, 0, "%s", info.label);  // groups start closed: a compact panel
   tooltip(info);
   return open;
 }

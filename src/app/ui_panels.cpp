@@ -3,6 +3,8 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cfloat>
+#include <cstdio>
 
 #include "app/param_editor.h"
 
@@ -34,6 +36,26 @@ void timingTable(const gl::GpuProfiler& profiler) {
 
 }  // namespace
 
+void History::push(float cost, float value) {
+  costMs[std::size_t(next)] = cost;
+  metric[std::size_t(next)] = value;
+  next = (next + 1) % kHistory;
+}
+
+namespace {
+void livePlots(const Stage& stage, const UiState& ui) {
+  const History& h = ui.history;
+  ImGui::PlotLines("GPU ms/frame", h.costMs.data(), History::kHistory, h.next, nullptr, 0.0f, FLT_MAX, ImVec2(0, 48));
+  const auto [name, value] = stage.liveMetric();
+  if (!name.empty()) {
+    char overlay[64];
+    std::snprintf(overlay, sizeof overlay, "%.4g", value);
+    ImGui::PlotLines(name.c_str(), h.metric.data(), History::kHistory, h.next, overlay, FLT_MAX, FLT_MAX,
+                     ImVec2(0, 48));
+  }
+}
+}  // namespace
+
 bool drawMainPanel(const Scene& scene, Stage& stage, const gl::GpuProfiler& profiler, UiState& ui) {
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSizeConstraints(ImVec2(340, 0), ImVec2(520, 10000));
@@ -42,6 +64,7 @@ bool drawMainPanel(const Scene& scene, Stage& stage, const gl::GpuProfiler& prof
   if (const std::string s = stage.status(); !s.empty()) ImGui::TextDisabled("%s", s.c_str());
   ImGui::Text("simulated time %.3f s", stage.simTime());
   timingTable(profiler);
+  livePlots(stage, ui);
 
   ImGui::Checkbox("Pause (Space)", &ui.paused);
   ImGui::SameLine();
@@ -51,6 +74,15 @@ bool drawMainPanel(const Scene& scene, Stage& stage, const gl::GpuProfiler& prof
   if (ImGui::Button("Reload shaders (F5)")) ui.reloadRequested = true;
   ImGui::SameLine();
   if (ImGui::Button("Screenshot (F12)")) ui.screenshotRequested = true;
+  if (const std::string share = stage.shareText(); !share.empty()) {
+    ImGui::SameLine();
+    if (ImGui::Button("Copy share code")) {
+      ImGui::SetClipboardText(share.c_str());  // the GLFW backend: glfwSetClipboardString
+      ui.message =
+          "share code copied (" + std::to_string(share.size()) + " characters): tidepool run life --rules <code>";
+      ui.messageIsError = false;
+    }
+  }
   if (!ui.divergence.empty()) {
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.3f, 1.0f), "%s", ui.divergence.c_str());

@@ -2,11 +2,21 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "gl/gpu_profiler.h"
 #include "scene/scene.h"
 
 namespace tidepool {
+
+// Recent values for the live plots (a ring of the last kHistory frames).
+struct History {
+  static constexpr int kHistory = 240;
+  std::vector<float> costMs = std::vector<float>(kHistory, 0.0f);  // GPU ms per frame
+  std::vector<float> metric = std::vector<float>(kHistory, 0.0f);  // the model's error metric
+  int next = 0;
+  void push(float cost, float value);
+};
 
 struct UiState {
   bool paused = false;
@@ -19,6 +29,7 @@ struct UiState {
   std::string divergence;  // the model\'s blow-up report; the run is paused while it is set
   std::string message;     // last action's result (reload, screenshot)
   bool messageIsError = false;
+  History history;
 };
 
 // Main panel: scene, timing table, transport buttons, parameters. Returns true when parameters changed.

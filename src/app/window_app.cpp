@@ -7,6 +7,7 @@
 #include <imgui.h>
 
 #include <chrono>
+#include <cmath>
 #include <ctime>
 
 #include "app/ui_panels.h"
@@ -75,7 +76,7 @@ std::vector<std::string> g_dropped;  // files dropped on the window since the la
 }  // namespace
 
 int runWindow(const WindowJob& job) {
-  const Scene scene = loadScene(resolveScenePath(job.scene));
+  const Scene scene = loadScene(resolveScenePath(job.scene), job.paramOverrides);
   gl::WindowContext context({job.width, job.height, "tidepool - " + scene.name, job.debugGl, job.vsync, true});
   GLFWwindow* window = context.window();
   gl::ShaderLibrary shaders(gl::ShaderLibrary::findRoot());
@@ -113,6 +114,8 @@ int runWindow(const WindowJob& job) {
     if (keys.pressed(GLFW_KEY_F5)) ui.reloadRequested = true;
     if (keys.pressed(GLFW_KEY_F12)) ui.screenshotRequested = true;
     if (keys.pressed(GLFW_KEY_H)) ui.showUi = !ui.showUi;
+    for (int k = GLFW_KEY_A; k <= GLFW_KEY_Z; ++k)  // other letters are the model's (life: C, N, S)
+      if (k != GLFW_KEY_R && k != GLFW_KEY_H && keys.pressed(k)) stage->key('A' + (k - GLFW_KEY_A));
 
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
@@ -156,6 +159,10 @@ int runWindow(const WindowJob& job) {
     if (!ui.paused || std::exchange(ui.stepOnce, false)) stage->step(kFrameSeconds, profiler);
     stage->render(target, profiler);
     profiler.endFrame();
+    {
+      const double metric = stage->liveMetric().second;
+      ui.history.push(float(profiler.totalMs()), std::isfinite(metric) ? float(metric) : 0.0f);
+    }
     if (const auto d = stage->divergence(); d && ui.divergence.empty()) {
       ui.divergence = d->message;
       log::error(d->message);

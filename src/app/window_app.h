@@ -1,10 +1,13 @@
 // The interactive window: GLFW + Dear ImGui, live parameter tuning, per-pass GPU times.
 // Keys: Space pause, . single step, R reset, F5 reload shaders, F12 screenshot, H hide UI, Esc quit.
+// Other letters go to the stage (Stage::key; life: C centre, N new rules, S save rules).
 #pragma once
 
 #include <filesystem>
 #include <optional>
 #include <string>
+
+#include "io/json.h"
 
 namespace tidepool {
 
@@ -15,6 +18,7 @@ struct WindowJob {
   std::filesystem::path screenshot;  // written after the last frame when set
   bool debugGl = false;
   bool vsync = true;
+  io::Json paramOverrides;  // scene params set from the command line (--rules)
 };
 
 int runWindow(const WindowJob& job);  // exit code; throws Error

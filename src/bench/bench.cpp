@@ -96,10 +96,10 @@ std::string fixed(double value, int decimals) {
 }
 
 std::vector<std::size_t> parseSizes(const std::string& text) {
-  static const std::regex number(R"((\d+)([kKmM]?))");
+  static const std::regex number(R"((\d+)([kKmMgG]?))");
   static const std::regex power(R"(2\^(\d+))");
   static const std::regex range(R"(2\^(\d+)\.\.2\^(\d+))");
-  static const std::regex doubling(R"((\d+[kKmM]?)\.\.(\d+[kKmM]?))");
+  static const std::regex doubling(R"((\d+[kKmMgG]?)\.\.(\d+[kKmMgG]?))");
   auto one = [&](const std::string& token) -> std::size_t {
     std::smatch m;
     if (std::regex_match(token, m, power) && std::stoi(m[1]) < 40) return std::size_t(1) << std::stoi(m[1]);
@@ -107,9 +107,10 @@ std::vector<std::size_t> parseSizes(const std::string& text) {
       std::size_t v = std::stoull(m[1]);
       if (m[2] == "k" || m[2] == "K") v <<= 10;
       if (m[2] == "m" || m[2] == "M") v <<= 20;
+      if (m[2] == "g" || m[2] == "G") v <<= 30;
       return v;
     }
-    throw Error("size '" + token + "' is not a number like 65536, 64k, 16M or 2^20");
+    throw Error("size '" + token + "' is not a number like 65536, 64k, 16M, 1G or 2^20");
   };
   std::vector<std::size_t> out;
   std::stringstream ss(text);

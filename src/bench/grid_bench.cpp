@@ -1,8 +1,10 @@
 // `tidepool bench grid`: the uniform grid (src/grid) on N random positions in a cube of cells at
 // about 1 and about 8 particles per cell: count (clear + atomicAdd pass), scan of the cell
-// counts, reorder of positions + velocities, and the whole build + reorder as one timed span.
+// counts, reorder of positions + velocities, and the whole build + reorder as one timed span:
+// total_ms from random order, sorted_ms from the last build's cell order (a running simulation).
 // Beside it, in the same run: the scan of exactly N uint32, the naive Hillis-Steele scan of the
-// same, and glCopyBufferSubData of the same N * 4 bytes as the bandwidth reference.
+// same, and a compute-shader copy (gl::BufferOps) of the same N * 4 bytes as the bandwidth reference
+// (glCopyBufferSubData runs far slower on some drivers: `tidepool bench memory`).
 // GB/s = (bytes read + bytes written) / time:
 //   scan     4 N read + 4 (N + 1) written (the minimum; the kernels move about 3 N words, see prefix_scan.h)
 //   reorder  per particle: 16 position (cell) + 4 indexInCell + 4 cellStart read, 16 per array read and written
@@ -18,6 +20,7 @@
 #include "base/error.h"
 #include "bench/bench.h"
 #include "gl/buffer.h"
+#include "gl/buffer_ops.h"
 #include "gl/framebuffer.h"  // gl::Query
 #include "grid/grid.h"
 #include "grid/prefix_scan.h"
@@ -119,7 +122,8 @@ void addShapeRows(Env& env, Table& table, bool wallClock, std::size_t n, const s
   uint64_t sum = 0;
   for (uint32_t& v : values) sum += v = rng() % 16;
   gl::Buffer in(n * 4, values.data()), out((n + 1) * 4), copy(n * 4);
-  const double copyMs = medianMs(env.common, wallClock, [&] { in.copyTo(copy, n * 4); });
+  const gl::BufferOps ops(env.shaders);
+  const double copyMs = medianMs(env.common, wallClock, [&] { ops.copy(in, copy, n * 4); });
   const double copyGbps = gbps(8.0 * n, copyMs);
   for (const grid::ScanConfig& shape : shapes) {
     try {
@@ -178,8 +182,28 @@ std::vector<std::string> runRow(Env& env, const GridOptions& opt, const grid::Sc
             "",
             "",
             "",
+            "",
             "skipped: " + std::to_string(n * sizeof(glm::vec4) >> 20) +
                 " MiB of positions exceed this driver's SSBO limit of " + std::to_string(limit >> 20) + " MiB"};
+  // The scan target is stated for N uint32: scan, naive scan and copy of exactly those bytes,
+  // timed first, before the grid's large buffers exist (measured after them, on the H100 both
+  // the scan and the copy of 16M words ran 2-3x slower: the driver's memory placement).
+  std::mt19937 scanRng(uint32_t(n) * 7u + 1u);
+  std::string scanNote;
+  std::vector<uint32_t> values(n);
+  for (uint32_t& v : values) v = scanRng() % 16;
+  gl::Buffer in(n * 4, values.data()), out((n + 1) * 4), copy(n * 4);
+  grid::PrefixScan scan(env.shaders, scanShape);
+  grid::NaiveScan naive(env.shaders);
+  scan.reserve(n);
+  const std::vector<uint32_t> want = opt.noCheck ? std::vector<uint32_t>() : grid::reference::exclusiveScan(values);
+  const double uscanMs = medianMs(env.common, wallClock, [&] { scan.run(in, out, n); });
+  if (!opt.noCheck && out.read<uint32_t>(n + 1) != want) scanNote += "WRONG scan; ";
+  const double naiveMs = medianMs(env.common, wallClock, [&] { naive.run(in, out, n); });
+  if (!opt.noCheck && out.read<uint32_t>(n + 1) != want) scanNote += "WRONG naive scan; ";
+  const gl::BufferOps ops(env.shaders);
+  const double copyMs = medianMs(env.common, wallClock, [&] { ops.copy(in, copy, n * 4); });
+
   // A cube of side s cells of size 1 holding about perCell particles per cell.
   const uint32_t side = std::max<uint32_t>(1, uint32_t(std::lround(std::cbrt(double(n) / perCell))));
   grid::UniformGrid grid(env.shaders,
@@ -206,22 +230,16 @@ std::vector<std::string> runRow(Env& env, const GridOptions& opt, const grid::Sc
     grid.build(positions, n);
     grid.reorder(positions, arrays);
   });
-  std::string note = opt.noCheck ? "" : checkGrid(grid, pos, dst[0]);
-
-  // The scan target is stated for N uint32: scan, naive scan and copy of exactly those bytes.
-  std::vector<uint32_t> values(n);
-  for (uint32_t& v : values) v = rng() % 16;
-  gl::Buffer in(n * 4, values.data()), out((n + 1) * 4), copy(n * 4);
-  grid::PrefixScan scan(env.shaders, scanShape);
-  grid::NaiveScan naive(env.shaders);
-  scan.reserve(n);
-  const std::vector<uint32_t> want = opt.noCheck ? std::vector<uint32_t>() : grid::reference::exclusiveScan(values);
-  const double uscanMs = medianMs(env.common, wallClock, [&] { scan.run(in, out, n); });
-  if (!opt.noCheck && out.read<uint32_t>(n + 1) != want) note += "WRONG scan; ";
-  const double naiveMs = medianMs(env.common, wallClock, [&] { naive.run(in, out, n); });
-  if (!opt.noCheck && out.read<uint32_t>(n + 1) != want) note += "WRONG naive scan; ";
+  std::string note = (opt.noCheck ? "" : checkGrid(grid, pos, dst[0])) + scanNote;
   if (note.empty() && !opt.noCheck) note = "checked";
-  const double copyMs = medianMs(env.common, wallClock, [&] { in.copyTo(copy, n * 4); });
+  // A running simulation rebuilds from last step's cell order, barely changed: the same build
+  // with the arrays already sorted (dst) as input, moving them back into src.
+  std::vector<grid::ReorderArray> back;
+  for (int a = 0; a < opt.arrays; ++a) back.push_back({&dst[a], &src[a]});
+  const double sortedMs = medianMs(env.common, wallClock, [&] {
+    grid.build(dst[0], n);
+    grid.reorder(dst[0], back);
+  });
 
   const double scanBytes = 4.0 * n + 4.0 * (n + 1);
   const double reorderBytes = double(n) * (16 + 4 + 4 + 32.0 * opt.arrays);
@@ -234,6 +252,7 @@ std::vector<std::string> runRow(Env& env, const GridOptions& opt, const grid::Sc
           fixed(scanMs, 4),
           fixed(reorderMs, 4),
           fixed(totalMs, 4),
+          fixed(sortedMs, 4),
           fixed(uscanMs, 4),
           fixed(naiveMs, 4),
           fixed(copyMs, 4),
@@ -257,15 +276,16 @@ int runGridBench(Env& env, const GridOptions& opt) {
               wallClock ? "WALL CLOCK around glFinish (this driver's GL timer queries are not meaningful)"
                         : "GL_TIME_ELAPSED queries");
   std::fflush(stdout);
-  Table table({"N", "cells", "ppc", "count_ms", "scan_ms", "reorder_ms", "total_ms", "scanN_ms", "naive_ms", "copy_ms",
-               "scan_GBps", "reorder_GBps", "copy_GBps", "scan/copy%", "naive/scan_x", "grid_MiB", "note"});
+  Table table({"N", "cells", "ppc", "count_ms", "scan_ms", "reorder_ms", "total_ms", "sorted_ms", "scanN_ms",
+               "naive_ms", "copy_ms", "scan_GBps", "reorder_GBps", "copy_GBps", "scan/copy%", "naive/scan_x",
+               "grid_MiB", "note"});
   for (std::size_t n : sizes) {
     if (n == 0 || n > grid::PrefixScan::kMaxCount) throw Error("--n: sizes must be between 1 and 2^31");
     for (double ppc : perCell) {
       try {
         table.add(runRow(env, opt, shapes[0], wallClock, n, ppc));
       } catch (const Error& e) {  // e.g. out of GPU memory: report the row, keep going
-        table.add({std::to_string(n), "", fixed(ppc, 2), "", "", "", "", "", "", "", "", "", "", "", "", "",
+        table.add({std::to_string(n), "", fixed(ppc, 2), "", "", "", "", "", "", "", "", "", "", "", "", "", "",
                    std::string("error: ") + e.what()});
       }
     }

@@ -1,11 +1,12 @@
 // `tidepool bench ripples --size 512..4096`: ms per wave step and effective GB/s against a
-// glCopyBufferSubData of the same state bytes measured in the same run, plus both views at 1080p
+// compute-shader copy (gl::BufferOps) of the same state bytes measured in the same run, plus both views at 1080p
 // (the 3D frame includes the caustics pass).
 #include <cmath>
 #include <cstdio>
 
 #include "bench/bench.h"
 #include "gl/buffer.h"
+#include "gl/buffer_ops.h"
 #include "gl/framebuffer.h"
 #include "render/ripples_view.h"
 #include "render/ripples_view3d.h"
@@ -40,7 +41,8 @@ int run(Env& env, const std::string& sizes) {
     const double bytes = double(size) * size * 16.0;
     const gl::Buffer& state = model.state();
     gl::Buffer copy(state.size());
-    const double copyMs = gpuMedianMs(env.common, [&] { state.copyTo(copy, state.size()); });
+    const gl::BufferOps ops(env.shaders);
+    const double copyMs = gpuMedianMs(env.common, [&] { ops.copy(state, copy, state.size()); });
     const double viewMs = gpuMedianMs(env.common, [&] { view.render(model, target, noProfiler); });
     const double view3dMs = gpuMedianMs(env.common, [&] { view3d.render(model, target, noProfiler); });
     const double gbps = bytes / (stepMs * 1e6), copyGbps = bytes / (copyMs * 1e6);

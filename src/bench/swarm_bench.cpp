@@ -1,5 +1,5 @@
 // `tidepool bench swarm`: the swarm step in ms and GB/s (state bytes read + written per step
-// over GPU time), next to the copy bandwidth of the same bytes (glCopyBufferSubData) measured
+// over GPU time), next to the copy bandwidth of the same bytes (a compute-shader copy, gl::BufferOps) measured
 // in the same run, and the time to draw all N particles as 1-px points at 1920x1080.
 //
 //   tidepool bench swarm --n 1M,4M,16M,20M --storage fp32,fp16 --integrator all --repeats 50
@@ -13,6 +13,7 @@
 
 #include "base/error.h"
 #include "bench/bench.h"
+#include "gl/buffer_ops.h"
 #include "gl/framebuffer.h"
 #include "render/swarm_renderer.h"
 #include "sim/swarm/swarm.h"
@@ -99,7 +100,8 @@ int runSwarmBench(Env& env, const SwarmBenchOptions& o) {
       }
       swarm->setAspect(double(width) / height);
       const double bytes = 2.0 * double(swarm->stateBytes());  // read + written once per step
-      const double copyMs = gpuMedianMs(env.common, [&] { swarm->state().copyTo(scratch, swarm->stateBytes()); });
+      const gl::BufferOps ops(env.shaders);
+      const double copyMs = gpuMedianMs(env.common, [&] { ops.copy(swarm->state(), scratch, swarm->stateBytes()); });
       std::string computeMs = "-", rasterMs = "-";
       if (o.render) {
         for (int i = 0; i < kSettleSteps; ++i) swarm->step(1.0 / 120.0);

@@ -56,6 +56,7 @@ Command addRender(CLI::App& app) {
     int frames = 0;
     std::string size, backend = "auto";
     bool quiet = false;
+    std::string rules;
   };
   auto o = std::make_shared<Opts>();
   sub->add_option("scene", o->job.scene, "scene file, or a name from assets/scenes (e.g. blank)")->required();
@@ -67,6 +68,7 @@ Command addRender(CLI::App& app) {
   sub->add_option("--backend", o->backend, "auto, egl or osmesa")->check(CLI::IsMember({"auto", "egl", "osmesa"}));
   sub->add_flag("--debug-gl", o->job.debugGl, "log KHR_debug driver messages");
   sub->add_flag("--quiet", o->quiet, "no progress bar");
+  sub->add_option("--rules", o->rules, "life: rules JSON file, preset name or share code (sets params.rules)");
   return {sub, [o] {
             RenderJob job = o->job;
             if (o->frames > 0) job.frames = o->frames;
@@ -79,6 +81,7 @@ Command addRender(CLI::App& app) {
             job.backend = gl::parseBackend(o->backend);
             job.debugGl |= kDebugBuild;
             job.progress = !o->quiet;
+            if (!o->rules.empty()) job.paramOverrides = {{"rules", o->rules}};
             renderHeadless(job);
             return 0;
           }};
@@ -87,7 +90,7 @@ Command addRender(CLI::App& app) {
 Command addRun(CLI::App& app) {
   auto* sub = app.add_subcommand("run", "open a scene in a window (headless clip when there is no display)");
   struct Opts {
-    std::string scene = "default", size = "1280x720", backend = "auto", screenshot, out = "out";
+    std::string scene = "default", size = "1280x720", backend = "auto", screenshot, out = "out", rules;
     int frames = 0;
     bool noVsync = false, debugGl = false;
   };
@@ -100,21 +103,25 @@ Command addRun(CLI::App& app) {
       ->check(CLI::IsMember(kBackends));
   sub->add_option("--out", o->out, "folder for the headless clip when there is no display");
   sub->add_flag("--no-vsync", o->noVsync, "render as fast as possible");
+  sub->add_option("--rules", o->rules, "life: rules JSON file, preset name or share code (sets params.rules)");
   sub->add_flag("--debug-gl", o->debugGl, "log KHR_debug driver messages");
   return {sub, [o] {
             int w = 0, h = 0;
             parseSize(o->size, w, h);
             const gl::Backend backend = gl::parseBackend(o->backend);
+            const io::Json overrides = o->rules.empty() ? io::Json() : io::Json{{"rules", o->rules}};
             const bool window =
                 backend == gl::Backend::Window || (backend == gl::Backend::Auto && gl::displayAvailable());
             if (window) {
-              WindowJob job{o->scene, w, h, std::nullopt, o->screenshot, o->debugGl || kDebugBuild, !o->noVsync};
+              const bool debugGl = o->debugGl || kDebugBuild;
+              WindowJob job{o->scene, w, h, std::nullopt, o->screenshot, debugGl, !o->noVsync, overrides};
               if (o->frames > 0) job.maxFrames = o->frames;
               return runWindow(job);
             }
             // No display: render the scene's default clip headless and say where it went.
             RenderJob job;
             job.scene = o->scene;
+            job.paramOverrides = overrides;
             const Scene scene = loadScene(resolveScenePath(o->scene));
             job.outDir = std::filesystem::path(o->out) / std::filesystem::path(scene.file).stem();
             if (o->frames > 0) job.frames = o->frames;

@@ -10,38 +10,59 @@ Command addSweep(CLI::App& app) {
   struct Opts {
     std::string backend = "auto", csvDir = std::string(TIDEPOOL_SOURCE_DIR) + "/bench/results",
                 chartDir = std::string(TIDEPOOL_SOURCE_DIR) + "/docs/charts";
-    bool quick = false, noChart = false;
+    bool quick = false, noChart = false, fromCsv = false;
   };
   auto o = std::make_shared<Opts>();
   sub->add_option("--backend", o->backend, "auto, egl or osmesa")->check(CLI::IsMember({"auto", "egl", "osmesa"}));
   sub->add_option("--csv-dir", o->csvDir, "folder for <study>.csv");
   sub->add_option("--chart-dir", o->chartDir, "folder for <study>.png and .svg");
   sub->add_flag("--quick", o->quick, "fewer points (smoke runs)");
-  sub->add_flag("--no-chart", o->noChart, "write the CSV only");
+  auto* noChart = sub->add_flag("--no-chart", o->noChart, "write the CSV only");
+  sub->add_flag("--from-csv", o->fromCsv,
+                "run nothing: redraw the chart from <csv-dir>/<study>.csv and .chart.json (rows measured "
+                "elsewhere, e.g. on the GPU machine with --no-chart)")
+      ->excludes(noChart);
   sub->require_subcommand(1);
   sub->fallthrough();
   auto chosen = std::make_shared<std::vector<std::pair<CLI::App*, const sweep::Study*>>>();
   for (const sweep::Study& s : sweep::studies()) chosen->emplace_back(sub->add_subcommand(s.name, s.summary), &s);
-  return {sub, [o, chosen] {
-            auto context = gl::createHeadlessContext({gl::parseBackend(o->backend), false});
-            gl::ShaderLibrary shaders(gl::ShaderLibrary::findRoot());
-            sweep::Env env{shaders, gl::queryInfo().renderer, o->quick};
-            for (const auto& [app, study] : *chosen) {
-              if (!app->parsed()) continue;
-              std::printf("sweep %s on %s%s\n", study->name, env.device.c_str(), o->quick ? " (quick)" : "");
-              const sweep::Result result = study->run(env);
-              const std::filesystem::path csv = std::filesystem::path(o->csvDir) / (std::string(study->name) + ".csv");
-              sweep::writeCsv(result, study->name, env.device, csv);
-              std::printf("wrote %zu rows to %s\n", result.rows.size(), csv.c_str());
-              if (!o->noChart) {
-                const std::filesystem::path base = std::filesystem::path(o->chartDir) / study->name;
-                sweep::drawChart(result, env.device, base);
-                std::printf("wrote %s.png and .svg\n", base.c_str());
-              }
-              return 0;
-            }
-            return 2;
-          }};
+  return {
+      sub, [o, chosen] {
+        if (o->fromCsv) {
+          for (const auto& [app, study] : *chosen) {
+            if (!app->parsed()) continue;
+            const std::filesystem::path csv = std::filesystem::path(o->csvDir) / (std::string(study->name) + ".csv");
+            std::string device;
+            const sweep::Result result = sweep::readResult(
+                csv, std::filesystem::path(o->csvDir) / (std::string(study->name) + ".chart.json"), device);
+            const std::filesystem::path base = std::filesystem::path(o->chartDir) / study->name;
+            sweep::drawChart(result, device, base);
+            std::printf("redrew %s.png and .svg from %zu rows measured on %s\n", base.c_str(), result.rows.size(),
+                        device.c_str());
+            return 0;
+          }
+          return 2;
+        }
+        auto context = gl::createHeadlessContext({gl::parseBackend(o->backend), false});
+        gl::ShaderLibrary shaders(gl::ShaderLibrary::findRoot());
+        sweep::Env env{shaders, gl::queryInfo().renderer, o->quick};
+        for (const auto& [app, study] : *chosen) {
+          if (!app->parsed()) continue;
+          std::printf("sweep %s on %s%s\n", study->name, env.device.c_str(), o->quick ? " (quick)" : "");
+          const sweep::Result result = study->run(env);
+          const std::filesystem::path csv = std::filesystem::path(o->csvDir) / (std::string(study->name) + ".csv");
+          sweep::writeCsv(result, study->name, env.device, csv);
+          sweep::writeChartSpec(result, std::filesystem::path(o->csvDir) / (std::string(study->name) + ".chart.json"));
+          std::printf("wrote %zu rows to %s\n", result.rows.size(), csv.c_str());
+          if (!o->noChart) {
+            const std::filesystem::path base = std::filesystem::path(o->chartDir) / study->name;
+            sweep::drawChart(result, env.device, base);
+            std::printf("wrote %s.png and .svg\n", base.c_str());
+          }
+          return 0;
+        }
+        return 2;
+      }};
 }
 
 }  // namespace tidepool::cli

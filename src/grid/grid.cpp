@@ -50,6 +50,7 @@ UniformGrid::UniformGrid(gl::ShaderLibrary& shaders, const GridParams& params, s
       m_shape(shapeOf(params)),
       m_shaders(&shaders),
       m_maxBlockBytes(maxStorageBlockBytes()),
+      m_ops(shaders),
       m_countPass(&shaders.program({"grid/grid_count.comp"})),
       m_scan(shaders) {
   const std::size_t startBytes = (cells() + 1) * kWord;
@@ -81,9 +82,8 @@ void UniformGrid::countParticles(const gl::Buffer& positions, std::size_t count)
                 " MiB, over this driver's SSBO limit of " + std::to_string(m_maxBlockBytes >> 20) + " MiB");
   if (m_indexInCell.size() < count * kWord) m_indexInCell = gl::Buffer(count * kWord);
   m_count = count;
-  // The previous count pass wrote cellCount with atomics; the clear must see those writes done.
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  m_cellCount.fillZero();
+  // The previous count pass and scan read and wrote cellCount; their barriers order the clear.
+  m_ops.fill(m_cellCount, 0);
   if (count) {
     positions.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_POSITIONS);
     m_cellCount.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_CELL_COUNT);

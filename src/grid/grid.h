@@ -32,6 +32,7 @@
 #include <span>
 
 #include "gl/buffer.h"
+#include "gl/buffer_ops.h"
 #include "gl/shader_library.h"
 #include "grid/bindings.glsl"
 #include "grid/grid_reference.h"
@@ -88,6 +89,7 @@ class UniformGrid {
   reference::GridShape m_shape;
   gl::ShaderLibrary* m_shaders;
   std::size_t m_maxBlockBytes;  // GL_MAX_SHADER_STORAGE_BLOCK_SIZE, queried once
+  gl::BufferOps m_ops;          // the cellCount clear
   gl::Program* m_countPass;
   gl::Program* m_reorderPass[GRID_REORDER_MAX_ARRAYS + 1][2] = {};  // [arrays][writes permutation], made on use
   PrefixScan m_scan;

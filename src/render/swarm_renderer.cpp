@@ -41,7 +41,7 @@ glm::vec3 swarmHue(double cycles) {
 }
 
 SwarmRenderer::SwarmRenderer(gl::ShaderLibrary& shaders)
-    : m_shaders(shaders), m_points(gl::VertexArray::create()), m_empty(gl::VertexArray::create()) {}
+    : m_shaders(shaders), m_ops(shaders), m_points(gl::VertexArray::create()), m_empty(gl::VertexArray::create()) {}
 
 void SwarmRenderer::colorFromImage(const sim::Swarm& swarm, const io::Image& image) {
   gl::Texture2D texture(image.width, image.height, GL_RGBA8);
@@ -117,7 +117,7 @@ void SwarmRenderer::splatPoints(const sim::Swarm& swarm, const SwarmViewParams& 
   {
     auto scope = profiler.scope("swarm.splat");
     if (m_splat.size() != bytes) m_splat = gl::Buffer(bytes);
-    m_splat.fillZero();
+    m_ops.fill(m_splat, 0);
     gl::Program& p = m_shaders.program({"render/swarm_splat.comp"}, storageDefine(swarm));
     p.use();
     p.set("uCount", unsigned(swarm.count()));

@@ -16,6 +16,7 @@
 #include <string>
 
 #include "gl/buffer.h"
+#include "gl/buffer_ops.h"
 #include "gl/framebuffer.h"
 #include "gl/gpu_profiler.h"
 #include "gl/shader_library.h"
@@ -71,6 +72,7 @@ class SwarmRenderer {
                    gl::GpuProfiler& profiler);
 
   gl::ShaderLibrary& m_shaders;
+  gl::BufferOps m_ops;  // the splat clear
   gl::VertexArray m_points, m_empty;
   gl::Buffer m_colors;
   std::size_t m_colorCount = 0;

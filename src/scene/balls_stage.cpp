@@ -57,6 +57,12 @@ class BallsStage final : public Stage {
     m_settings.camera = m_view.camera().params();
   }
   double simTime() const override { return m_model.time(); }
+  std::optional<DivergenceReport> divergence() const override { return m_model.divergence(); }
+  bool recover() override { return m_model.recover(); }
+  void flushChecks() override { m_model.flushChecks(); }
+  std::pair<std::string, double> liveMetric() const override {
+    return {"max overlap (% of r)", m_frames > 0 ? 100.0 * m_stats.maxOverlap : NAN};
+  }
   std::string status() const override {
     char buf[256];
     std::snprintf(buf, sizeof buf,

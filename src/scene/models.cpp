@@ -1,6 +1,7 @@
 // The table of models a scene can name. Each model adds one line here when it lands.
 #include "scene/balls_stage.h"
 #include "scene/blank.h"
+#include "scene/life_stage.h"
 #include "scene/ripples_stage.h"
 #include "scene/stage.h"
 #include "scene/swarm_stage.h"
@@ -15,6 +16,7 @@ const std::vector<ModelEntry>& models() {
       {"ripples", "heightfield water: wave equation or the seed's spring model, 2D refraction view",
        createRipplesStage},
       {"swarm", "millions of 2D particles pulled by animated attractors, one following the mouse", createSwarmStage},
+      {"life", "particle life: species with asymmetric forces, glow + HDR view, shareable rules", createLifeStage},
   };
   return table;
 }

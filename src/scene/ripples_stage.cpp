@@ -98,6 +98,7 @@ class RipplesStage final : public Stage {
   std::string status() const override { return m_model.status(); }
   std::optional<DivergenceReport> divergence() const override { return m_model.divergence(); }
   bool recover() override { return m_model.recover(); }
+  std::pair<std::string, double> liveMetric() const override { return {"max |h| (m)", m_model.lastMaxHeight()}; }
   void flushChecks() override { m_model.flushChecks(); }
 
  private:

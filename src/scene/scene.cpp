@@ -68,6 +68,15 @@ Scene loadScene(const fs::path& file) {
   return scene;
 }
 
+Scene loadScene(const fs::path& file, const io::Json& overrides) {
+  Scene scene = loadScene(file);
+  if (overrides.is_object() && !overrides.empty()) {
+    if (!scene.params.is_object()) scene.params = io::Json::object();
+    for (const auto& [key, value] : overrides.items()) scene.params[key] = value;
+  }
+  return scene;
+}
+
 std::unique_ptr<Stage> createStage(const Scene& scene, gl::ShaderLibrary& shaders) {
   std::string known;
   for (const ModelEntry& m : models()) {

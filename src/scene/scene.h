@@ -40,6 +40,9 @@ std::filesystem::path findAssetDir();
 std::filesystem::path resolveScenePath(const std::string& nameOrPath);
 
 Scene loadScene(const std::filesystem::path& file);  // throws Error naming file and key
+// Loads the scene with command-line overrides of its params (e.g. --rules sets params.rules);
+// the stage validates them like the file's own keys.
+Scene loadScene(const std::filesystem::path& file, const io::Json& paramOverrides);
 Scene parseScene(const io::Json& json, const std::string& where);
 
 // Builds the named model's stage; unknown models list the known ones.

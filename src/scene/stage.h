@@ -3,6 +3,7 @@
 // the same way: step() advances one frame of simulated time, render() draws it.
 #pragma once
 
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -27,14 +28,18 @@ class Stage {
   virtual void step(double frameSeconds, gl::GpuProfiler& profiler) = 0;  // one frame of simulated time
   virtual void render(RenderTarget& target, gl::GpuProfiler& profiler) = 0;
   virtual void input(const Input&) {}
+  virtual void key(int /*asciiUpperCase*/) {}  // a letter key the app does not use (e.g. 'C', 'N')
   virtual bool dropFile(const std::string& /*path*/) { return false; }  // a file dropped on the window; true: used
   virtual double simTime() const = 0;                                   // simulated seconds since reset
   virtual std::string status() const { return ""; }                     // one line for the UI (counts, warnings)
+  virtual std::string shareText() const { return ""; }  // the UI offers to copy it (e.g. a rules share code)
 
   // Failing loudly: a model that watches itself reports a blow-up here (non-blocking, a frame or
   // two late), can go back to its last good state with half the time step, and settles the
   // check still in flight at the end of a headless run.
   virtual std::optional<DivergenceReport> divergence() const { return std::nullopt; }
+  // The model's current error metric for the live plot (name with units, value); NaN: none yet.
+  virtual std::pair<std::string, double> liveMetric() const { return {"", NAN}; }
   virtual bool recover() { return false; }
   virtual void flushChecks() {}
 };

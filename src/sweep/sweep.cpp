@@ -1,11 +1,14 @@
 #include "sweep/sweep.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <map>
+#include <sstream>
 
 #include "base/error.h"
+#include "io/json.h"
 #include "io/video.h"
 
 namespace tidepool::sweep {
@@ -52,13 +55,91 @@ void writeCsv(const Result& result, const std::string& study, const std::string&
   if (!out) throw Error("cannot write '" + path.string() + "'");
   out << "study,model,method,dt,substeps,resolution,gpu_ms_per_sim_s";
   for (const std::string& m : result.metrics) out << "," << m;
-  out << ",stable,pareto,device\n";
+  out << ",chart_x,chart_y,stable,pareto,device\n";
   for (const Row& r : result.rows) {
     out << study << "," << result.model << "," << r.method << "," << csvNumber(r.dt) << "," << r.substeps << ","
         << r.resolution << "," << csvNumber(r.costMsPerSimS);
     for (double m : r.metrics) out << "," << csvNumber(m);
-    out << "," << (r.stable ? 1 : 0) << "," << (r.pareto ? 1 : 0) << ",\"" << device << "\"\n";
+    out << "," << csvNumber(r.x) << "," << csvNumber(r.y) << "," << (r.stable ? 1 : 0) << "," << (r.pareto ? 1 : 0)
+        << ",\"" << device << "\"\n";
   }
+}
+
+void writeChartSpec(const Result& result, const fs::path& path) {
+  const ChartSpec& c = result.chart;
+  io::Json j = {{"model", result.model}, {"metrics", result.metrics},
+                {"title", c.title},      {"x_label", c.xLabel},
+                {"y_label", c.yLabel},   {"log_x", c.logX},
+                {"log_y", c.logY},       {"pareto", c.pareto},
+                {"marker_x", c.markerX}, {"marker_label", c.markerLabel}};
+  io::writeJsonFile(path, j);
+}
+
+Result readResult(const fs::path& csv, const fs::path& spec, std::string& device) {
+  Result r;
+  const io::Json j = io::readJsonFile(spec);
+  try {
+    r.model = j.at("model").get<std::string>();
+    r.metrics = j.at("metrics").get<std::vector<std::string>>();
+    r.chart = {j.at("title").get<std::string>(),   j.at("x_label").get<std::string>(),
+               j.at("y_label").get<std::string>(), j.at("log_x").get<bool>(),
+               j.at("log_y").get<bool>(),          j.at("pareto").get<bool>(),
+               j.at("marker_x").get<double>(),     j.at("marker_label").get<std::string>()};
+  } catch (const io::Json::exception& e) {
+    throw Error("'" + spec.string() + "': " + e.what());
+  }
+  std::istringstream lines(io::readTextFile(csv));
+  std::string line;
+  std::vector<std::string> header;
+  auto split = [](const std::string& text) {
+    std::vector<std::string> out(1);
+    bool inQuotes = false;
+    for (char ch : text) {
+      if (ch == '"')
+        inQuotes = !inQuotes;
+      else if (ch == ',' && !inQuotes)
+        out.emplace_back();
+      else
+        out.back() += ch;
+    }
+    return out;
+  };
+  for (int number = 1; std::getline(lines, line); ++number) {
+    if (line.empty()) continue;
+    const std::vector<std::string> f = split(line);
+    const std::string where = csv.string() + ":" + std::to_string(number);
+    if (header.empty()) {
+      header = f;
+      if (header.size() != 12 + r.metrics.size() || header[7 + r.metrics.size()] != "chart_x")
+        throw Error(where + ": not a sweep CSV with chart_x/chart_y columns for " + std::to_string(r.metrics.size()) +
+                    " metrics (rerun the study to rewrite it)");
+      continue;
+    }
+    if (f.size() != header.size())
+      throw Error(where + ": " + std::to_string(f.size()) + " fields, the header has " + std::to_string(header.size()));
+    auto number_ = [&](std::size_t i) {
+      char* end = nullptr;
+      const double v = std::strtod(f[i].c_str(), &end);
+      if (end == f[i].c_str() || *end) throw Error(where + ": " + header[i] + " '" + f[i] + "' is not a number");
+      return v;
+    };
+    Row row;
+    row.method = f[2];
+    row.dt = number_(3);
+    row.substeps = int(number_(4));
+    row.resolution = f[5];
+    row.costMsPerSimS = number_(6);
+    for (std::size_t m = 0; m < r.metrics.size(); ++m) row.metrics.push_back(number_(7 + m));
+    const std::size_t k = 7 + r.metrics.size();
+    row.x = number_(k);
+    row.y = number_(k + 1);
+    row.stable = number_(k + 2) != 0;
+    row.pareto = number_(k + 3) != 0;
+    device = f[k + 4];
+    r.rows.push_back(row);
+  }
+  if (r.rows.empty()) throw Error("'" + csv.string() + "' holds no rows");
+  return r;
 }
 
 void drawChart(const Result& result, const std::string& device, const fs::path& base) {
@@ -76,7 +157,9 @@ void drawChart(const Result& result, const std::string& device, const fs::path& 
   {
     std::ofstream out(dat);
     for (const std::string& m : order) {
-      out << "\"" << m << "\" \"y\"\n";
+      std::string title = m;  // gnuplot's enhanced text would take '_' for a subscript
+      std::replace(title.begin(), title.end(), '_', '-');
+      out << "\"" << title << "\" \"y\"\n";
       for (const Row* r : byMethod[m])
         if (std::isfinite(r->x) && std::isfinite(r->y) && (!result.chart.logY || r->y > 0))
           out << csvNumber(r->x) << " " << csvNumber(r->y) << "\n";

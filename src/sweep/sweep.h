@@ -58,6 +58,12 @@ const std::vector<Study>& studies();
 void markPareto(std::vector<Row>& rows);  // minimises (x, y) among stable rows
 void writeCsv(const Result& result, const std::string& study, const std::string& device,
               const std::filesystem::path& path);
+// The chart's settings beside the CSV (<study>.chart.json), so that charts can be redrawn from
+// rows measured elsewhere (the GPU machine has no gnuplot): `tidepool sweep <study> --from-csv`.
+void writeChartSpec(const Result& result, const std::filesystem::path& path);
+// Reads a CSV written by writeCsv and its chart settings; returns the rows (method, chart x and y,
+// stable, pareto) and the device they were measured on. Throws Error naming the file and line.
+Result readResult(const std::filesystem::path& csv, const std::filesystem::path& spec, std::string& device);
 // Draws the chart with gnuplot into <base>.png and <base>.svg; throws Error when gnuplot is
 // missing or fails.
 void drawChart(const Result& result, const std::string& device, const std::filesystem::path& base);

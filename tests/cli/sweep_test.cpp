@@ -26,9 +26,10 @@ TEST(Sweep, ParetoFrontKeepsOnlyUndominatedStableRows) {
   EXPECT_FALSE(rows[4].pareto);
 }
 
-TEST(Sweep, RipplesStudiesWriteCsvAndCharts) {
+TEST(Sweep, StudiesWriteCsvAndCharts) {
   test::TempDir dir;
-  for (const std::string study : {"ripples-stability", "ripples-dispersion"}) {
+  for (const std::string study :
+       {"ripples-stability", "ripples-dispersion", "balls-restitution", "swarm-orbit", "swarm-precision"}) {
     auto r = test::runTidepool(
         {"sweep", study, "--quick", "--csv-dir", dir.path().string(), "--chart-dir", dir.path().string()});
     ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
@@ -38,7 +39,7 @@ TEST(Sweep, RipplesStudiesWriteCsvAndCharts) {
     EXPECT_EQ(header.rfind("study,model,method,dt,substeps,resolution,gpu_ms_per_sim_s,", 0), 0u) << header;
     EXPECT_NE(header.find(",stable,pareto,device"), std::string::npos);
     int rows = 0;
-    while (std::getline(csv, line)) rows += line.rfind(study + ",ripples,", 0) == 0;
+    while (std::getline(csv, line)) rows += line.rfind(study + ",", 0) == 0;
     EXPECT_GE(rows, 4);
     const io::Image png = io::readPng(dir / (study + ".png"));
     EXPECT_EQ(png.width, 1000);
@@ -50,4 +51,37 @@ TEST(Sweep, UnknownStudyIsAUsageError) {
   auto r = test::runTidepool({"sweep", "balls-nope"});
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_EQ(r.errLines().size(), 1u) << r.err;
+}
+
+// Rows measured on another machine (the GPU machine has no gnuplot) redraw the same chart here;
+// a CSV that does not match its chart settings is refused with one line naming file and line.
+TEST(Sweep, ChartsRedrawFromCsvMeasuredElsewhere) {
+  test::TempDir measured, drawn, redrawn;
+  auto run = test::runTidepool(
+      {"sweep", "swarm-orbit", "--quick", "--csv-dir", measured.path().string(), "--chart-dir", drawn.path().string()});
+  ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
+  ASSERT_TRUE(std::filesystem::exists(measured / "swarm-orbit.chart.json"));
+  auto redraw = test::runTidepool({"sweep", "swarm-orbit", "--from-csv", "--csv-dir", measured.path().string(),
+                                   "--chart-dir", redrawn.path().string()});
+  ASSERT_EQ(redraw.exitCode, 0) << redraw.out << redraw.err;
+  auto text = [](const std::filesystem::path& p) {
+    std::ifstream in(p);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  EXPECT_EQ(text(drawn / "swarm-orbit.svg"), text(redrawn / "swarm-orbit.svg"));
+
+  {
+    std::ofstream csv(measured / "swarm-orbit.csv", std::ios::app);
+    csv << "swarm-orbit,swarm,verlet,0.01,1,1M,not-a-number,1,1,1,1,1,0,\"dev\"\n";  // 2 metrics
+  }
+  auto bad = test::runTidepool({"sweep", "swarm-orbit", "--from-csv", "--csv-dir", measured.path().string(),
+                                "--chart-dir", redrawn.path().string()});
+  EXPECT_EQ(bad.exitCode, 1);
+  ASSERT_EQ(bad.errLines().size(), 1u) << bad.err;
+  EXPECT_NE(bad.err.find("swarm-orbit.csv:"), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find("gpu_ms_per_sim_s 'not-a-number' is not a number"), std::string::npos) << bad.err;
+
+  auto missing = test::runTidepool({"sweep", "swarm-precision", "--from-csv", "--csv-dir", measured.path().string()});
+  EXPECT_EQ(missing.exitCode, 1);
+  EXPECT_EQ(missing.errLines().size(), 1u) << missing.err;
 }

@@ -1,6 +1,8 @@
 #include "sim/balls/balls.h"
 
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "balls/bindings.glsl"
@@ -10,13 +12,17 @@
 namespace tidepool::balls {
 namespace {
 constexpr float kPi = 3.14159265358979f;
-constexpr int kGroup = 128;       // local size of the balls kernels
-constexpr int kStatsValues = 10;  // per work group, see shaders/balls/stats.comp
+constexpr int kGroup = 128;                                        // local size of the balls kernels
+constexpr int kStatsValues = 10;                                   // per work group, see shaders/balls/stats.comp
+constexpr int kCheckInterval = 8;                                  // frames between divergence checks
+constexpr std::size_t kMaxCheckpointBalls = std::size_t(4) << 20;  // larger runs keep no copy to go back to
 
 std::string mib(std::size_t bytes) { return std::to_string((bytes + (1 << 20) - 1) >> 20) + " MiB"; }
 }  // namespace
 
-Balls::Balls(gl::ShaderLibrary& shaders, const Params& params) : m_shaders(shaders), m_params(params) { reset(); }
+Balls::Balls(gl::ShaderLibrary& shaders, const Params& params) : m_shaders(shaders), m_ops(shaders), m_params(params) {
+  reset();
+}
 
 void Balls::allocate(std::size_t count, std::size_t capacity) {
   if (capacity > std::size_t(m_params.maxParticles))
@@ -46,6 +52,10 @@ void Balls::allocate(std::size_t count, std::size_t capacity) {
   m_permutation = gl::Buffer(std::max<std::size_t>(capacity, 1) * sizeof(GLuint));
   m_stats = gl::Buffer(((capacity + kGroup - 1) / kGroup + 1) * kStatsValues * sizeof(float));
   m_capacity = capacity;
+  m_health = gl::Buffer(4 * sizeof(GLuint));
+  const bool checkpoints = capacity <= kMaxCheckpointBalls;
+  for (gl::Buffer* b : {&m_pendingPos, &m_pendingVel, &m_goodPos, &m_goodVel})
+    *b = checkpoints ? gl::Buffer(bytes) : gl::Buffer();
 }
 
 void Balls::reset() {
@@ -57,6 +67,11 @@ void Balls::reset() {
   allocate(water.size(), water.size() + (m_params.tap ? std::size_t(m_params.tapMax) : 0));
   m_tapEmitted = 0;
   m_tapNextLayer = 0;
+  m_hasGood = false;
+  m_divergence.reset();
+  m_framesSinceCheck = 0;
+  std::vector<std::byte> discard;
+  m_readback.wait(discard);
   m_pos[0].upload(water.data(), water.size() * sizeof(glm::vec4));
   m_vel[0].fillZero();
   m_acc.fillZero();
@@ -213,8 +228,15 @@ void Balls::gridAndCollide(gl::GpuProfiler* profiler, bool verlet, float kick) {
   auto scope = [&](const char* name) { return profiler ? profiler->scope(name) : gl::GpuProfiler::Scope(nullptr); };
   const int p = m_posIndex, v = m_velIndex;
   {
-    auto s = scope("balls.grid");
-    m_grid->build(m_pos[p], m_count);
+    auto s = scope("balls.count");
+    m_grid->countParticles(m_pos[p], m_count);
+  }
+  {
+    auto s = scope("balls.scan");
+    m_grid->scanCells();
+  }
+  {
+    auto s = scope("balls.reorder");
     m_grid->reorder(m_pos[p], {{&m_pos[p], &m_pos[1 - p]}, {&m_vel[v], &m_vel[1 - v]}},
                     m_trackOrder ? &m_permutation : nullptr);
   }
@@ -260,6 +282,92 @@ void Balls::stepOnce(gl::GpuProfiler* profiler) {
 
 void Balls::step(gl::GpuProfiler& profiler) {
   for (int i = 0; i < m_params.substeps; ++i) stepOnce(&profiler);
+  watch();
+}
+
+double Balls::speedBound() const { return 2.0 * m_radius / m_params.dt; }
+
+void Balls::watch() {
+  std::vector<std::byte> bytes;
+  if (m_readback.poll(bytes)) {
+    GLuint v[4];
+    std::memcpy(v, bytes.data(), sizeof v);
+    judge(v, m_pendingTime);
+  }
+  if (m_readback.pending() || ++m_framesSinceCheck < kCheckInterval || m_divergence || m_count == 0) return;
+  m_framesSinceCheck = 0;
+  m_health.fillZero();
+  gl::Program& p = m_shaders.program({"balls/health.comp"});
+  p.use();
+  p.set("uCount", GLuint(m_count));
+  p.set("uWallMin", m_wallMin);
+  p.set("uWallMax", m_wallMax);
+  positions().bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_POS_IN);
+  velocities().bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VEL_IN);
+  m_health.bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_STATS);
+  p.dispatchThreads(m_count);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  if (m_pendingPos) {
+    const std::size_t bytes = m_count * sizeof(glm::vec4);
+    m_ops.copy(positions(), m_pendingPos, bytes);
+    m_ops.copy(velocities(), m_pendingVel, bytes);
+  }
+  m_pendingTime = m_time;
+  m_pendingCount = m_count;
+  m_readback.request(m_health, m_health.size());
+}
+
+void Balls::judge(const GLuint v[4], double time) {
+  float maxSpeed = 0;
+  std::memcpy(&maxSpeed, &v[1], sizeof maxSpeed);
+  if (v[0] == 0 && v[2] == 0 && maxSpeed <= speedBound()) {
+    std::swap(m_pendingPos, m_goodPos);
+    std::swap(m_pendingVel, m_goodVel);
+    m_goodTime = time;
+    m_goodCount = m_pendingCount;
+    m_hasGood = bool(m_goodPos);
+    return;
+  }
+  char what[160];
+  if (v[0] > 0)
+    std::snprintf(what, sizeof what, "%u balls are NaN or infinite", v[0]);
+  else if (v[2] > 0)
+    std::snprintf(what, sizeof what, "%u balls left the domain", v[2]);
+  else
+    std::snprintf(what, sizeof what, "a ball moves at %.3g m/s, more than its diameter per step (%.3g m/s)", maxSpeed,
+                  speedBound());
+  char text[512];
+  std::snprintf(
+      text, sizeof text, "balls diverged by t = %.4f s: %s (%s contacts, %s, dt = %.3g s)%s", time, what,
+      kContactNames[int(m_params.contact)], kIntegratorNames[int(m_params.integrator)], m_params.dt,
+      m_hasGood ? "; halve the time step and resume from the last good state" : "; halve the time step and reset");
+  m_divergence = DivergenceReport{text, time};
+}
+
+bool Balls::recover() {
+  if (!m_divergence || !m_hasGood) return false;
+  const std::size_t bytes = m_goodCount * sizeof(glm::vec4);
+  m_ops.copy(m_goodPos, m_pos[m_posIndex], bytes);
+  m_ops.copy(m_goodVel, m_vel[m_velIndex], bytes);
+  m_count = m_goodCount;
+  m_time = m_goodTime;
+  m_accValid = false;  // Verlet re-evaluates a(x) for the restored state
+  m_params.dt *= 0.5f;
+  m_params.substeps = std::min(m_params.substeps * 2, 1000);  // same simulated time per frame
+  m_divergence.reset();
+  m_framesSinceCheck = 0;
+  std::vector<std::byte> discard;
+  m_readback.wait(discard);
+  return true;
+}
+
+void Balls::flushChecks() {
+  if (!m_readback.pending()) return;
+  std::vector<std::byte> bytes;
+  m_readback.wait(bytes);
+  GLuint v[4];
+  std::memcpy(v, bytes.data(), sizeof v);
+  judge(v, m_pendingTime);
 }
 
 Stats Balls::stats() {

@@ -9,11 +9,14 @@
 #include <optional>
 #include <string>
 
+#include "gl/async_readback.h"
 #include "gl/buffer.h"
+#include "gl/buffer_ops.h"
 #include "gl/gpu_profiler.h"
 #include "gl/shader_library.h"
 #include "grid/grid.h"
 #include "sim/balls/balls_params.h"
+#include "sim/divergence.h"
 
 namespace tidepool::balls {
 
@@ -52,7 +55,14 @@ class Balls {
   float domainRotation() const;  // radians about x
   float obstacleAngle() const;   // radians about the vertical through its centre
   double time() const { return m_time; }
-  std::size_t bytesPerBall() const;  // GPU memory per ball, grid included
+  std::size_t bytesPerBall() const;                                   // GPU memory per ball, grid included
+  std::size_t cells() const { return m_grid ? m_grid->cells() : 0; }  // of the neighbour grid
+
+  // Divergence watch (sim/divergence.h): non-blocking checks every few frames (step()).
+  std::optional<DivergenceReport> divergence() const { return m_divergence; }
+  bool recover();             // back to the last good state with half the time step; false if none
+  void flushChecks();         // waits for the check in flight
+  double speedBound() const;  // m/s: faster means more than 2r per step, balls can pass through each other
 
   const gl::Buffer& positions() const { return m_pos[m_posIndex]; }      // vec4 (m, w = 1)
   const gl::Buffer& velocities() const { return m_vel[m_velIndex]; }     // vec4 (m/s, w = foam)
@@ -69,6 +79,8 @@ class Balls {
   void buildObstacle();
   bool obstacleEdited() const;  // shape, size or place changed since the last build
   void emitFromTap();           // appends a layer of balls when the jet has advanced one spacing
+  void watch();                 // polls the check in flight, starts the next one
+  void judge(const GLuint values[4], double time);
   void updateWalls();
   std::vector<gl::ShaderDefine> defines(bool verlet) const;
   void bindCommon(gl::Program& p) const;
@@ -76,6 +88,7 @@ class Balls {
   void gridAndCollide(gl::GpuProfiler* profiler, bool verlet, float kick);
 
   gl::ShaderLibrary& m_shaders;
+  gl::BufferOps m_ops;  // checkpoint copies of the divergence watch
   Params m_params;
   float m_radius = 0;
   std::size_t m_count = 0, m_capacity = 0, m_obstacleCount = 0;
@@ -89,6 +102,14 @@ class Balls {
   glm::vec3 m_wallMin{0.0f}, m_wallMax{1.0f}, m_wallMinVel{0.0f}, m_wallMaxVel{0.0f};
   double m_time = 0;
   bool m_trackOrder = false, m_accValid = false;
+  // Divergence watch: reduced values, the state copied at the check, the last state judged good.
+  gl::Buffer m_health, m_pendingPos, m_pendingVel, m_goodPos, m_goodVel;
+  gl::AsyncReadback m_readback;
+  double m_pendingTime = 0, m_goodTime = 0;
+  std::size_t m_pendingCount = 0, m_goodCount = 0;
+  bool m_hasGood = false;
+  int m_framesSinceCheck = 0;
+  std::optional<DivergenceReport> m_divergence;
 };
 
 }  // namespace tidepool::balls

@@ -19,7 +19,8 @@ std::string fmt(const char* format, double a, double b = 0) {
 }
 }  // namespace
 
-Ripples::Ripples(gl::ShaderLibrary& shaders, const Params& params) : m_shaders(shaders), m_params(params) {
+Ripples::Ripples(gl::ShaderLibrary& shaders, const Params& params)
+    : m_shaders(shaders), m_ops(shaders), m_params(params) {
   allocate();
 }
 
@@ -153,12 +154,13 @@ void Ripples::watch() {
   m_health.bindBase(GL_SHADER_STORAGE_BUFFER, RIPPLES_HEALTH);
   p.dispatchThreads(std::size_t(m_width) * m_height);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  m_state[m_current].copyTo(m_pending, m_pending.size());  // the state this check judges
+  m_ops.copy(m_state[m_current], m_pending, m_pending.size());  // the state this check judges
   m_pendingTime = m_time;
   m_readback.request(m_health, m_health.size());
 }
 
 void Ripples::judge(const Health& h) {
+  m_lastMaxHeight = h.maxMagnitude;
   if (h.nanCount == 0 && h.maxMagnitude <= heightBound()) {
     std::swap(m_pending, m_good);
     m_goodTime = h.time;
@@ -181,7 +183,7 @@ void Ripples::judge(const Health& h) {
 
 bool Ripples::recover() {
   if (!m_divergence || !m_hasGood) return false;
-  m_good.copyTo(m_state[m_current], m_good.size());
+  m_ops.copy(m_good, m_state[m_current], m_good.size());
   m_time = m_goodTime;
   if (m_params.autoSubsteps && m_params.rule == Rule::Wave)
     m_params.courantTarget *= 0.5f;

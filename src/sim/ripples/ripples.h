@@ -5,12 +5,14 @@
 //   Using Height Fields" (GDC 2008).
 #pragma once
 
+#include <cmath>
 #include <optional>
 #include <random>
 #include <string>
 
 #include "gl/async_readback.h"
 #include "gl/buffer.h"
+#include "gl/buffer_ops.h"
 #include "gl/gpu_profiler.h"
 #include "gl/shader_library.h"
 #include "sim/divergence.h"
@@ -46,6 +48,7 @@ class Ripples {
   bool recover();              // back to the last good state with half the time step; false if none
   void flushChecks();          // waits for the check in flight (end of a headless run)
   double heightBound() const;  // |h| above this counts as a blow-up (m, or seed units)
+  double lastMaxHeight() const { return m_lastMaxHeight; }  // max |h| of the last check (NaN before)
 
  private:
   void allocate();
@@ -55,6 +58,7 @@ class Ripples {
   gl::Program& stepProgram();
 
   gl::ShaderLibrary& m_shaders;
+  gl::BufferOps m_ops;  // checkpoint copies
   Params m_params;
   int m_width = 0, m_height = 0;  // allocated size
   gl::Buffer m_state[2];
@@ -71,6 +75,7 @@ class Ripples {
   int m_framesSinceCheck = 0;
   double m_lastDt = 0;
   std::optional<DivergenceReport> m_divergence;
+  double m_lastMaxHeight = NAN;
   std::mt19937 m_rng{12345};
 };
 

@@ -83,12 +83,4 @@ double noiseGrowth(gl::ShaderLibrary& shaders, const Params& p, double dt, int s
   return growth;
 }
 
-double bisectLimit(double stable, double unstable, double tolerance, const std::function<bool(double)>& isStable) {
-  while ((unstable - stable) / stable > tolerance) {
-    const double mid = 0.5 * (stable + unstable);
-    (isStable(mid) ? stable : unstable) = mid;
-  }
-  return 0.5 * (stable + unstable);
-}
-
 }  // namespace tidepool::ripples

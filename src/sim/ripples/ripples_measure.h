@@ -6,6 +6,7 @@
 #include <functional>
 
 #include "gl/shader_library.h"
+#include "sim/bisect.h"
 #include "sim/ripples/ripples_params.h"
 
 namespace tidepool::ripples {
@@ -25,8 +26,5 @@ double measuredPhaseRatio(gl::ShaderLibrary& shaders, int width, int height, dou
 // Growth of random noise (max |h| / start) after `steps` steps of dt; infinity on NaN/inf or
 // once it passes `giveUp` (checked every 500 steps, so unstable runs end early).
 double noiseGrowth(gl::ShaderLibrary& shaders, const Params& params, double dt, int steps, double giveUp = 100.0);
-
-// Largest x in [stable, unstable] with isStable(x), by bisection to a relative width `tolerance`.
-double bisectLimit(double stable, double unstable, double tolerance, const std::function<bool(double)>& isStable);
 
 }  // namespace tidepool::ripples

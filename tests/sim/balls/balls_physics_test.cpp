@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "sim/balls/balls.h"
+#include "sim/balls/balls_measure.h"
 #include "support/gl_test.h"
 
 using namespace tidepool;
@@ -27,29 +28,6 @@ Params oneBallBox() {
   return p;
 }
 
-// Measured restitution of one ball hitting the floor at 1 m/s without gravity, and the contact
-// duration in steps.
-std::pair<double, int> bounce(gl::ShaderLibrary& shaders, Integrator integrator, float e, int stepsPerContact) {
-  Params p = oneBallBox();
-  p.gravity = glm::vec3(0.0f);
-  p.integrator = integrator;
-  p.restitution = e;
-  p.contactTime = 0.01f;
-  p.dt = p.contactTime / float(stepsPerContact);
-  Balls b(shaders, p);
-  b.upload({glm::vec4(0.5f, 0.5f, p.radius + 0.01f, 1.0f)}, {glm::vec4(0.0f, 0.0f, -1.0f, 0.0f)});
-  int inContact = 0;
-  for (int i = 0; i < 20 * stepsPerContact; ++i) {
-    b.stepOnce();
-    const glm::vec4 x = b.downloadPositions()[0];
-    if (x.z < p.radius)
-      ++inContact;
-    else if (inContact > 0)
-      return {double(b.downloadVelocities()[0].z) / 1.0, inContact};
-  }
-  return {-1.0, inContact};
-}
-
 }  // namespace
 
 TEST_F(BallsPhysics, FreeFallFollowsTheParabolaBeforeContact) {
@@ -69,18 +47,17 @@ TEST_F(BallsPhysics, FreeFallFollowsTheParabolaBeforeContact) {
 
 TEST_F(BallsPhysics, SpringDashpotRestitutionMatchesAt50StepsPerContactAndConverges) {
   for (float e : {0.5f, 0.9f}) {
-    const auto [e50, steps50] = bounce(shaders(), Integrator::SymplecticEuler, e, 50);
-    EXPECT_NEAR(e50 / e, 1.0, 0.02) << "e = " << e << ": measured " << e50;
-    EXPECT_NEAR(steps50, 50, 2) << "the contact lasts t_c";
-    const double err20 = std::abs(bounce(shaders(), Integrator::SymplecticEuler, e, 20).first / e - 1.0);
-    const double err50 = std::abs(e50 / e - 1.0);
-    const double err100 = std::abs(bounce(shaders(), Integrator::SymplecticEuler, e, 100).first / e - 1.0);
+    const Bounce b50 = measureBounce(shaders(), Integrator::SymplecticEuler, e, 50);
+    EXPECT_NEAR(b50.restitution / e, 1.0, 0.02) << "e = " << e << ": measured " << b50.restitution;
+    EXPECT_NEAR(b50.contactSteps, 50, 2) << "the contact lasts t_c";
+    const double err20 = std::abs(measureBounce(shaders(), Integrator::SymplecticEuler, e, 20).restitution / e - 1.0);
+    const double err50 = std::abs(b50.restitution / e - 1.0);
+    const double err100 = std::abs(measureBounce(shaders(), Integrator::SymplecticEuler, e, 100).restitution / e - 1.0);
     EXPECT_LT(err50, err20);
     EXPECT_LT(err100, err50) << "first order: the error shrinks with dt";
   }
-  const auto [verlet, steps] = bounce(shaders(), Integrator::VelocityVerlet, 0.9f, 50);
+  const double verlet = measureBounce(shaders(), Integrator::VelocityVerlet, 0.9f, 50).restitution;
   EXPECT_NEAR(verlet / 0.9, 1.0, 0.02) << "velocity Verlet: " << verlet;
-  (void)steps;
 }
 
 TEST_F(BallsPhysics, HeadOnCollisionConservesMomentumAndSwapsEqualMasses) {
@@ -106,32 +83,27 @@ TEST_F(BallsPhysics, HeadOnCollisionConservesMomentumAndSwapsEqualMasses) {
 }
 
 TEST_F(BallsPhysics, ExplicitEulerGainsEnergyOnAnUndampedContactTheOthersDoNot) {
-  // A ball resting on the floor under gravity, pushed in to twice its equilibrium overlap: it
-  // oscillates in contact (undamped, e = 1) with an amplitude of one equilibrium overlap.
-  auto amplitudeGrowth = [&](Integrator integrator) {
-    Params p = oneBallBox();
-    p.restitution = 1.0f;
-    p.contactTime = 0.01f;  // half period of the contact oscillation
-    p.dt = p.contactTime / 25;
-    p.integrator = integrator;
-    const double omega2 = springPerMass(p);  // wall: m_eff = m
-    const double equilibrium = 9.81 / omega2;
-    Balls b(shaders(), p);
-    b.upload({glm::vec4(0.5f, 0.5f, float(p.radius - 2 * equilibrium), 1.0f)}, {glm::vec4(0.0f)});
-    double maxDeviation = 0;
-    for (int i = 0; i < 250; ++i) {  // five periods
-      b.stepOnce();
-      const double overlap = p.radius - b.downloadPositions()[0].z;
-      maxDeviation = std::max(maxDeviation, std::abs(overlap - equilibrium));
-    }
-    return maxDeviation / equilibrium;  // 1 when the amplitude is kept
-  };
-  const double explicitEuler = amplitudeGrowth(Integrator::ExplicitEuler);
-  const double symplectic = amplitudeGrowth(Integrator::SymplecticEuler);
-  const double verlet = amplitudeGrowth(Integrator::VelocityVerlet);
+  // Five periods of an undamped contact oscillation at t_c/dt = 25.
+  const double explicitEuler = contactAmplitudeGrowth(shaders(), Integrator::ExplicitEuler, 1.0 / 25, 5);
+  const double symplectic = contactAmplitudeGrowth(shaders(), Integrator::SymplecticEuler, 1.0 / 25, 5);
+  const double verlet = contactAmplitudeGrowth(shaders(), Integrator::VelocityVerlet, 1.0 / 25, 5);
   EXPECT_GT(explicitEuler, 1.5) << "explicit Euler must gain energy";
   EXPECT_LT(symplectic, 1.15) << "symplectic Euler stays bounded";
   EXPECT_LT(verlet, 1.05) << "velocity Verlet stays bounded";
+}
+
+TEST_F(BallsPhysics, UndampedContactStabilityLimitIsTwoOverOmega) {
+  // ω0 = π / t_c for e = 1, so symplectic Euler and Verlet are stable while dt < 2/ω0 = 0.6366 t_c.
+  const double theory = 2.0 / M_PI;
+  for (Integrator integrator : {Integrator::SymplecticEuler, Integrator::VelocityVerlet}) {
+    const double measured = stableStepLimit(shaders(), integrator, 0.01);
+    std::printf("%s: largest stable dt = %.4f t_c (theory %.4f t_c)\n", kIntegratorNames[int(integrator)], measured,
+                theory);
+    EXPECT_NEAR(measured / theory, 1.0, 0.10) << kIntegratorNames[int(integrator)];
+  }
+  // Explicit Euler has no stable step on an undamped oscillator: it grows even at t_c/100.
+  EXPECT_GT(contactGrowthRatio(shaders(), Integrator::ExplicitEuler, 1.0 / 100, 10), 1.5);
+  EXPECT_EQ(stableStepLimit(shaders(), Integrator::ExplicitEuler, 0.05), 0.0);
 }
 
 // About 8k balls settling in a packed column. The spring-dashpot law is stiff by construction

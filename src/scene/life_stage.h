@@ -1,0 +1,15 @@
+// The life scene: particle life (sim/life), its glow/HDR view and the article's controls —
+// left drag pushes particles (a Gaussian brush of a sixteenth of the view width), right drag
+// pans, the wheel zooms about the cursor; keys C centre the view, N new random rules, S saves
+// the rules to particle-life-system.json (R, the app's reset, restarts with the same rules).
+// Rules come from the scene's "rules" (a rules JSON path, a preset name from assets/rules, or a
+// share code) or are generated from its seed; a rules JSON dropped on the window replaces them.
+#pragma once
+
+#include "scene/stage.h"
+
+namespace tidepool {
+
+std::unique_ptr<Stage> createLifeStage(const io::Json& params, const std::string& where, gl::ShaderLibrary& shaders);
+
+}  // namespace tidepool

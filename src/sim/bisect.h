@@ -1,0 +1,18 @@
+// Bisection for stability limits: the largest x in [stable, unstable] with isStable(x).
+#pragma once
+
+#include <functional>
+
+namespace tidepool {
+
+// Assumes isStable(stable) and !isStable(unstable); stops at a relative width of `tolerance`.
+inline double bisectLimit(double stable, double unstable, double tolerance,
+                          const std::function<bool(double)>& isStable) {
+  while ((unstable - stable) / stable > tolerance) {
+    const double mid = 0.5 * (stable + unstable);
+    (isStable(mid) ? stable : unstable) = mid;
+  }
+  return 0.5 * (stable + unstable);
+}
+
+}  // namespace tidepool

@@ -1,0 +1,84 @@
+// Studies of the swarm: energy error on a circular orbit against cost per integrator (the slopes
+// show the orders), and what fp16 state storage costs in accuracy against what it saves.
+#include <cmath>
+
+#include "bench/bench.h"
+#include "sim/swarm/swarm.h"
+#include "sim/swarm/swarm_measure.h"
+#include "sweep/sweep.h"
+
+namespace tidepool::sweep {
+namespace {
+
+// GPU ms of one step of n particles with the orbit preset (a step's cost does not depend on dt).
+double msPerStep(gl::ShaderLibrary& shaders, int n, sim::Integrator integrator, sim::Storage storage) {
+  sim::SwarmParams p;
+  p.particles = n;
+  p.integrator = integrator;
+  p.storage = storage;
+  sim::Swarm swarm(shaders, p);
+  const bench::Common timing{"auto", "", 5, 2};
+  return bench::gpuMedianMs(timing, [&] { swarm.step(1.0 / 120.0); });
+}
+
+Row orbitRow(Env& env, sim::Integrator integrator, sim::Storage storage, int stepsPerOrbit, double stepMs,
+             const std::string& method) {
+  const double error = sim::orbitEnergyError(env.shaders, integrator, storage, stepsPerOrbit);
+  Row row;
+  row.method = method;
+  row.dt = sim::orbitPeriod() / stepsPerOrbit;
+  row.resolution = std::to_string(stepsPerOrbit) + " steps/orbit";
+  row.costMsPerSimS = stepMs / row.dt;
+  row.stable = std::isfinite(error);
+  row.metrics = {double(stepsPerOrbit), error};
+  row.x = row.costMsPerSimS;
+  row.y = error;
+  return row;
+}
+
+Result orbit(Env& env) {
+  Result r;
+  r.model = "swarm";
+  r.metrics = {"steps_per_orbit", "energy_error"};
+  r.chart.title = "swarm-orbit: energy error after 10 orbits against cost, per integrator (fp32)";
+  r.chart.xLabel = "GPU ms per simulated second (1M particles)";
+  r.chart.yLabel = "max |{/Symbol D}E| / s over 10 orbits";
+  const int n = env.quick ? 1 << 14 : 1 << 20;
+  const std::vector<int> steps = env.quick ? std::vector<int>{50, 200} : std::vector<int>{25, 50, 100, 200, 400, 800};
+  for (sim::Integrator integrator : {sim::Integrator::ExplicitEuler, sim::Integrator::SymplecticEuler,
+                                     sim::Integrator::Verlet, sim::Integrator::Rk4}) {
+    const double stepMs = msPerStep(env.shaders, n, integrator, sim::Storage::Fp32);
+    for (int s : steps)
+      r.rows.push_back(
+          orbitRow(env, integrator, sim::Storage::Fp32, s, stepMs, sim::kIntegratorNames[int(integrator)]));
+  }
+  markPareto(r.rows);
+  return r;
+}
+
+Result precision(Env& env) {
+  Result r;
+  r.model = "swarm";
+  r.metrics = {"steps_per_orbit", "energy_error"};
+  r.chart.title = "swarm-precision: fp16 against fp32 state (velocity Verlet and RK4 on the orbit)";
+  r.chart.xLabel = "GPU ms per simulated second (1M particles)";
+  r.chart.yLabel = "max |{/Symbol D}E| / s over 10 orbits";
+  const int n = env.quick ? 1 << 14 : 1 << 20;
+  const std::vector<int> steps = env.quick ? std::vector<int>{100} : std::vector<int>{50, 100, 200, 400};
+  for (sim::Integrator integrator : {sim::Integrator::Verlet, sim::Integrator::Rk4})
+    for (sim::Storage storage : {sim::Storage::Fp32, sim::Storage::Fp16}) {
+      const double stepMs = msPerStep(env.shaders, n, integrator, storage);
+      const std::string method =
+          std::string(sim::kIntegratorNames[int(integrator)]) + " " + sim::kStorageNames[int(storage)];
+      for (int s : steps) r.rows.push_back(orbitRow(env, integrator, storage, s, stepMs, method));
+    }
+  markPareto(r.rows);
+  return r;
+}
+
+}  // namespace
+
+Study swarmOrbitStudy() { return {"swarm-orbit", "energy error on a circular orbit vs cost, per integrator", orbit}; }
+Study swarmPrecisionStudy() { return {"swarm-precision", "fp16 vs fp32 state: energy error vs cost", precision}; }
+
+}  // namespace tidepool::sweep

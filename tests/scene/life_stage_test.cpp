@@ -1,0 +1,101 @@
+// The life scene: its share code is the running rules; N makes new (valid, reproducible) rules
+// of the same shape; a bad "rules" key names the scene key; a dropped rules JSON replaces the
+// rules, a bad one is refused in the panel and changes nothing.
+#include <gtest/gtest.h>
+
+#include "io/json.h"
+#include "scene/life_stage.h"
+#include "sim/life/life_rules.h"
+#include "support/gl_test.h"
+
+using namespace tidepool;
+
+namespace {
+class LifeStageTest : public test::GlTest {};
+
+// Reads one text parameter the way the ImGui editor shows it: through visitParams.
+class ReadText final : public ParamVisitor {
+ public:
+  explicit ReadText(const char* key) : m_key(key) {}
+  void real(const ParamInfo&, float&, float, float) override {}
+  void integer(const ParamInfo&, int&, int, int) override {}
+  void flag(const ParamInfo&, bool&) override {}
+  void text(const ParamInfo& info, std::string& value) override {
+    if (m_key == info.key) found = value;
+  }
+  void color(const ParamInfo&, glm::vec3&) override {}
+  void vector(const ParamInfo&, glm::vec3&, float, float) override {}
+  void choiceIndex(const ParamInfo&, int&, std::span<const char* const>) override {}
+  bool beginGroup(const ParamInfo&) override { return true; }
+  void endGroup() override {}
+  std::string found;
+
+ private:
+  std::string m_key;
+};
+
+std::string shownText(Stage& stage, const char* key) {
+  ReadText reader(key);
+  stage.visitParams(reader);
+  return reader.found;
+}
+
+io::Json smallScene() {
+  return io::Json::parse(R"({"species": 3, "particle_count": 1024, "width": 256, "height": 144, "seed": 4})");
+}
+}  // namespace
+
+TEST_F(LifeStageTest, ShareCodeFollowsTheRulesAndNMakesNewOnes) {
+  auto stage = createLifeStage(smallScene(), "s.json: params", shaders());
+  const life::Rules first = life::decodeShareCode(stage->shareText());
+  EXPECT_TRUE(first == life::generateRules({.species = 3, .particleCount = 1024, .size = {256, 144}, .seed = 4}));
+  gl::GpuProfiler profiler;
+  stage->key('N');
+  stage->step(0.025, profiler);
+  const life::Rules next = life::decodeShareCode(stage->shareText());
+  EXPECT_FALSE(next == first);
+  EXPECT_EQ(next.speciesCount(), 3);
+  EXPECT_EQ(next.particleCount, 1024);
+  auto again = createLifeStage(smallScene(), "s.json: params", shaders());
+  again->key('N');
+  again->step(0.025, profiler);
+  EXPECT_EQ(again->shareText(), stage->shareText()) << "N is reproducible too";
+}
+
+TEST_F(LifeStageTest, BadRulesKeyIsReportedWithTheSceneKey) {
+  io::Json p = smallScene();
+  p["rules"] = "AAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAA";
+  try {
+    createLifeStage(p, "s.json: params", shaders());
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("s.json: params.rules: share code:"), std::string::npos) << e.what();
+  }
+  p["rules"] = "cells";  // a preset name from assets/rules
+  EXPECT_NO_THROW(createLifeStage(p, "s.json: params", shaders()));
+}
+
+TEST_F(LifeStageTest, DroppedRulesFileLoadsAndABadOneChangesNothing) {
+  test::TempDir dir;
+  const life::Rules dropped = life::generateRules({.species = 2, .particleCount = 512, .size = {128, 72}, .seed = 9});
+  io::writeJsonFile((dir / "good.json").string(), life::rulesToJson(dropped));
+  io::Json bad = life::rulesToJson(dropped);
+  bad["species"][0]["forces"][1]["collisionRadius"] = 1e3;
+  io::writeJsonFile((dir / "bad.json").string(), bad);
+
+  auto stage = createLifeStage(smallScene(), "s.json: params", shaders());
+  gl::GpuProfiler profiler;
+  EXPECT_TRUE(stage->dropFile((dir / "good.json").string()));
+  stage->step(0.025, profiler);
+  EXPECT_TRUE(life::decodeShareCode(stage->shareText()) == dropped);
+  EXPECT_EQ(shownText(*stage, "error"), "");
+
+  const std::string before = stage->shareText();
+  EXPECT_TRUE(stage->dropFile((dir / "bad.json").string()));  // the model's file, refused with a reason
+  stage->step(0.025, profiler);
+  EXPECT_EQ(stage->shareText(), before);
+  const std::string error = shownText(*stage, "error");
+  EXPECT_NE(error.find("not loaded: "), std::string::npos) << error;
+  EXPECT_NE(error.find("species[0].forces[1].collisionRadius = 1000 is larger than radius"), std::string::npos)
+      << error;
+}
