@@ -4,7 +4,8 @@
 // so meshes and water composite both ways. Water lets the scene behind it through per channel
 // (Beer–Lambert over the thickness), which is how an obstacle shows through thin water.
 //   balls: diffuse + ambient (+ a small highlight), opaque
-//   water: Schlick Fresnel toward a sky gradient, specular, absorption tint, foam
+//   water: normals from the (blurred) depth, Schlick Fresnel toward a sky gradient, specular,
+//          absorption tint, foam
 #include "render/balls_bindings.glsl"
 
 layout(binding = BALLS_VIEW_GBUFFER) uniform sampler2D uGBuffer;  // RG normal xy, B thickness m, A depth m
@@ -25,6 +26,7 @@ uniform float uSpecular;    // highlight strength
 uniform int uFoamOn;         // 0: foam off
 uniform float uThicknessScale;  // m shown as white in the thickness view
 uniform vec3 uLightView;    // towards the key light, view space
+uniform float uDepthStep;   // m: a larger depth difference to a neighbour is a silhouette, not a slope
 
 layout(location = 0, index = 0) out vec4 color;
 layout(location = 0, index = 1) out vec4 transmit;  // how much of the scene behind shows through
@@ -34,6 +36,25 @@ const vec3 kZenith = vec3(0.55, 0.68, 0.85);
 
 vec3 sky(vec3 worldDir) { return mix(uBackground + 0.08, kZenith, clamp(worldDir.z, 0.0, 1.0)); }
 
+vec3 viewPosition(ivec2 px, float depth) {  // depth: view depth (m)
+  const vec2 ndc = 2.0 * ((vec2(px) + 0.5) / uViewport) - 1.0;
+  return vec3(ndc * uInvFocal * depth, -depth);
+}
+
+// Slope of the surface along `axis` at p: the one-sided difference with the smaller depth step
+// (so no difference crosses a silhouette); false when neither neighbour is on the surface.
+bool surfaceSlope(ivec2 px, ivec2 axis, vec3 p, out vec3 slope) {
+  const ivec2 last = ivec2(uViewport) - 1;
+  const ivec2 qa = clamp(px + axis, ivec2(0), last), qb = clamp(px - axis, ivec2(0), last);
+  const float da = texelFetch(uGBuffer, qa, 0).a, db = texelFetch(uGBuffer, qb, 0).a;
+  const bool okA = qa != px && da > 0.0 && abs(da + p.z) < uDepthStep;
+  const bool okB = qb != px && db > 0.0 && abs(db + p.z) < uDepthStep;
+  if (!okA && !okB) return false;
+  const bool useA = okA && (!okB || abs(da + p.z) <= abs(db + p.z));
+  slope = useA ? viewPosition(qa, da) - p : p - viewPosition(qb, db);
+  return true;
+}
+
 void main() {
   const ivec2 px = ivec2(gl_FragCoord.xy);
   const vec4 g = texelFetch(uGBuffer, px, 0);
@@ -41,10 +62,16 @@ void main() {
   if (g.a <= 0.0 || depth >= 1.0) discard;
   gl_FragDepth = depth;
 
-  const vec2 ndc = 2.0 * (gl_FragCoord.xy / uViewport) - 1.0;
-  const vec3 p = vec3(ndc * uInvFocal * g.a, -g.a);  // view-space position, m
-  const vec3 v = normalize(-p);                       // towards the eye
-  const vec3 n = normalize(vec3(g.rg, sqrt(max(1.0 - dot(g.rg, g.rg), 0.0))));
+  const vec3 p = viewPosition(px, g.a);  // view-space position, m
+  const vec3 v = normalize(-p);          // towards the eye
+  // Balls: the ray-traced normal. Water: the smoothed depth's, where both slopes exist (the
+  // blurred ball normal at one-pixel features).
+  vec3 n = normalize(vec3(g.rg, sqrt(max(1.0 - dot(g.rg, g.rg), 0.0))));
+  vec3 dx, dy;
+  if (uMode == 1 && surfaceSlope(px, ivec2(1, 0), p, dx) && surfaceSlope(px, ivec2(0, 1), p, dy)) {
+    const vec3 m = cross(dx, dy);
+    if (dot(m, m) > 0.0) n = normalize(dot(m, v) < 0.0 ? -m : m);
+  }
   const mat3 toWorld = mat3(uInvView);
   transmit = vec4(0.0);
   if (uDebug == 1) { color = vec4(0.5 + 0.5 * g.rg, 0.5, 1.0); return; }

@@ -3,9 +3,11 @@
 // A work group filters one run of a row (or column): it loads the run plus an apron of APRON
 // texels on each side into shared memory once, then every output texel filters from there.
 // The kernel radius follows the on-screen ball size at that pixel (scale x projected radius,
-// sigma = radius / 2, at most APRON); neighbours whose view depth differs from the centre's by
-// more than the threshold, or that are empty, are left out and the weights renormalised, so
-// silhouettes and depth steps stay sharp. RGB (normal xy, thickness) are blurred, A (depth) kept.
+// sigma = radius / 2, at most APRON); the kernel stops at empty texels and at depth steps between
+// neighbours above the threshold, so silhouettes and layers stay sharp. All four channels are
+// blurred: the compose pass takes the water's normals from differences of the smoothed depth (A),
+// as in screen-space fluid rendering (van der Laan, Green & Sainz 2009), so the balls' bumps melt
+// into one surface.
 #include "render/balls_bindings.glsl"
 
 #ifndef AXIS
@@ -17,7 +19,7 @@
 layout(local_size_x = GROUP) in;
 
 layout(binding = BALLS_VIEW_BLUR_IN) uniform sampler2D uSource;
-layout(binding = BALLS_VIEW_BLUR_OUT, rgba16f) writeonly uniform image2D uTarget;
+layout(binding = BALLS_VIEW_BLUR_OUT, rgba32f) writeonly uniform image2D uTarget;
 
 uniform float uPixelRadius;    // px: kernel radius of a ball at view depth 1 m (scale x r x focal px)
 uniform float uDepthThreshold; // m
@@ -46,13 +48,25 @@ void main() {
   const int taps = int(radius);
   const float sigma = max(0.5 * radius, 0.5);
   const float k = -0.5 / (sigma * sigma);
-  vec3 sum = centre.rgb;
+  // Both sides are walked outwards. A depth step above the threshold between neighbours ends that
+  // side (later taps there count as the centre itself): walking, rather than comparing with the
+  // centre, still smooths a surface seen at a grazing angle (centimetres of depth across the
+  // kernel, millimetres per texel) while a droplet in front of the pool stays apart. An empty
+  // texel on either side ends both: the kernel stays symmetric up to a silhouette, so the surface
+  // there is smoothed less but not tilted toward the inside (which streaks it).
+  vec4 sum = centre;
   float weights = 1.0;
+  float lastA = centre.a, lastB = centre.a;  // depth of the last texel taken on each side, 0 = ended
   for (int i = 1; i <= taps; ++i) {
-    const float w = exp(k * float(i * i));
     const vec4 a = tile[local - i], b = tile[local + i];
-    if (a.a > 0.0 && abs(a.a - centre.a) < uDepthThreshold) { sum += w * a.rgb; weights += w; }
-    if (b.a > 0.0 && abs(b.a - centre.a) < uDepthThreshold) { sum += w * b.rgb; weights += w; }
+    if ((lastA > 0.0 && a.a <= 0.0) || (lastB > 0.0 && b.a <= 0.0)) break;  // a silhouette: end both
+    if (lastA > 0.0 && abs(a.a - lastA) >= uDepthThreshold) lastA = 0.0;
+    if (lastB > 0.0 && abs(b.a - lastB) >= uDepthThreshold) lastB = 0.0;
+    const float w = exp(k * float(i * i));
+    sum += w * ((lastA > 0.0 ? a : centre) + (lastB > 0.0 ? b : centre));
+    weights += 2.0 * w;
+    if (lastA > 0.0) lastA = a.a;
+    if (lastB > 0.0) lastB = b.a;
   }
-  imageStore(uTarget, texel, vec4(sum / weights, centre.a));
+  imageStore(uTarget, texel, sum / weights);
 }

@@ -8,7 +8,7 @@ BallsGBuffer::BallsGBuffer(gl::ShaderLibrary& shaders) : m_shaders(shaders) {}
 
 void BallsGBuffer::resize(int width, int height) {
   if (m_surface && m_surface.width() == width && m_surface.height() == height) return;
-  m_surface = gl::Texture2D(width, height, GL_RGBA16F);
+  m_surface = gl::Texture2D(width, height, GL_RGBA32F);
   m_foam = gl::Texture2D(width, height, GL_R16F);
   m_depth = gl::Texture2D(width, height, GL_DEPTH_COMPONENT32F);
   for (gl::Texture2D* t : {&m_surface, &m_foam, &m_depth}) t->setFilter(GL_NEAREST, GL_NEAREST);

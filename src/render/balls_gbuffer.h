@@ -1,7 +1,9 @@
 // The balls' G-buffer and the two sphere passes that fill it (after water-webgpu's deferred
 // sphere renderer, with float depth instead of its 8-bit one):
-//   surface  RGBA16F  RG = view-space normal xy of the nearest ball (its billboard-local position),
-//                     B = water thickness along the eye ray (m, additive), A = view depth (m, 0 = empty)
+//   surface  RGBA32F  RG = view-space normal xy of the nearest ball (its billboard-local position),
+//                     B = water thickness along the eye ray (m, additive), A = view depth (m, 0 = empty);
+//                     32-bit because the water's normals are differences of neighbouring depths
+//                     (a half float steps by 1 mm at 1.5 m, about a pixel's footprint there)
 //   foam     R16F     the nearest ball's foam
 //   depth    DEPTH32F the nearest ball's window depth (exact; the compose pass writes it)
 // Pass 1 (impostors) writes R, G, A and foam with its own depth test; pass 2 (thickness) writes B

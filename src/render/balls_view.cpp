@@ -13,7 +13,10 @@ void visit(ParamVisitor& v, BallsViewParams& p) {
   v.real({"absorption", "Absorption", "1/m: this inverse thickness transmits the water colour"}, p.absorption, 0.0f,
          200.0f);
   v.real({"blur_radius", "Blur radius", "water: kernel radius in on-screen ball radii"}, p.blurRadius, 0.0f, 8.0f);
-  v.real({"depth_threshold", "Blur depth threshold", "water: ball radii of depth step not blurred across"},
+  v.integer({"blur_iterations", "Blur iterations", "water: times the row and column passes run (2: no streaks)"},
+            p.blurIterations, 1, 4);
+  v.real({"depth_threshold", "Blur depth threshold",
+          "water: ball radii of depth step between neighbouring pixels not blurred across"},
          p.depthThreshold, 0.1f, 50.0f);
   v.flag({"foam", "Foam", "white water from each ball's foam"}, p.foam);
   v.real({"fresnel_f0", "Fresnel F0", "water: reflectance at normal incidence"}, p.fresnelF0, 0.0f, 1.0f);
@@ -129,7 +132,7 @@ void BallsView::render(const BallsScene& scene, const BallsCamera& camera, Rende
     // Kernel radius in px of a ball 1 m away: scale x r x focal length in px.
     const float focalPx = 0.5f * float(camera.height) * camera.proj[1][1];
     m_blur.run(m_gbuffer.surface(), m_params.blurRadius * scene.water.radius * focalPx,
-               m_params.depthThreshold * scene.water.radius);
+               m_params.depthThreshold * scene.water.radius, m_params.blurIterations);
   }
   auto scope = profiler.scope("balls.compose");
   m_compose.draw(composedSurface(), m_gbuffer, m_params, camera, scene.water.radius, target);

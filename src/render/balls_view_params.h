@@ -22,7 +22,8 @@ struct BallsViewParams {
   glm::vec3 waterColor{0.18f, 0.45f, 0.91f};  // linear RGB: balls' albedo, water's tint (water-webgpu)
   float absorption = 20.0f;                   // 1/m: thickness 1/absorption transmits waterColor
   float blurRadius = 4.0f;                    // blur kernel radius, in on-screen ball radii
-  float depthThreshold = 3.0f;                // ball radii: no blur across larger view-depth steps
+  int blurIterations = 2;                     // times the blur's row and column passes run
+  float depthThreshold = 12.0f;               // ball radii: no blur across larger depth steps between pixels
   bool foam = true;                           // white water from the per-ball foam
   float fresnelF0 = 0.02f;                    // reflectance at normal incidence (water)
   float specular = 0.6f;                      // key-light highlight strength

@@ -1,5 +1,6 @@
 #include "render/water_blur.h"
 
+#include <algorithm>
 #include <string>
 
 #include "render/balls_bindings.glsl"
@@ -13,7 +14,7 @@ void WaterBlur::pass(int axis, const gl::Texture2D& from, const gl::Texture2D& t
   program.set("uPixelRadius", pixelRadius);
   program.set("uDepthThreshold", depthThreshold);
   from.bind(BALLS_VIEW_BLUR_IN);
-  to.bindImage(BALLS_VIEW_BLUR_OUT, GL_WRITE_ONLY, GL_RGBA16F);
+  to.bindImage(BALLS_VIEW_BLUR_OUT, GL_WRITE_ONLY, GL_RGBA32F);
   const int useful = kGroup - 2 * kApron;  // outputs per work group
   const int along = axis == 0 ? from.width() : from.height();
   const int lines = axis == 0 ? from.height() : from.width();
@@ -22,13 +23,15 @@ void WaterBlur::pass(int axis, const gl::Texture2D& from, const gl::Texture2D& t
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
 }
 
-void WaterBlur::run(const gl::Texture2D& source, float pixelRadius, float depthThreshold) {
+void WaterBlur::run(const gl::Texture2D& source, float pixelRadius, float depthThreshold, int iterations) {
   if (!m_out || m_out.width() != source.width() || m_out.height() != source.height()) {
-    m_rows = gl::Texture2D(source.width(), source.height(), GL_RGBA16F);
-    m_out = gl::Texture2D(source.width(), source.height(), GL_RGBA16F);
+    m_rows = gl::Texture2D(source.width(), source.height(), GL_RGBA32F);
+    m_out = gl::Texture2D(source.width(), source.height(), GL_RGBA32F);
   }
-  pass(0, source, m_rows, pixelRadius, depthThreshold);
-  pass(1, m_rows, m_out, pixelRadius, depthThreshold);
+  for (int i = 0; i < std::max(iterations, 1); ++i) {
+    pass(0, i == 0 ? source : m_out, m_rows, pixelRadius, depthThreshold);
+    pass(1, m_rows, m_out, pixelRadius, depthThreshold);
+  }
 }
 
 }  // namespace tidepool
