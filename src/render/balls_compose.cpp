@@ -33,7 +33,7 @@ void BallsCompose::draw(const gl::Texture2D& surface, const BallsGBuffer& gbuffe
   program.set("uFoamOn", look.foam ? 1 : 0);
   program.set("uThicknessScale", 40.0f * radius);  // ~20 balls deep shows white
   program.set("uDepthStep", look.depthThreshold * radius);
-  program.set("uLightView", glm::normalize(glm::vec3(camera.view * glm::vec4(0.5f, 0.3f, 1.0f, 0.0f))));
+  program.set("uLightView", camera.towardsLight(look.lightDirection));
   glDrawArrays(GL_TRIANGLES, 0, 3);
   // Mesa rejects draws into several colour buffers while a dual-source factor is set, even with
   // blending off: leave the default factors behind.

@@ -21,6 +21,8 @@ void visit(ParamVisitor& v, BallsViewParams& p) {
   v.flag({"foam", "Foam", "white water from each ball's foam"}, p.foam);
   v.real({"fresnel_f0", "Fresnel F0", "water: reflectance at normal incidence"}, p.fresnelF0, 0.0f, 1.0f);
   v.real({"specular", "Specular", "key-light highlight strength"}, p.specular, 0.0f, 4.0f);
+  v.vector({"light_direction", "Light direction", "towards the key light, world axes (z up)"}, p.lightDirection, -1.0f,
+           1.0f);
   v.color({"obstacle_color", "Obstacle colour", "linear RGB"}, p.obstacleColor);
   v.color({"background", "Background", "linear RGB"}, p.background);
   v.flag({"show_box", "Show box", "domain wireframe"}, p.showBox);
@@ -36,6 +38,11 @@ BallsCamera BallsCamera::perspective(glm::mat4 view, float fovYRadians, int widt
   c.near = near;
   c.far = far;
   return c;
+}
+
+glm::vec3 BallsCamera::towardsLight(glm::vec3 world) const {
+  if (glm::dot(world, world) < 1e-12f) world = glm::vec3(0.0f, 0.0f, 1.0f);
+  return glm::normalize(glm::vec3(view * glm::vec4(world, 0.0f)));
 }
 
 BallsView::BallsView(gl::ShaderLibrary& shaders)
@@ -96,7 +103,7 @@ void BallsView::drawScene(const BallsScene& scene, const BallsCamera& camera, Re
     balls.set("uView", camera.view);
     balls.set("uProj", camera.proj);
     balls.set("uRadius", scene.obstacle.radius);
-    balls.set("uLightView", glm::normalize(glm::vec3(camera.view * glm::vec4(0.5f, 0.3f, 1.0f, 0.0f))));
+    balls.set("uLightView", camera.towardsLight(m_params.lightDirection));
     balls.set("uModel", scene.obstacle.model);
     balls.set("uColor", m_params.obstacleColor);
     balls.set("uHasVelocity", 0);

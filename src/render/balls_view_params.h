@@ -19,14 +19,15 @@ inline constexpr std::array<const char*, 5> kBallsDebugNames = {"final", "local"
 struct BallsViewParams {
   BallsMode mode = BallsMode::Balls;
   BallsDebug debug = BallsDebug::Final;
-  glm::vec3 waterColor{0.18f, 0.45f, 0.91f};  // linear RGB: balls' albedo, water's tint (water-webgpu)
-  float absorption = 20.0f;                   // 1/m: thickness 1/absorption transmits waterColor
-  float blurRadius = 4.0f;                    // blur kernel radius, in on-screen ball radii
-  int blurIterations = 2;                     // times the blur's row and column passes run
-  float depthThreshold = 12.0f;               // ball radii: no blur across larger depth steps between pixels
-  bool foam = true;                           // white water from the per-ball foam
-  float fresnelF0 = 0.02f;                    // reflectance at normal incidence (water)
-  float specular = 0.6f;                      // key-light highlight strength
+  glm::vec3 waterColor{0.18f, 0.45f, 0.91f};   // linear RGB: balls' albedo, water's tint (water-webgpu)
+  float absorption = 20.0f;                    // 1/m: thickness 1/absorption transmits waterColor
+  float blurRadius = 4.0f;                     // blur kernel radius, in on-screen ball radii
+  int blurIterations = 2;                      // times the blur's row and column passes run
+  float depthThreshold = 12.0f;                // ball radii: no blur across larger depth steps between pixels
+  bool foam = true;                            // white water from the per-ball foam
+  float fresnelF0 = 0.02f;                     // reflectance at normal incidence (water)
+  float specular = 0.6f;                       // key-light highlight strength
+  glm::vec3 lightDirection{0.5f, 0.3f, 1.0f};  // world (z up), towards the key light; any length
   glm::vec3 obstacleColor{0.55f, 0.55f, 0.58f};
   glm::vec3 background{0.09f, 0.10f, 0.12f};
   bool showBox = true;
@@ -40,6 +41,7 @@ struct BallsCamera {
   int width = 1, height = 1;
   float near = 0.1f, far = 10.0f;
   static BallsCamera perspective(glm::mat4 view, float fovYRadians, int width, int height, float near, float far);
+  glm::vec3 towardsLight(glm::vec3 world) const;  // view space, unit (straight up when world is zero)
 };
 
 // Spheres of one radius whose centres are vec4s in an SSBO (w unused), optionally with foam in
