@@ -27,3 +27,19 @@ TEST(Bench, BadSizeIsAOneLineError) {
   EXPECT_FALSE(big.signaled);
   EXPECT_NE(big.err.find("storage-buffer limit"), std::string::npos) << big.err;
 }
+
+TEST(Bench, RenderPrintsMsPerPassInBothModes) {
+  test::TempDir dir;
+  auto r = runTidepool({"bench", "render", "--n", "4096", "--size", "96x54", "--settle", "2", "--repeats", "2",
+                        "--warmup", "1", "--csv", (dir / "render.csv").string()});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  for (const char* column : {"scene ms", "gbuffer ms", "thickness ms", "blur ms", "compose ms", "frame ms"})
+    EXPECT_NE(r.out.find(column), std::string::npos) << column << "\n" << r.out;
+  EXPECT_NE(r.out.find("balls"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("water"), std::string::npos) << r.out;
+  EXPECT_TRUE(std::filesystem::exists(dir / "render.csv"));
+  auto bad = runTidepool({"bench", "render", "--size", "1920"});
+  EXPECT_EQ(bad.exitCode, 1);
+  ASSERT_EQ(bad.errLines().size(), 1u) << bad.err;
+  EXPECT_NE(bad.err.find("--size '1920' is not WIDTHxHEIGHT"), std::string::npos) << bad.err;
+}
