@@ -26,7 +26,9 @@ void visit(ParamVisitor& v, BallsViewParams& p) {
   v.color({"obstacle_color", "Obstacle colour", "linear RGB"}, p.obstacleColor);
   v.color({"background", "Background", "linear RGB"}, p.background);
   v.flag({"show_box", "Show box", "domain wireframe"}, p.showBox);
-  v.flag({"show_obstacle", "Show obstacle", "its fixed particles"}, p.showObstacle);
+  v.flag({"show_obstacle", "Show obstacle", "draw the obstacle"}, p.showObstacle);
+  v.flag({"obstacle_balls", "Obstacle balls", "the obstacle's fixed balls instead of its surface mesh"},
+         p.obstacleBalls);
 }
 
 BallsCamera BallsCamera::perspective(glm::mat4 view, float fovYRadians, int width, int height, float near, float far) {
@@ -50,7 +52,7 @@ BallsView::BallsView(gl::ShaderLibrary& shaders)
 
 const gl::Texture2D& BallsView::composedSurface() const { return m_blurred ? m_blur.result() : m_gbuffer.surface(); }
 
-BallsScene BallsView::sceneOf(const balls::Balls& model) const {
+BallsScene BallsView::sceneOf(const balls::Balls& model) {
   // The box turns on screen while gravity stays pointing down (water-webgpu's domain rotation).
   const balls::Params& p = model.params();
   const glm::vec3 centre = 0.5f * (p.domainMin + p.domainMax);
@@ -63,8 +65,12 @@ BallsScene BallsView::sceneOf(const balls::Balls& model) const {
   spin = glm::translate(spin, -p.obstacleCentre);
   BallsScene s;
   s.water = {&model.positions(), &model.velocities(), model.count(), model.radius(), world};
-  s.obstacle = {&model.obstaclePositions(), nullptr, m_params.showObstacle ? model.obstacleCount() : 0, model.radius(),
-                world * spin};
+  if (m_params.showObstacle && m_params.obstacleBalls)
+    s.obstacle = {&model.obstaclePositions(), nullptr, model.obstacleCount(), model.radius(), world * spin};
+  else if (m_params.showObstacle && model.obstacleCount() > 0) {
+    const std::size_t vertices = m_mesh.update(model);
+    s.obstacleMesh = {&m_mesh.vertices(), vertices, world * spin};
+  }
   s.boxMin = model.wallMin();
   s.boxMax = model.wallMax();
   s.boxModel = world;
@@ -109,6 +115,16 @@ void BallsView::drawScene(const BallsScene& scene, const BallsCamera& camera, Re
     balls.set("uHasVelocity", 0);
     scene.obstacle.positions->bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VIEW_POSITIONS);
     glDrawArrays(GL_TRIANGLES, 0, GLsizei(6 * scene.obstacle.count));
+  }
+  if (scene.obstacleMesh.count > 0) {
+    gl::Program& mesh = m_shaders.program({"render/obstacle_mesh.vert", "render/obstacle_mesh.frag"});
+    mesh.use();
+    mesh.set("uModelView", camera.view * scene.obstacleMesh.model);
+    mesh.set("uProj", camera.proj);
+    mesh.set("uColor", m_params.obstacleColor);
+    mesh.set("uLightView", camera.towardsLight(m_params.lightDirection));
+    scene.obstacleMesh.vertices->bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VIEW_MESH);
+    glDrawArrays(GL_TRIANGLES, 0, GLsizei(scene.obstacleMesh.count));
   }
   if (m_params.showBox) {
     gl::Program& lines = m_shaders.program({"render/box_lines.vert", "render/flat_color.frag"});

@@ -1,10 +1,12 @@
 // Deferred renderer of the balls model (issue 6), after water-webgpu's sphere renderer without
 // its shortcuts. It only reads the model's SSBOs. One frame:
-//   1. scene:     obstacle balls (opaque grey impostors) and the domain box into the target
+//   1. scene:     the obstacle (its surface mesh, or its balls as opaque impostors) and the
+//                 domain box into the target
 //   2. gbuffer:   ray-traced sphere impostors -> normal xy, view depth, foam, exact depth
 //   3. thickness: the same spheres, additive into B, depth-tested against the scene
 //                 (water mode, and the thickness debug view)
-//   4. blur:      water mode only, depth-aware separable Gaussian (two compute passes)
+//   4. blur:      water mode only, depth-aware separable Gaussian (row and column compute
+//                 passes, two rounds by default)
 //   5. compose:   shading (balls or water) or a debug view, with depth, into the target
 #pragma once
 
@@ -12,6 +14,7 @@
 #include "gl/shader_library.h"
 #include "render/balls_compose.h"
 #include "render/balls_gbuffer.h"
+#include "render/obstacle_mesh.h"
 #include "render/orbit_camera.h"
 #include "render/target.h"
 #include "render/water_blur.h"
@@ -36,12 +39,13 @@ class BallsView {
 
  private:
   void drawScene(const BallsScene& scene, const BallsCamera& camera, RenderTarget& target);
-  BallsScene sceneOf(const balls::Balls& model) const;
+  BallsScene sceneOf(const balls::Balls& model);  // rebuilds the obstacle mesh when edited
   gl::ShaderLibrary& m_shaders;
   BallsViewParams m_params;
   OrbitCamera m_camera;
   BallsGBuffer m_gbuffer;
   WaterBlur m_blur;
+  ObstacleMesh m_mesh;
   BallsCompose m_compose;
   bool m_blurred = false;  // the last frame composed the blurred surface
   gl::VertexArray m_vao = gl::VertexArray::create();

@@ -32,6 +32,7 @@ struct BallsViewParams {
   glm::vec3 background{0.09f, 0.10f, 0.12f};
   bool showBox = true;
   bool showObstacle = true;
+  bool obstacleBalls = false;  // draw the obstacle's fixed balls instead of its surface mesh
 };
 void visit(ParamVisitor& v, BallsViewParams& p);
 
@@ -54,10 +55,18 @@ struct SphereBatch {
   glm::mat4 model{1.0f};
 };
 
-// Everything in a frame: the water balls, the obstacle's fixed balls and the domain box.
+// Triangles whose vertices are MeshVertex records (src/render/obstacle_mesh.h) in an SSBO.
+struct MeshBatch {
+  const gl::Buffer* vertices = nullptr;
+  std::size_t count = 0;  // vertices, three per triangle
+  glm::mat4 model{1.0f};  // rigid
+};
+
+// Everything in a frame: the water balls, the obstacle (as balls or as a mesh) and the domain box.
 struct BallsScene {
   SphereBatch water;
-  SphereBatch obstacle;  // count 0: none
+  SphereBatch obstacle;    // count 0: none
+  MeshBatch obstacleMesh;  // count 0: none
   glm::vec3 boxMin{0.0f}, boxMax{1.0f};
   glm::mat4 boxModel{1.0f};
 };

@@ -8,6 +8,7 @@
 #include <random>
 
 #include "render/balls_view.h"
+#include "sim/balls/balls_init.h"
 #include "support/gl_test.h"
 
 using namespace tidepool;
@@ -91,13 +92,40 @@ TEST_F(BallsViewTest, CoincidentSpheresAddTheirThickness) {
   EXPECT_NEAR(f.centre().b, 3.0f * single, 6e-3f);
 }
 
-TEST_F(BallsViewTest, ASphereBehindAnOpaqueMeshAddsNoThickness) {
+TEST_F(BallsViewTest, ASphereBehindAnOpaqueObstacleBallAddsNoThickness) {
   const float r = 0.3f;
   const gl::Buffer water = ballsAt({3.0f, 1.2f}), wall = ballsAt({2.0f});
   Frame f(shaders());
   f.render(water, 1, r, &wall, 1, 0.5f);  // only the ball behind the obstacle
   EXPECT_EQ(f.centre().b, 0.0f);
   f.render(water, 2, r, &wall, 1, 0.5f);  // plus one in front of it: only that one counts
+  EXPECT_NEAR(f.centre().b, 2.0f * r, 2e-3f);
+}
+
+TEST_F(BallsViewTest, ASphereBehindAnOpaqueMeshAddsNoThickness) {
+  // The obstacle as a mesh: a sphere obstacle of balls r = 0.04 whose surface has radius 0.4,
+  // centred 2 m away, behind one water ball and in front of another.
+  const float r = 0.3f;
+  balls::Params p;
+  p.obstacle = balls::Shape::Sphere;
+  p.obstacleCentre = {0.0f, 0.0f, -2.0f};
+  p.obstacleSize = glm::vec3(0.36f);
+  p.radius = 0.04f;
+  const std::vector<MeshVertex> sphere = ballUnionMesh(balls::obstacleParticles(p), p.radius);
+  ASSERT_FALSE(sphere.empty());
+  const gl::Buffer mesh{std::span<const MeshVertex>(sphere)}, water = ballsAt({3.0f, 1.2f});
+  Frame f(shaders());
+  BallsScene scene;
+  scene.obstacleMesh = {&mesh, sphere.size(), glm::mat4(1.0f)};
+  scene.water = {&water, nullptr, 1, r, glm::mat4(1.0f)};  // only the ball behind the mesh
+  f.view.render(scene, axisCamera(), f.target, f.profiler);
+  EXPECT_EQ(f.centre().b, 0.0f);
+  std::vector<float> depth(std::size_t(kSize) * kSize);
+  f.target.depth().download(GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+  EXPECT_NEAR(linearDepth(depth[std::size_t(kSize / 2) * kSize + kSize / 2]), 1.6f, 0.02f)
+      << "the mesh's front is the scene's depth";
+  scene.water.count = 2;  // plus one in front of it: only that one counts
+  f.view.render(scene, axisCamera(), f.target, f.profiler);
   EXPECT_NEAR(f.centre().b, 2.0f * r, 2e-3f);
 }
 
