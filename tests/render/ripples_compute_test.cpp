@@ -1,6 +1,6 @@
-// The compute renderers of the ripples views (the 2D compute pass) draw the pictures the raster
-// renderers draw: same scene, both renderers, images compared pixel by pixel.
-// Set TIDEPOOL_TEST_IMAGES=<folder> to keep the images as PNGs.
+// The compute renderers of the ripples views (the 2D compute pass, the caustics splat, the 3D
+// ray caster) draw the pictures the raster renderers draw: same scene, both renderers, images
+// compared pixel by pixel. Set TIDEPOOL_TEST_IMAGES=<folder> to keep the images as PNGs.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,6 +11,7 @@
 
 #include "io/png.h"
 #include "render/ripples_view.h"
+#include "render/ripples_view3d.h"
 #include "support/gl_test.h"
 
 using namespace tidepool;
@@ -78,6 +79,12 @@ std::unique_ptr<ripples::Ripples> wavyPool(gl::ShaderLibrary& shaders, bool with
   return model;
 }
 
+std::vector<float> lightOf(const RipplesView3D& view) {
+  std::vector<float> light(std::size_t(view.caustics().width()) * view.caustics().height());
+  view.caustics().download(GL_RED, GL_FLOAT, light.data());
+  return light;
+}
+
 }  // namespace
 
 TEST_F(RipplesCompute, TopViewMatchesTheRasterView) {
@@ -95,4 +102,80 @@ TEST_F(RipplesCompute, TopViewMatchesTheRasterView) {
     expectClose(withBall ? "ripples-2d-ball" : "ripples-2d", target, raster, target.readRgba8());
   }
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+TEST_F(RipplesCompute, CausticsSplatLandsLikeThePoints) {
+  gl::GpuProfiler profiler;
+  const auto pool = wavyPool(shaders(), false, profiler);
+  const ripples::Ripples& model = *pool;
+  RipplesView3D view(shaders());
+  view.params().lightGrid = 128;
+  view.params().causticsSize = 64;
+  RenderTarget target(32, 32);
+  view.params().renderer = RipplesRenderer::Raster;
+  view.render(model, target, profiler);
+  const std::vector<float> raster = lightOf(view);
+  view.params().renderer = RipplesRenderer::Compute;
+  view.render(model, target, profiler);
+  const std::vector<float> compute = lightOf(view);
+  ASSERT_EQ(raster.size(), compute.size());
+  double maxDiff = 0, sumRaster = 0, sumCompute = 0;
+  int off = 0;
+  for (std::size_t i = 0; i < raster.size(); ++i) {
+    maxDiff = std::max(maxDiff, double(std::abs(raster[i] - compute[i])));
+    off += std::abs(raster[i] - compute[i]) > 1e-2f;
+    sumRaster += raster[i];
+    sumCompute += compute[i];
+  }
+  std::cout << "caustics: " << off << " of " << raster.size() << " texels differ, max by " << maxDiff << "; light "
+            << sumRaster << " (raster) " << sumCompute << " (compute)\n";
+  // Points within a rounding error of a texel edge may land on either side: the raster snaps
+  // them to its sub-pixel grid first. One light point carries 64 x 48 / (128 x 96) = 0.25.
+  EXPECT_LT(off, int(raster.size()) / 20) << "nearly all points land in the same texels";
+  EXPECT_LE(maxDiff, 2 * 0.25 + 1e-3) << "and the others next door";
+  EXPECT_NEAR(sumCompute, double(compute.size()), 1e-6 * double(compute.size())) << "every point lands once";
+  EXPECT_GT(*std::max_element(compute.begin(), compute.end()), 1.5f) << "the waves should focus light";
+  // A second frame starts from cleared counters.
+  view.render(model, target, profiler);
+  EXPECT_EQ(lightOf(view), compute);
+}
+
+TEST_F(RipplesCompute, TankViewMatchesTheRasterView) {
+  gl::GpuProfiler profiler;
+  for (const bool withBall : {false, true}) {
+    const auto pool = wavyPool(shaders(), withBall, profiler);
+    const ripples::Ripples& model = *pool;
+    RipplesView3D view(shaders());
+    view.params().lightGrid = 256;
+    view.params().causticsSize = 128;
+    RenderTarget target(240, 160);
+    view.params().renderer = RipplesRenderer::Raster;
+    view.render(model, target, profiler);
+    const std::vector<uint8_t> raster = target.readRgba8();
+    view.params().renderer = RipplesRenderer::Compute;
+    view.render(model, target, profiler);
+    expectClose(withBall ? "ripples-3d-ball" : "ripples-3d", target, raster, target.readRgba8());
+  }
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+TEST_F(RipplesCompute, TankViewFromOtherAnglesMatchesTheRasterView) {
+  gl::GpuProfiler profiler;
+  const auto pool = wavyPool(shaders(), true, profiler);
+  const ripples::Ripples& model = *pool;
+  RipplesView3D view(shaders());
+  view.params().exaggeration = 12.0f;  // steep waves: grazing rays, surfaces seen edge-on
+  RenderTarget target(240, 160);
+  const float angles[][2] = {{2.2f, 0.25f}, {-2.5f, 1.2f}, {0.4f, 0.08f}};  // yaw, pitch
+  for (const auto& a : angles) {
+    view.camera().params().yaw = a[0];
+    view.camera().params().pitch = a[1];
+    view.params().renderer = RipplesRenderer::Raster;
+    view.render(model, target, profiler);
+    const std::vector<uint8_t> raster = target.readRgba8();
+    view.params().renderer = RipplesRenderer::Compute;
+    view.render(model, target, profiler);
+    expectClose("ripples-3d-yaw" + std::to_string(a[0]) + "-pitch" + std::to_string(a[1]), target, raster,
+                target.readRgba8());
+  }
 }
