@@ -96,7 +96,11 @@ std::unique_ptr<Stage> createBallsStage(const io::Json& params, const std::strin
   ViewSettings view;
   readParams(
       params, [&](ParamVisitor& v) { visitAll(v, model, view); }, where);
-  return std::make_unique<BallsStage>(shaders, model, view);
+  try {
+    return std::make_unique<BallsStage>(shaders, model, view);
+  } catch (const Error& e) {  // e.g. a missing or open obstacle mesh: say which scene asked for it
+    throw Error(where + ": " + e.what());
+  }
 }
 
 }  // namespace tidepool
