@@ -54,7 +54,10 @@ struct Params {
   float pistonPeriod = 4.0f;  // s per in-and-out
   float rotation = 0.0f;      // degrees about x
   float rotationRate = 0.0f;  // degrees per s
-  // Obstacle: fixed particles from a shape, optionally spinning about the vertical axis
+  // Obstacle: fixed particles from a shape, optionally spinning about the vertical axis. One only:
+  // several would need a list of groups in the parameter system (scene/param.h has no lists yet)
+  // and, in shaders/balls/neighbours.glsl, a transform per obstacle (pivot, rotation, spin) picked
+  // by an obstacle index in each fixed particle's w, with all of them in the one obstacle grid.
   Shape obstacle = Shape::None;
   std::string obstacleMesh = "torus";  // mesh: OBJ in assets/meshes (".obj" optional) or a path
   bool obstacleShell = false;          // a surface shell instead of a solid fill
