@@ -9,7 +9,9 @@ void visit(ParamVisitor& v, BallsViewParams& p) {
   v.color({"obstacle_color", "Obstacle colour", "linear RGB"}, p.obstacleColor);
   v.color({"background", "Background", "linear RGB"}, p.background);
   v.flag({"show_box", "Show box", "domain wireframe"}, p.showBox);
-  v.flag({"show_obstacle", "Show obstacle", "its fixed particles"}, p.showObstacle);
+  v.flag({"show_obstacle", "Show obstacle", "a mesh obstacle's triangles, the others' fixed particles"},
+         p.showObstacle);
+  v.flag({"obstacle_balls", "Mesh obstacle balls", "a mesh obstacle's fixed particles too"}, p.obstacleBalls);
 }
 
 BallsView::BallsView(gl::ShaderLibrary& shaders) : m_shaders(shaders) {}
@@ -21,6 +23,21 @@ glm::mat4 BallsView::domainModel(const balls::Balls& model) const {
   glm::mat4 m = glm::translate(glm::mat4(1.0f), centre);
   m = glm::rotate(m, -model.domainRotation(), glm::vec3(1, 0, 0));
   return glm::translate(m, -centre);
+}
+
+void BallsView::uploadMesh(const balls::Balls& model) {
+  const io::TriangleMesh* mesh = model.obstacleMesh();
+  if (m_meshVersion == model.obstacleVersion() && m_meshSource == mesh) return;
+  m_meshVersion = model.obstacleVersion();
+  m_meshSource = mesh;
+  m_meshCorners = 0;
+  if (!mesh) return;
+  std::vector<glm::vec4> corners;
+  corners.reserve(3 * mesh->triangles.size());
+  for (const glm::uvec3& t : mesh->triangles)
+    for (int k = 0; k < 3; ++k) corners.emplace_back(mesh->vertices[t[k]], 1.0f);
+  m_meshVertices = gl::Buffer(corners.size() * sizeof(glm::vec4), corners.data(), GL_STATIC_DRAW);
+  m_meshCorners = GLsizei(corners.size());
 }
 
 void BallsView::render(const balls::Balls& model, RenderTarget& target, gl::GpuProfiler& profiler) {
@@ -53,16 +70,29 @@ void BallsView::render(const balls::Balls& model, RenderTarget& target, gl::GpuP
     model.velocities().bindBase(GL_SHADER_STORAGE_BUFFER, 1);
     glDrawArrays(GL_TRIANGLES, 0, GLsizei(6 * model.count()));
   }
-  if (m_params.showObstacle && model.obstacleCount() > 0) {
-    // Obstacle frame -> simulation: spin about the vertical axis through its centre.
-    glm::mat4 spin = glm::translate(glm::mat4(1.0f), p.obstacleCentre);
-    spin = glm::rotate(spin, model.obstacleAngle(), glm::vec3(0, 0, 1));
-    spin = glm::translate(spin, -p.obstacleCentre);
+  // Obstacle frame -> simulation: spin about the vertical axis through its centre.
+  glm::mat4 spin = glm::translate(glm::mat4(1.0f), p.obstacleCentre);
+  spin = glm::rotate(spin, model.obstacleAngle(), glm::vec3(0, 0, 1));
+  spin = glm::translate(spin, -p.obstacleCentre);
+  uploadMesh(model);
+  const bool mesh = model.obstacleMesh() && m_meshCorners > 0;
+  if (m_params.showObstacle && model.obstacleCount() > 0 && (!mesh || m_params.obstacleBalls)) {
     balls.set("uModel", world * spin);
     balls.set("uColor", m_params.obstacleColor);
     balls.set("uHasVelocity", 0);
     model.obstaclePositions().bindBase(GL_SHADER_STORAGE_BUFFER, 0);
     glDrawArrays(GL_TRIANGLES, 0, GLsizei(6 * model.obstacleCount()));
+  }
+  if (m_params.showObstacle && mesh) {
+    gl::Program& flat = m_shaders.program({"render/obstacle_mesh.vert", "render/obstacle_mesh.frag"});
+    flat.use();
+    flat.set("uModel", world * spin);
+    flat.set("uView", view);
+    flat.set("uProj", proj);
+    flat.set("uColor", m_params.obstacleColor);
+    flat.set("uLightView", glm::normalize(glm::vec3(view * glm::vec4(0.5f, 0.3f, 1.0f, 0.0f))));
+    m_meshVertices.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
+    glDrawArrays(GL_TRIANGLES, 0, m_meshCorners);
   }
   if (m_params.showBox) {
     gl::Program& lines = m_shaders.program({"render/box_lines.vert", "render/flat_color.frag"});

@@ -1,6 +1,7 @@
 // Renderer of the balls model, "balls" mode: sphere impostors read straight from the model's
-// position SSBO (true per-pixel sphere depth), the obstacle's fixed particles in grey, and the
-// domain box (walls where they are now). The screen-space water mode builds on this (issue 6).
+// position SSBO (true per-pixel sphere depth), the obstacle in grey — a mesh obstacle as its
+// flat-shaded triangles, the others as their fixed particles — and the domain box (walls where
+// they are now). The screen-space water mode builds on this (issue 6).
 #pragma once
 
 #include "gl/framebuffer.h"
@@ -19,6 +20,7 @@ struct BallsViewParams {
   glm::vec3 background{0.09f, 0.10f, 0.12f};
   bool showBox = true;
   bool showObstacle = true;
+  bool obstacleBalls = false;  // a mesh obstacle's fixed particles too (they lie up to r outside the mesh)
 };
 void visit(ParamVisitor& v, BallsViewParams& p);
 
@@ -31,10 +33,15 @@ class BallsView {
 
  private:
   glm::mat4 domainModel(const balls::Balls& model) const;  // simulation -> world
+  void uploadMesh(const balls::Balls& model);              // the obstacle's mesh, when it was rebuilt
   gl::ShaderLibrary& m_shaders;
   BallsViewParams m_params;
   OrbitCamera m_camera;
   gl::VertexArray m_vao = gl::VertexArray::create();
+  gl::Buffer m_meshVertices;  // vec4 per triangle corner, obstacle frame
+  GLsizei m_meshCorners = 0;
+  const io::TriangleMesh* m_meshSource = nullptr;  // the model's obstacleMesh() and obstacleVersion() uploaded
+  unsigned m_meshVersion = ~0u;
 };
 
 }  // namespace tidepool
