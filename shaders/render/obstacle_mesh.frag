@@ -1,5 +1,8 @@
 #version 430 core
-// Obstacle surface: the obstacle colour lit like the balls (key light + ambient, a faint highlight).
+// Obstacle mesh, shaded as water-webgpu draws its obstacles: colour · (0.2 + 0.8·(0.5 + 0.5·n·L)).
+// The normal is turned toward the eye, so a mesh file's winding does not matter and the inside of
+// a cup seen over its rim is lit as a surface facing us.
+in vec3 vView;
 in vec3 vNormal;
 
 uniform vec3 uColor;      // linear RGB
@@ -9,8 +12,6 @@ out vec4 fragColor;
 
 void main() {
   vec3 n = normalize(vNormal);
-  if (!gl_FrontFacing) n = -n;  // the inside of a cup seen over its rim
-  const float diffuse = max(dot(n, uLightView), 0.0);
-  const float spec = pow(max(dot(reflect(-uLightView, n), vec3(0, 0, 1)), 0.0), 40.0);
-  fragColor = vec4(uColor * (0.35 + 0.65 * diffuse) + vec3(0.15 * spec), 1.0);
+  if (dot(n, vView) > 0.0) n = -n;
+  fragColor = vec4(uColor * (0.2 + 0.8 * (0.5 + 0.5 * dot(n, uLightView))), 1.0);
 }

@@ -1,5 +1,7 @@
 #version 430 core
-// Glossy ball: Lambert from the sun, sky ambient from above, Blinn-Phong highlight.
+// Glossy ball (render/ball_shading.glsl).
+#include "render/ball_shading.glsl"
+
 uniform vec3 uColor;   // linear RGB
 uniform vec3 uSunDir;  // towards the sun
 uniform vec3 uEye;
@@ -7,11 +9,4 @@ in vec3 vNormal;
 in vec3 vWorld;
 out vec4 fragColor;
 
-void main() {
-  const vec3 n = normalize(vNormal);
-  const vec3 v = normalize(uEye - vWorld);
-  const float diffuse = max(dot(n, uSunDir), 0.0);
-  const float ambient = 0.25 + 0.2 * n.z;
-  const float spec = pow(max(dot(n, normalize(uSunDir + v)), 0.0), 80.0);
-  fragColor = vec4(uColor * (ambient + 0.8 * diffuse) + vec3(0.5 * spec), 1.0);
-}
+void main() { fragColor = vec4(ballColor(uColor, normalize(vNormal), normalize(uEye - vWorld), uSunDir), 1.0); }

@@ -1,6 +1,7 @@
 // `tidepool bench ripples --size 512..4096`: ms per wave step and effective GB/s against a
 // compute-shader copy (gl::BufferOps) of the same state bytes measured in the same run, plus both views at 1080p
-// (the 3D frame includes the caustics pass).
+// (the 3D frame includes the caustics pass), drawn by the compute renderers (`--renderer raster`:
+// the raster ones they replaced, for comparison).
 #include <cmath>
 #include <cstdio>
 
@@ -15,14 +16,17 @@
 namespace tidepool::bench {
 namespace {
 
-int run(Env& env, const std::string& sizes) {
+int run(Env& env, const std::string& sizes, bool raster) {
   constexpr int kStepsPerSample = 10;
-  std::printf("ripples benchmark on %s (wave rule, C = 0.5, %d steps per sample, medians of %d)\n", env.device.c_str(),
-              kStepsPerSample, env.common.repeats);
+  std::printf("ripples benchmark on %s (wave rule, C = 0.5, %d steps per sample, medians of %d; %s views)\n",
+              env.device.c_str(), kStepsPerSample, env.common.repeats, raster ? "raster" : "compute");
   Table table({"cells", "ms/step", "GB/s", "copy GB/s", "% of copy", "2D view 1080p ms", "3D+caustics 1080p ms"});
   RenderTarget target(1920, 1080);
   RipplesView view(env.shaders);
   RipplesView3D view3d(env.shaders);
+  const RipplesRenderer renderer = raster ? RipplesRenderer::Raster : RipplesRenderer::Compute;
+  view.params().renderer = renderer;
+  view3d.params().renderer = renderer;
   gl::GpuProfiler noProfiler;
   noProfiler.setEnabled(false);
   for (std::size_t size : parseSizes(sizes)) {
@@ -60,8 +64,12 @@ int run(Env& env, const std::string& sizes) {
 Benchmark addRipplesBench(CLI::App& bench) {
   auto* sub = bench.add_subcommand("ripples", "heightfield wave step: ms/step, GB/s vs copy, 2D view at 1080p");
   auto sizes = std::make_shared<std::string>("512..4096");
+  auto renderer = std::make_shared<std::string>("compute");
   sub->add_option("--size", *sizes, "grid edges, e.g. 512..4096 or 256,1024");
-  return {sub, [sizes](Env& env) { return run(env, *sizes); }};
+  sub->add_option("--renderer", *renderer, "views drawn by compute passes or by the raster pipeline")
+      ->check(CLI::IsMember({"compute", "raster"}))
+      ->capture_default_str();
+  return {sub, [sizes, renderer](Env& env) { return run(env, *sizes, *renderer == "raster"); }};
 }
 
 }  // namespace tidepool::bench

@@ -27,7 +27,7 @@ void visit(ParamVisitor& v, BallsViewParams& p) {
   v.color({"background", "Background", "linear RGB"}, p.background);
   v.flag({"show_box", "Show box", "domain wireframe"}, p.showBox);
   v.flag({"show_obstacle", "Show obstacle", "draw the obstacle"}, p.showObstacle);
-  v.flag({"obstacle_balls", "Obstacle balls", "the obstacle's fixed balls instead of its surface mesh"},
+  v.flag({"obstacle_balls", "Obstacle balls", "the obstacle's fixed particles too (they lie up to r outside its mesh)"},
          p.obstacleBalls);
 }
 
@@ -65,11 +65,11 @@ BallsScene BallsView::sceneOf(const balls::Balls& model) {
   spin = glm::translate(spin, -p.obstacleCentre);
   BallsScene s;
   s.water = {&model.positions(), &model.velocities(), model.count(), model.radius(), world};
-  if (m_params.showObstacle && m_params.obstacleBalls)
-    s.obstacle = {&model.obstaclePositions(), nullptr, model.obstacleCount(), model.radius(), world * spin};
-  else if (m_params.showObstacle && model.obstacleCount() > 0) {
+  if (m_params.showObstacle && model.obstacleCount() > 0) {
     const std::size_t vertices = m_mesh.update(model);
     s.obstacleMesh = {&m_mesh.vertices(), vertices, world * spin};
+    if (m_params.obstacleBalls)
+      s.obstacle = {&model.obstaclePositions(), nullptr, model.obstacleCount(), model.radius(), world * spin};
   }
   s.boxMin = model.wallMin();
   s.boxMax = model.wallMax();

@@ -1,7 +1,8 @@
 // Deferred renderer of the balls model (issue 6), after water-webgpu's sphere renderer without
 // its shortcuts. It only reads the model's SSBOs. One frame:
-//   1. scene:     the obstacle (its surface mesh, or its balls as opaque impostors) and the
-//                 domain box into the target
+//   1. scene:     the obstacle as a mesh (a mesh obstacle's own triangles, flat-shaded; any other
+//                 shape the surface of its balls), its balls too on request, and the domain box
+//                 into the target
 //   2. gbuffer:   ray-traced sphere impostors -> normal xy, view depth, foam, exact depth
 //   3. thickness: the same spheres, additive into B, depth-tested against the scene
 //                 (water mode, and the thickness debug view)

@@ -32,7 +32,7 @@ struct BallsViewParams {
   glm::vec3 background{0.09f, 0.10f, 0.12f};
   bool showBox = true;
   bool showObstacle = true;
-  bool obstacleBalls = false;  // draw the obstacle's fixed balls instead of its surface mesh
+  bool obstacleBalls = false;  // the obstacle's fixed balls too (they stick out of its mesh by up to r)
 };
 void visit(ParamVisitor& v, BallsViewParams& p);
 

@@ -6,8 +6,6 @@
 #include <limits>
 #include <span>
 
-#include "sim/balls/balls_init.h"
-
 namespace tidepool {
 namespace {
 
@@ -79,6 +77,19 @@ void smooth(std::vector<glm::vec3>& positions, const std::vector<int>& triangles
 }
 
 }  // namespace
+
+std::vector<MeshVertex> fileMesh(const io::TriangleMesh& mesh) {
+  std::vector<MeshVertex> out;
+  out.reserve(3 * mesh.triangles.size());
+  for (const glm::uvec3& t : mesh.triangles) {
+    const glm::vec3 a = mesh.vertices[t.x], b = mesh.vertices[t.y], c = mesh.vertices[t.z];
+    const glm::vec3 cross = glm::cross(b - a, c - a);
+    const float length = glm::length(cross);
+    const glm::vec4 normal(length > 0.0f ? cross / length : glm::vec3(0.0f, 0.0f, 1.0f), 0.0f);
+    for (const glm::vec3& v : {a, b, c}) out.push_back({glm::vec4(v, 1.0f), normal});
+  }
+  return out;
+}
 
 std::vector<MeshVertex> ballUnionMesh(const std::vector<glm::vec4>& balls, float radius) {
   if (balls.empty()) return {};
@@ -200,16 +211,17 @@ std::vector<MeshVertex> ballUnionMesh(const std::vector<glm::vec4>& balls, float
 }
 
 std::size_t ObstacleMesh::update(const balls::Balls& model) {
-  balls::Params p = model.params();
-  p.radius = model.radius();  // as Balls::buildObstacle does
-  const balls::Params& b = m_builtFor;
-  if (m_built && p.obstacle == b.obstacle && p.obstacleShell == b.obstacleShell &&
-      p.obstacleCentre == b.obstacleCentre && p.obstacleSize == b.obstacleSize && p.radius == b.radius)
-    return m_count;
-  const std::vector<MeshVertex> mesh = ballUnionMesh(balls::obstacleParticles(p), p.radius);
+  if (m_built && m_version == model.obstacleVersion()) return m_count;
+  std::vector<MeshVertex> mesh;
+  if (const io::TriangleMesh* file = model.obstacleMesh()) {
+    mesh = fileMesh(*file);
+  } else if (model.obstacleCount() > 0) {
+    // The model's own particles (one read-back per rebuild), so the surface is where they are.
+    mesh = ballUnionMesh(model.obstaclePositions().read<glm::vec4>(model.obstacleCount()), model.radius());
+  }
   m_vertices = mesh.empty() ? gl::Buffer() : gl::Buffer(std::span<const MeshVertex>(mesh), GL_STATIC_DRAW);
   m_count = mesh.size();
-  m_builtFor = p;
+  m_version = model.obstacleVersion();
   m_built = true;
   return m_count;
 }

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "gl/buffer.h"
+#include "io/obj.h"
 #include "sim/balls/balls.h"
 
 namespace tidepool {
@@ -27,8 +28,13 @@ struct MeshVertex {
 // `balls` (xyz centres, m). Closed whenever there is at least one ball. Empty for no balls.
 std::vector<MeshVertex> ballUnionMesh(const std::vector<glm::vec4>& balls, float radius);
 
-// A balls model's obstacle as a mesh on the GPU (in the obstacle's frame), rebuilt on the CPU
-// from the same particles the model builds whenever its shape, size, place or radius changes.
+// A mesh file's triangles with their face normals (in the file's winding; the shader turns them
+// toward the eye), for mesh obstacles: the renderer draws the shape itself, flat-shaded.
+std::vector<MeshVertex> fileMesh(const io::TriangleMesh& mesh);
+
+// A balls model's obstacle as a mesh on the GPU (in the obstacle's frame): a mesh obstacle's file
+// triangles, any other shape the surface of the model's fixed particles. Rebuilt whenever the
+// model rebuilds its obstacle (obstacleVersion()).
 class ObstacleMesh {
  public:
   std::size_t update(const balls::Balls& model);  // vertex count
@@ -38,7 +44,7 @@ class ObstacleMesh {
   gl::Buffer m_vertices;
   std::size_t m_count = 0;
   bool m_built = false;
-  balls::Params m_builtFor;
+  unsigned m_version = 0;  // the model's obstacleVersion() built
 };
 
 }  // namespace tidepool

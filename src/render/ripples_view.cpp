@@ -1,5 +1,6 @@
 #include "render/ripples_view.h"
 
+#include "render/ripples_view_bindings.glsl"
 #include "render/textures.h"
 #include "ripples/bindings.glsl"
 
@@ -13,6 +14,8 @@ void visit(ParamVisitor& v, RipplesViewParams& p) {
   v.real({"view_distance", "View distance", "grid widths of water that look opaque"}, p.viewDistance, 0.01f, 10.0f);
   v.vector({"light_dir", "Light direction", "towards the surface"}, p.lightDir, -10.0f, 10.0f);
   v.real({"tile_repeat", "Tile repeat", "floor tiles across the grid"}, p.tileRepeat, 0.25f, 64.0f);
+  v.choice({"renderer", "Renderer", "compute: a compute pass (fast); raster: a full-screen triangle (reference)"},
+           p.renderer, kRipplesRendererNames);
 }
 
 RipplesView::RipplesView(gl::ShaderLibrary& shaders) : m_shaders(shaders), m_floor(loadRepeatingTexture("tiles.png")) {}
@@ -33,13 +36,11 @@ glm::vec2 RipplesView::gridUv(glm::vec2 pixel, glm::ivec2 viewport, glm::ivec2 g
   return screenUv * scale + offset;
 }
 
-void RipplesView::render(const ripples::Ripples& model, RenderTarget& target, gl::GpuProfiler& profiler) {
-  auto scope = profiler.scope("ripples.view2d");
+void RipplesView::setUniforms(gl::Program& p, const ripples::Ripples& model, glm::ivec2 viewport) const {
   const ripples::Params& mp = model.params();
   const glm::ivec2 grid(mp.width, mp.height);
   glm::vec2 scale, offset;
-  coverMapping({target.width(), target.height()}, grid, scale, offset);
-  gl::Program& p = m_shaders.program({"render/fullscreen.vert", "render/ripples_2d.frag"});
+  coverMapping(viewport, grid, scale, offset);
   p.use();
   p.set("uSize", grid);
   p.set("uUvScale", scale);
@@ -52,7 +53,6 @@ void RipplesView::render(const ripples::Ripples& model, RenderTarget& target, gl
   p.set("uViewDistance", m_params.viewDistance);
   p.set("uLightDir", m_params.lightDir);
   p.set("uTileRepeat", m_params.tileRepeat);
-  p.set("uFloor", 0);
   glm::vec4 sphere(0.0f);
   if (model.sphereActive()) {
     const float width = float(mp.width) * mp.cellSize, height = float(mp.height) * mp.cellSize;
@@ -60,8 +60,26 @@ void RipplesView::render(const ripples::Ripples& model, RenderTarget& target, gl
     sphere = glm::vec4(c.x / width, c.y / height, mp.sphereRadius / width, c.z / mp.sphereRadius);
   }
   p.set("uSphere", sphere);
-  m_floor.bind(0);
+  m_floor.bind(RIPPLES_VIEW_FLOOR_UNIT);
   model.state().bindBase(GL_SHADER_STORAGE_BUFFER, RIPPLES_STATE_IN);
+}
+
+void RipplesView::render(const ripples::Ripples& model, RenderTarget& target, gl::GpuProfiler& profiler) {
+  auto scope = profiler.scope("ripples.view2d");
+  const glm::ivec2 size(target.width(), target.height());
+  if (m_params.renderer == RipplesRenderer::Compute) {
+    gl::Program& p = m_shaders.program({"render/ripples_2d.comp"});
+    setUniforms(p, model, size);
+    p.set("uTargetSize", size);
+    target.color().bindImage(RIPPLES_VIEW_COLOR_IMAGE, GL_WRITE_ONLY, GL_RGBA8);
+    const glm::uvec2 groups = (glm::uvec2(size) + glm::uvec2(RIPPLES_VIEW_GROUP - 1)) / glm::uvec2(RIPPLES_VIEW_GROUP);
+    p.dispatch({groups.x, groups.y, 1});
+    // Readers of the image: read-backs, the window's blit, texture fetches.
+    glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    return;
+  }
+  gl::Program& p = m_shaders.program({"render/fullscreen.vert", "render/ripples_2d.frag"});
+  setUniforms(p, model, size);
   target.bind();
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);

@@ -1,6 +1,10 @@
 // Renderer of the ripples model: the 2D refraction view (top-down, water-simulation-gpu's look).
-// Reads the model's state buffer directly; writes only the render target.
+// Reads the model's state buffer directly; writes only the render target's colour. A compute
+// pass shades every pixel (shaders/render/ripples_2d.comp); the same shading as one full-screen
+// triangle (ripples_2d.frag) is kept as the "raster" renderer, to check the compute one against.
 #pragma once
+
+#include <array>
 
 #include "gl/framebuffer.h"
 #include "gl/gpu_profiler.h"
@@ -12,6 +16,11 @@
 
 namespace tidepool {
 
+// How the ripples views draw: compute passes (default; raster units are scarce on compute-first
+// GPUs such as the H100) or the raster pipeline (the original shaders, kept as the reference).
+enum class RipplesRenderer { Compute, Raster };
+inline constexpr std::array<const char*, 2> kRipplesRendererNames = {"compute", "raster"};
+
 struct RipplesViewParams {
   float slopeScale = 10.0f;                   // exaggerates slopes (1 = physical)
   float floorDepth = 0.25f;                   // grid widths below the surface
@@ -20,6 +29,7 @@ struct RipplesViewParams {
   float viewDistance = 0.6f;                  // grid widths of water that look opaque
   glm::vec3 lightDir{-1.0f, -1.0f, -4.0f};    // seed's light
   float tileRepeat = 4.0f;                    // floor texture repeats across the grid
+  RipplesRenderer renderer = RipplesRenderer::Compute;
 };
 void visit(ParamVisitor& v, RipplesViewParams& p);
 
@@ -33,6 +43,7 @@ class RipplesView {
 
  private:
   void coverMapping(glm::ivec2 viewport, glm::ivec2 gridSize, glm::vec2& scale, glm::vec2& offset) const;
+  void setUniforms(gl::Program& p, const ripples::Ripples& model, glm::ivec2 viewport) const;
   gl::ShaderLibrary& m_shaders;
   RipplesViewParams m_params;
   gl::Texture2D m_floor;

@@ -2,7 +2,9 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 
+#include "io/obj.h"
 #include "render/balls_view.h"
 #include "scene/param_json.h"
 
@@ -56,6 +58,19 @@ class BallsStage final : public Stage {
     m_view.camera().handle(in);
     m_settings.camera = m_view.camera().params();
   }
+  // An OBJ dropped on the window becomes the obstacle (a solid fill when it is closed, else a
+  // shell); the next step builds it, or refuses it (obstacleError()) and keeps the old one.
+  bool dropFile(const std::string& path) override {
+    if (std::filesystem::path(path).extension() != ".obj") return false;
+    balls::Params& p = m_model.params();
+    p.obstacle = balls::Shape::Mesh;
+    p.obstacleMesh = path;
+    try {
+      p.obstacleShell = !io::checkClosed(io::readObj(path)).closed();
+    } catch (const Error&) {  // the build says what is wrong with it
+    }
+    return true;
+  }
   double simTime() const override { return m_model.time(); }
   std::optional<DivergenceReport> divergence() const override { return m_model.divergence(); }
   bool recover() override { return m_model.recover(); }
@@ -69,7 +84,8 @@ class BallsStage final : public Stage {
                   "%zu balls + %zu fixed, r = %.4g m; KE %.4g, PE %.4g; overlap max %.1f%% mean %.2f%% of r",
                   m_model.count(), m_model.obstacleCount(), m_model.radius(), m_stats.kinetic, m_stats.potential,
                   100.0 * m_stats.maxOverlap, 100.0 * m_stats.meanOverlap);
-    return buf;
+    // A refused obstacle edit (a missing or open mesh) stays in view until the next one succeeds.
+    return m_model.obstacleError().empty() ? std::string(buf) : m_model.obstacleError() + "\n" + buf;
   }
 
  private:
@@ -105,7 +121,11 @@ std::unique_ptr<Stage> createBallsStage(const io::Json& params, const std::strin
   ViewSettings view;
   readParams(
       params, [&](ParamVisitor& v) { visitAll(v, model, view); }, where);
-  return std::make_unique<BallsStage>(shaders, model, view);
+  try {
+    return std::make_unique<BallsStage>(shaders, model, view);
+  } catch (const Error& e) {  // e.g. a missing or open obstacle mesh: say which scene asked for it
+    throw Error(where + ": " + e.what());
+  }
 }
 
 }  // namespace tidepool

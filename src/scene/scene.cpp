@@ -1,9 +1,5 @@
 #include "scene/scene.h"
 
-#include <unistd.h>
-
-#include <cstdlib>
-
 #include "scene/param_json.h"
 
 namespace tidepool {
@@ -20,20 +16,6 @@ void visit(ParamVisitor& v, Scene& s) {
     v.integer({"height", "Height", "pixels"}, s.clip.height, 1, 16384);
     v.endGroup();
   }
-}
-
-fs::path findAssetDir() {
-  if (const char* env = std::getenv("TIDEPOOL_ASSET_DIR")) {
-    std::error_code ec;
-    if (!fs::is_directory(env, ec))
-      throw Error(std::string("asset directory '") + env + "' (from TIDEPOOL_ASSET_DIR) not found");
-    return env;
-  }
-  std::error_code ec;
-  const fs::path exeDir = fs::read_symlink("/proc/self/exe", ec).parent_path();
-  for (const fs::path& c : {exeDir / "assets", exeDir / ".." / "assets", fs::path(TIDEPOOL_SOURCE_DIR) / "assets"})
-    if (fs::is_directory(c / "scenes", ec)) return fs::weakly_canonical(c);
-  throw Error("asset directory not found next to the executable or in the source tree; set TIDEPOOL_ASSET_DIR");
 }
 
 fs::path resolveScenePath(const std::string& arg) {

@@ -11,6 +11,7 @@
 #include <memory>
 #include <string>
 
+#include "io/assets.h"
 #include "io/json.h"
 #include "scene/stage.h"
 
@@ -32,9 +33,7 @@ struct Scene {
 
 void visit(ParamVisitor& v, Scene& scene);  // every key except "params"
 
-// Folder of assets (scenes, textures, meshes, rules): $TIDEPOOL_ASSET_DIR, next to the
-// executable, or the source tree.
-std::filesystem::path findAssetDir();
+using io::findAssetDir;  // assets/ (io/assets.h)
 
 // A path as given, or a bare name such as "blank" looked up as assets/scenes/<name>.json.
 std::filesystem::path resolveScenePath(const std::string& nameOrPath);

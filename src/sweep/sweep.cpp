@@ -22,6 +22,15 @@ std::string csvNumber(double v) {
   return buf;
 }
 
+// A CSV field: quoted when it holds a comma or a quote (method names such as "phase-speed error,
+// 10 cells per wavelength").
+std::string csvField(const std::string& s) {
+  if (s.find_first_of(",\"") == std::string::npos) return s;
+  std::string out = "\"";
+  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
 bool onPath(const std::string& tool) {
   const char* path = std::getenv("PATH");
   std::string dirs = path ? path : "";
@@ -57,8 +66,8 @@ void writeCsv(const Result& result, const std::string& study, const std::string&
   for (const std::string& m : result.metrics) out << "," << m;
   out << ",chart_x,chart_y,stable,pareto,device\n";
   for (const Row& r : result.rows) {
-    out << study << "," << result.model << "," << r.method << "," << csvNumber(r.dt) << "," << r.substeps << ","
-        << r.resolution << "," << csvNumber(r.costMsPerSimS);
+    out << study << "," << result.model << "," << csvField(r.method) << "," << csvNumber(r.dt) << "," << r.substeps
+        << "," << csvField(r.resolution) << "," << csvNumber(r.costMsPerSimS);
     for (double m : r.metrics) out << "," << csvNumber(m);
     out << "," << csvNumber(r.x) << "," << csvNumber(r.y) << "," << (r.stable ? 1 : 0) << "," << (r.pareto ? 1 : 0)
         << ",\"" << device << "\"\n";
@@ -91,11 +100,14 @@ Result readResult(const fs::path& csv, const fs::path& spec, std::string& device
   std::istringstream lines(io::readTextFile(csv));
   std::string line;
   std::vector<std::string> header;
-  auto split = [](const std::string& text) {
+  auto split = [](const std::string& text) {  // RFC 4180 fields: quoted commas, doubled quotes
     std::vector<std::string> out(1);
     bool inQuotes = false;
-    for (char ch : text) {
-      if (ch == '"')
+    for (std::size_t i = 0; i < text.size(); ++i) {
+      const char ch = text[i];
+      if (ch == '"' && inQuotes && i + 1 < text.size() && text[i + 1] == '"')
+        out.back() += text[++i];
+      else if (ch == '"')
         inQuotes = !inQuotes;
       else if (ch == ',' && !inQuotes)
         out.emplace_back();

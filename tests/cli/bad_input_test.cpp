@@ -56,6 +56,29 @@ TEST(BadInput, UnknownSubcommandOrOption) {
   expectOneLineError({"render", "blank"}, "nothing to write: give --out DIR and/or --video FILE", 1);
 }
 
+TEST(BadInput, ObstacleMeshMissingMalformedOrOpen) {
+  test::TempDir dir;
+  auto scene = [&](const std::string& name, const std::string& mesh) {
+    dir.write(name, R"({"model": "balls", "params": {"particles": {"fill": "none"},
+                        "obstacle": {"shape": "mesh", "mesh": ")" +
+                        mesh + R"("}}})");
+    return std::vector<std::string>{"render", (dir / name).string(), "--frames", "1", "--out", (dir / "o").string()};
+  };
+  expectOneLineError(scene("missing.json", "nosuchmesh"),
+                     (dir / "missing.json").string() +
+                         ": params: mesh 'nosuchmesh' not found: neither a file nor a name in assets/meshes (known: "
+                         "blob, cube, torus)",
+                     1);
+  dir.write("bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 zero\nf 1 2 3\n");
+  expectOneLineError(scene("bad.json", (dir / "bad.obj").string()),
+                     (dir / "bad.obj").string() + ":3: bad number 'zero' in vertex", 1);
+  dir.write("open.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\n");
+  expectOneLineError(scene("open.json", (dir / "open.obj").string()),
+                     "is not closed: 3 edges belong to one triangle only (a hole); the first at vertices 2-3: a solid "
+                     "fill needs a closed mesh; fix the mesh or set obstacle.shell",
+                     1);
+}
+
 TEST(BadInput, UnreadableShaderDirectory) {
   expectOneLineError({"render", "blank", "--frames", "1", "--out", "/tmp/tidepool-x"},
                      "shader directory '/nonexistent/shaders' (from TIDEPOOL_SHADER_DIR) is not a readable directory",

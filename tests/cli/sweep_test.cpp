@@ -85,3 +85,26 @@ TEST(Sweep, ChartsRedrawFromCsvMeasuredElsewhere) {
   EXPECT_EQ(missing.exitCode, 1);
   EXPECT_EQ(missing.errLines().size(), 1u) << missing.err;
 }
+
+TEST(Sweep, CsvRoundTripKeepsMethodNamesWithCommasAndQuotes) {
+  test::TempDir dir;
+  sweep::Result r;
+  r.model = "ripples";
+  r.metrics = {"err"};
+  r.chart.title = "t";
+  sweep::Row row;
+  row.method = "phase error, 10 cells \"fine\"";
+  row.resolution = "32x32";
+  row.metrics = {0.5};
+  row.x = 2;
+  row.y = 0.5;
+  r.rows = {row};
+  sweep::writeCsv(r, "study", "GPU, model 1", dir / "s.csv");
+  sweep::writeChartSpec(r, dir / "s.chart.json");
+  std::string device;
+  const sweep::Result back = sweep::readResult(dir / "s.csv", dir / "s.chart.json", device);
+  ASSERT_EQ(back.rows.size(), 1u);
+  EXPECT_EQ(back.rows[0].method, row.method);
+  EXPECT_EQ(back.rows[0].y, 0.5);
+  EXPECT_EQ(device, "GPU, model 1");
+}

@@ -111,7 +111,7 @@ TEST_F(BallsViewTest, ASphereBehindAnOpaqueMeshAddsNoThickness) {
   p.obstacleCentre = {0.0f, 0.0f, -2.0f};
   p.obstacleSize = glm::vec3(0.36f);
   p.radius = 0.04f;
-  const std::vector<MeshVertex> sphere = ballUnionMesh(balls::obstacleParticles(p), p.radius);
+  const std::vector<MeshVertex> sphere = ballUnionMesh(balls::Obstacle(p).particles(), p.radius);
   ASSERT_FALSE(sphere.empty());
   const gl::Buffer mesh{std::span<const MeshVertex>(sphere)}, water = ballsAt({3.0f, 1.2f});
   Frame f(shaders());

@@ -29,7 +29,7 @@ TEST(ObstacleMesh, NoBallsNoTriangles) { EXPECT_TRUE(ballUnionMesh({}, 0.01f).em
 
 TEST(ObstacleMesh, SphereIsClosedOnTheBallsSurfaceWithOutwardNormals) {
   const balls::Params p = sphereObstacle();
-  const std::vector<MeshVertex> mesh = ballUnionMesh(balls::obstacleParticles(p), p.radius);
+  const std::vector<MeshVertex> mesh = ballUnionMesh(balls::Obstacle(p).particles(), p.radius);
   ASSERT_GT(mesh.size(), 300u);
   ASSERT_EQ(mesh.size() % 3, 0u);
   // Closed and consistently wound: each edge as often one way as the other (surface nets can

@@ -63,7 +63,8 @@ void Balls::reset() {
   if (glm::any(glm::lessThanEqual(p.domainMax, p.domainMin)))
     throw Error("balls: domain_max must exceed domain_min on every axis");
   m_radius = p.radius;
-  const std::vector<glm::vec4> water = waterParticles(m_params);
+  const Obstacle obstacle(p);  // first: a bad mesh fails before anything is allocated
+  const std::vector<glm::vec4> water = waterParticles(m_params, obstacle);
   allocate(water.size(), water.size() + (m_params.tap ? std::size_t(m_params.tapMax) : 0));
   m_tapEmitted = 0;
   m_tapNextLayer = 0;
@@ -80,15 +81,41 @@ void Balls::reset() {
   m_accValid = false;
   grid::GridParams gp{p.domainMin, p.domainMax, 2.0f * m_radius};
   m_grid = std::make_unique<grid::UniformGrid>(m_shaders, gp, m_capacity);
-  buildObstacle();
+  buildObstacle(obstacle);
+  m_obstacleError.clear();
   updateWalls();
 }
+
+namespace {
+// The parameters an obstacle is built from (spin only turns it).
+void copyObstacle(Params& to, const Params& from) {
+  to.obstacle = from.obstacle;
+  to.obstacleMesh = from.obstacleMesh;
+  to.obstacleShell = from.obstacleShell;
+  to.obstacleCentre = from.obstacleCentre;
+  to.obstacleSize = from.obstacleSize;
+  to.obstacleOrientation = from.obstacleOrientation;
+}
+}  // namespace
 
 bool Balls::obstacleEdited() const {
   const Params& a = m_params;
   const Params& b = m_builtObstacle;
   return a.obstacle != b.obstacle || a.obstacleShell != b.obstacleShell || a.obstacleCentre != b.obstacleCentre ||
-         a.obstacleSize != b.obstacleSize;
+         a.obstacleSize != b.obstacleSize || a.obstacleOrientation != b.obstacleOrientation ||
+         (a.obstacle == Shape::Mesh && a.obstacleMesh != b.obstacleMesh);
+}
+
+void Balls::rebuildObstacle() {
+  Params p = m_params;
+  p.radius = m_radius;
+  try {
+    buildObstacle(Obstacle(p));
+    m_obstacleError.clear();
+  } catch (const Error& e) {
+    copyObstacle(m_params, m_builtObstacle);
+    m_obstacleError = std::string("obstacle not changed: ") + e.what();
+  }
 }
 
 void Balls::emitFromTap() {
@@ -122,11 +149,11 @@ void Balls::emitFromTap() {
   m_tapNextLayer = m_time + s * 0.8165 / p.tapSpeed;  // HCP layer spacing 2r·√(2/3)
 }
 
-void Balls::buildObstacle() {
+void Balls::buildObstacle(const Obstacle& obstacle) {
   m_builtObstacle = m_params;
-  Params p = m_params;
-  p.radius = m_radius;
-  const std::vector<glm::vec4> particles = obstacleParticles(p);
+  const std::vector<glm::vec4> particles = obstacle.particles();
+  m_obstacleMesh = obstacle.mesh() ? std::make_shared<const io::TriangleMesh>(*obstacle.mesh()) : nullptr;
+  ++m_obstacleVersion;
   m_obstacleCount = particles.size();
   m_obstacleGrid.reset();
   if (particles.empty()) return;
@@ -259,7 +286,7 @@ void Balls::gridAndCollide(gl::GpuProfiler* profiler, bool verlet, float kick) {
 
 void Balls::stepOnce(gl::GpuProfiler* profiler) {
   updateWalls();
-  if (obstacleEdited()) buildObstacle();  // added, removed, moved or resized while running
+  if (obstacleEdited()) rebuildObstacle();  // added, removed, moved, turned or resized while running
   emitFromTap();
   if (m_count > 0) {
     const bool verlet = m_params.integrator == Integrator::VelocityVerlet;

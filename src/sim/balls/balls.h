@@ -1,8 +1,9 @@
 // Water as N equal balls colliding (DEM), after water-webgpu: a uniform grid finds every pair
 // within 2r (27 cells), one of three contact laws acts on it, one of three integrators advances
 // it; box walls (one may be a piston; gravity rotates with the domain) and an obstacle of fixed
-// particles (optionally spinning) complete the scene. The model owns its buffers and passes;
-// renderers read positions() / velocities() (foam in velocity w) and the obstacle's particles.
+// particles (a shape or a voxelised triangle mesh, optionally spinning) complete the scene. The
+// model owns its buffers and passes; renderers read positions() / velocities() (foam in velocity
+// w), the obstacle's particles and its mesh.
 #pragma once
 
 #include <memory>
@@ -15,10 +16,13 @@
 #include "gl/gpu_profiler.h"
 #include "gl/shader_library.h"
 #include "grid/grid.h"
+#include "io/obj.h"
 #include "sim/balls/balls_params.h"
 #include "sim/divergence.h"
 
 namespace tidepool::balls {
+
+class Obstacle;  // sim/balls/balls_init.h
 
 struct Stats {
   double time = 0;         // simulated s
@@ -67,6 +71,13 @@ class Balls {
   const gl::Buffer& positions() const { return m_pos[m_posIndex]; }      // vec4 (m, w = 1)
   const gl::Buffer& velocities() const { return m_vel[m_velIndex]; }     // vec4 (m/s, w = foam)
   const gl::Buffer& obstaclePositions() const { return m_obstaclePos; }  // vec4, obstacle frame
+  const io::TriangleMesh* obstacleMesh() const {
+    return m_obstacleMesh.get();
+  }                                                               // mesh shape, obstacle frame; else null
+  unsigned obstacleVersion() const { return m_obstacleVersion; }  // changes whenever the obstacle is rebuilt
+  // Why the last edit of the obstacle was refused (e.g. a missing mesh file); empty if it was not.
+  // A refused edit leaves the obstacle, and its parameters, as they were.
+  const std::string& obstacleError() const { return m_obstacleError; }
   // Tests: upload/download all balls (vec4 position, vec4 velocity) and the order of the last step.
   void upload(const std::vector<glm::vec4>& pos, const std::vector<glm::vec4>& vel);
   std::vector<glm::vec4> downloadPositions() const { return positions().read<glm::vec4>(m_count); }
@@ -76,8 +87,9 @@ class Balls {
 
  private:
   void allocate(std::size_t count, std::size_t capacity);
-  void buildObstacle();
-  bool obstacleEdited() const;  // shape, size or place changed since the last build
+  void buildObstacle(const Obstacle& obstacle);
+  void rebuildObstacle();       // after an edit while running; refuses edits that fail
+  bool obstacleEdited() const;  // shape, mesh, size, place or orientation changed since the last build
   void emitFromTap();           // appends a layer of balls when the jet has advanced one spacing
   void watch();                 // polls the check in flight, starts the next one
   void judge(const GLuint values[4], double time);
@@ -99,6 +111,9 @@ class Balls {
   int m_posIndex = 0, m_velIndex = 0;
   std::unique_ptr<grid::UniformGrid> m_grid, m_obstacleGrid;
   gl::Buffer m_obstaclePos, m_obstacleSorted;
+  std::shared_ptr<const io::TriangleMesh> m_obstacleMesh;
+  unsigned m_obstacleVersion = 0;
+  std::string m_obstacleError;
   glm::vec3 m_wallMin{0.0f}, m_wallMax{1.0f}, m_wallMinVel{0.0f}, m_wallMaxVel{0.0f};
   double m_time = 0;
   bool m_trackOrder = false, m_accValid = false;

@@ -1,7 +1,11 @@
 #include "sim/balls/balls_init.h"
 
 #include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
 #include <random>
+
+#include "base/error.h"
+#include "sim/balls/balls_mesh.h"
 
 namespace tidepool::balls {
 namespace {
@@ -49,7 +53,7 @@ Params resolved(const Params& p) {
   return q;
 }
 
-std::vector<glm::vec4> waterParticles(const Params& input) {
+std::vector<glm::vec4> waterParticles(const Params& input, const Obstacle& obstacle) {
   const Params p = resolved(input);
   const float r = p.radius;
   const glm::vec3 lo = p.domainMin + r, hi = p.domainMax - r;
@@ -63,7 +67,7 @@ std::vector<glm::vec4> waterParticles(const Params& input) {
         b = glm::vec3(hi.x, hi.y, std::min(hi.z, p.domainMin.z + p.slabHeight - r));
       }
       for (const glm::vec3& q : hcpLattice(a, b, r))
-        if (p.obstacle == Shape::None || !insideObstacle(p, q)) out.emplace_back(q, 1.0f);
+        if (p.obstacle == Shape::None || !obstacle.inside(q)) out.emplace_back(q, 1.0f);
       break;
     }
     case Fill::Random: {
@@ -88,11 +92,45 @@ std::vector<glm::vec4> waterParticles(const Params& input) {
   return out;
 }
 
-bool insideObstacle(const Params& p, glm::vec3 q) {
+glm::mat3 orientationMatrix(glm::vec3 degrees) {
+  const glm::vec3 a = glm::radians(degrees);
+  glm::mat4 m = glm::rotate(glm::mat4(1.0f), a.z, glm::vec3(0, 0, 1));
+  m = glm::rotate(m, a.y, glm::vec3(0, 1, 0));
+  return glm::mat3(glm::rotate(m, a.x, glm::vec3(1, 0, 0)));
+}
+
+Obstacle::Obstacle(const Params& p)
+    : m_params(p),
+      m_orientation(orientationMatrix(p.obstacleOrientation)),
+      m_turned(p.obstacleOrientation != glm::vec3(0.0f)) {
+  if (p.obstacle != Shape::Mesh) return;
+  const io::TriangleMesh mesh = io::readObj(io::findMesh(p.obstacleMesh));  // errors name the file and line
+  if (!p.obstacleShell) {
+    const io::EdgeCheck check = io::checkClosed(mesh);
+    if (!check.closed())
+      throw Error("mesh '" + p.obstacleMesh + "' is " + check.describe() +
+                  ": a solid fill needs a closed mesh; fix the mesh or set obstacle.shell");
+  }
+  m_mesh = std::make_unique<MeshSolid>(placeMesh(mesh, p.obstacleCentre, p.obstacleSize, m_orientation));
+}
+
+Obstacle::~Obstacle() = default;
+
+const io::TriangleMesh* Obstacle::mesh() const { return m_mesh ? &m_mesh->mesh() : nullptr; }
+
+bool Obstacle::inside(glm::vec3 q) const {
+  if (m_mesh) return m_mesh->inside(q);
+  if (m_turned) q = m_params.obstacleCentre + glm::transpose(m_orientation) * (q - m_params.obstacleCentre);
+  return insideShape(q);
+}
+
+bool Obstacle::insideShape(glm::vec3 q) const {
+  const Params& p = m_params;
   const glm::vec3 c = p.obstacleCentre, s = p.obstacleSize;
   const float r = p.radius;
   switch (p.obstacle) {
-    case Shape::None: return false;
+    case Shape::None:
+    case Shape::Mesh: return false;
     case Shape::Sphere: return glm::length(q - c) <= s.x;
     case Shape::Box: return glm::all(glm::lessThanEqual(glm::abs(q - c), s));
     case Shape::Capsule: return capsuleDistance(q, c, s.z, s.x) <= 0.0f;
@@ -121,10 +159,15 @@ bool insideObstacle(const Params& p, glm::vec3 q) {
   return false;
 }
 
-std::vector<glm::vec4> obstacleParticles(const Params& p) {
+std::vector<glm::vec4> Obstacle::particles() const {
+  const Params& p = m_params;
   std::vector<glm::vec4> out;
-  if (p.obstacle == Shape::None) return out;
   const float r = p.radius;
+  if (m_mesh) {
+    for (const glm::vec3& q : meshLatticePoints(*m_mesh, r, p.obstacleShell)) out.emplace_back(q, 0.0f);
+    return out;
+  }
+  if (p.obstacle == Shape::None) return out;
   glm::vec3 lo = p.obstacleCentre - glm::vec3(p.obstacleSize.x, p.obstacleSize.x, p.obstacleSize.z) - 2 * r;
   glm::vec3 hi = p.obstacleCentre + glm::vec3(p.obstacleSize.x, p.obstacleSize.x, p.obstacleSize.z) + 2 * r;
   if (p.obstacle == Shape::Box) {
@@ -134,15 +177,26 @@ std::vector<glm::vec4> obstacleParticles(const Params& p) {
     lo = p.obstacleCentre - glm::vec3(p.obstacleSize.z + p.obstacleSize.x, p.obstacleSize.x, p.obstacleSize.x) - r;
     hi = p.obstacleCentre + glm::vec3(p.obstacleSize.z + p.obstacleSize.x, p.obstacleSize.x, p.obstacleSize.x) + r;
   }
+  if (m_turned) {  // the bounds of the turned box
+    const glm::vec3 c = p.obstacleCentre, a = lo, b = hi;
+    lo = glm::vec3(1e30f);
+    hi = glm::vec3(-1e30f);
+    for (int k = 0; k < 8; ++k) {
+      const glm::vec3 corner =
+          c + m_orientation * (glm::vec3(k & 1 ? b.x : a.x, k & 2 ? b.y : a.y, k & 4 ? b.z : a.z) - c);
+      lo = glm::min(lo, corner);
+      hi = glm::max(hi, corner);
+    }
+  }
   const float d = 2.0f * r;
   for (const glm::vec3& q : hcpLattice(lo, hi, r)) {
-    if (!insideObstacle(p, q)) continue;
+    if (!inside(q)) continue;
     if (p.obstacleShell) {
       // Keep particles with a neighbour position outside: the surface layer only.
       bool surface = false;
       for (const glm::vec3 o : {glm::vec3(d, 0, 0), glm::vec3(-d, 0, 0), glm::vec3(0, d, 0), glm::vec3(0, -d, 0),
                                 glm::vec3(0, 0, d), glm::vec3(0, 0, -d)})
-        surface |= !insideObstacle(p, q + o);
+        surface |= !inside(q + o);
       if (!surface) continue;
     }
     out.emplace_back(q, 0.0f);

@@ -58,10 +58,15 @@ void visit(ParamVisitor& v, Params& p) {
     v.endGroup();
   }
   if (v.beginGroup({"obstacle", "Obstacle", "fixed particles from a shape (rebuilt when edited)"})) {
-    v.choice({"shape", "Shape", "none, sphere, box, capsule, cup or helix"}, p.obstacle, kShapeNames);
-    v.flag({"shell", "Shell only", "surface shell instead of a solid fill"}, p.obstacleShell);
+    v.choice({"shape", "Shape", "none, sphere, box, capsule, cup, helix or mesh"}, p.obstacle, kShapeNames);
+    v.text({"mesh", "Mesh", "mesh shape: OBJ file in assets/meshes (torus, cube, blob) or a path"}, p.obstacleMesh);
+    v.flag({"shell", "Shell only", "surface shell instead of a solid fill (open meshes need it)"}, p.obstacleShell);
     v.vector({"centre", "Centre", "m"}, p.obstacleCentre, -100.0f, 100.0f);
-    v.vector({"size", "Size", "half extents (box), radius x and height z (others), m"}, p.obstacleSize, 0.0f, 100.0f);
+    v.vector({"size", "Size",
+              "half extents (box; mesh: its bounds fit inside, aspect kept), radius x and height z (others), m"},
+             p.obstacleSize, 0.0f, 100.0f);
+    v.vector({"orientation", "Orientation", "degrees about x, then y, then z (about the centre)"},
+             p.obstacleOrientation, -360.0f, 360.0f);
     v.real({"spin", "Spin", "rad/s about the vertical axis"}, p.obstacleSpin, -100.0f, 100.0f);
     v.endGroup();
   }

@@ -18,8 +18,8 @@ enum class Integrator { ExplicitEuler, SymplecticEuler, VelocityVerlet };
 constexpr std::array<const char*, 3> kIntegratorNames = {"explicit-euler", "symplectic-euler", "verlet"};
 enum class Fill { Block, Slab, Random, Lattice, None };
 constexpr std::array<const char*, 5> kFillNames = {"block", "slab", "random", "lattice", "none"};
-enum class Shape { None, Sphere, Box, Capsule, Cup, Helix };
-constexpr std::array<const char*, 6> kShapeNames = {"none", "sphere", "box", "capsule", "cup", "helix"};
+enum class Shape { None, Sphere, Box, Capsule, Cup, Helix, Mesh };
+constexpr std::array<const char*, 7> kShapeNames = {"none", "sphere", "box", "capsule", "cup", "helix", "mesh"};
 
 struct Params {
   // Particles and domain
@@ -54,11 +54,16 @@ struct Params {
   float pistonPeriod = 4.0f;  // s per in-and-out
   float rotation = 0.0f;      // degrees about x
   float rotationRate = 0.0f;  // degrees per s
-  // Obstacle: fixed particles from a shape, optionally spinning about the vertical axis
+  // Obstacle: fixed particles from a shape, optionally spinning about the vertical axis. One only:
+  // several would need a list of groups in the parameter system (scene/param.h has no lists yet)
+  // and, in shaders/balls/neighbours.glsl, a transform per obstacle (pivot, rotation, spin) picked
+  // by an obstacle index in each fixed particle's w, with all of them in the one obstacle grid.
   Shape obstacle = Shape::None;
-  bool obstacleShell = false;  // a surface shell instead of a solid fill
+  std::string obstacleMesh = "torus";  // mesh: OBJ in assets/meshes (".obj" optional) or a path
+  bool obstacleShell = false;          // a surface shell instead of a solid fill
   glm::vec3 obstacleCentre{0.5f, 0.5f, 0.4f};
-  glm::vec3 obstacleSize{0.2f, 0.2f, 0.2f};  // half extents / radius (x) and height (z), per shape
+  glm::vec3 obstacleSize{0.2f, 0.2f, 0.2f};  // half extents (box, mesh bounds), radius (x) and height (z), per shape
+  glm::vec3 obstacleOrientation{0.0f};       // degrees about x, then y, then z, turning the shape about its centre
   float obstacleSpin = 0.0f;                 // rad/s about the vertical axis through its centre
   // Tap: emits balls over time (up to tapMax in total) from a disc facing tapDirection
   bool tap = false;

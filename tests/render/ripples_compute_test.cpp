@@ -1,0 +1,181 @@
+// The compute renderers of the ripples views (the 2D compute pass, the caustics splat, the 3D
+// ray caster) draw the pictures the raster renderers draw: same scene, both renderers, images
+// compared pixel by pixel. Set TIDEPOOL_TEST_IMAGES=<folder> to keep the images as PNGs.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <memory>
+
+#include "io/png.h"
+#include "render/ripples_view.h"
+#include "render/ripples_view3d.h"
+#include "support/gl_test.h"
+
+using namespace tidepool;
+
+namespace {
+
+class RipplesCompute : public test::GlTest {};
+
+struct ImageDiff {
+  double meanAbs = 0;  // mean |a - b| over the RGB channels, in 1/255
+  double farOff = 0;   // fraction of pixels where some channel differs by more than 16/255
+  int maxAbs = 0;      // in 1/255
+};
+
+ImageDiff compare(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b) {
+  ImageDiff d;
+  std::size_t far = 0;
+  for (std::size_t i = 0; i < a.size(); i += 4) {
+    int worst = 0;
+    for (std::size_t c = 0; c < 3; ++c) {
+      const int e = std::abs(int(a[i + c]) - int(b[i + c]));
+      d.meanAbs += e;
+      worst = std::max(worst, e);
+    }
+    far += worst > 16;
+    d.maxAbs = std::max(d.maxAbs, worst);
+  }
+  d.meanAbs /= 3.0 * double(a.size() / 4);
+  d.farOff = double(far) / double(a.size() / 4);
+  return d;
+}
+
+void keep(const std::string& name, const RenderTarget& target, const std::vector<uint8_t>& rgba) {
+  if (const char* dir = std::getenv("TIDEPOOL_TEST_IMAGES"))
+    io::writePng(std::filesystem::path(dir) / (name + ".png"), io::Image{target.width(), target.height(), rgba});
+}
+
+void expectClose(const std::string& name, const RenderTarget& target, const std::vector<uint8_t>& raster,
+                 const std::vector<uint8_t>& compute) {
+  keep(name + "-raster", target, raster);
+  keep(name + "-compute", target, compute);
+  std::vector<uint8_t> diff(raster.size(), 255);  // |raster - compute| x 4
+  for (std::size_t i = 0; i < diff.size(); ++i)
+    if (i % 4 != 3) diff[i] = uint8_t(std::min(255, 4 * std::abs(int(raster[i]) - int(compute[i]))));
+  keep(name + "-diff", target, diff);
+  const ImageDiff d = compare(raster, compute);
+  std::cout << name << ": mean |diff| " << d.meanAbs << "/255, " << 100.0 * d.farOff
+            << "% of pixels off by > 16/255, max " << d.maxAbs << "/255\n";
+  EXPECT_LE(d.meanAbs, 2.0) << name;
+  EXPECT_LE(d.farOff, 0.01) << name;
+}
+
+// A 64x48 pool with a few drops' rings, optionally the ball circling through it.
+std::unique_ptr<ripples::Ripples> wavyPool(gl::ShaderLibrary& shaders, bool withBall, gl::GpuProfiler& profiler) {
+  ripples::Params p;
+  p.width = 64;
+  p.height = 48;  // not square: the tank's y extent and the cover mapping matter
+  p.sphere = withBall;
+  p.sphereRadius = 0.12f;  // m; the tank is 1.28 m across
+  p.sphereHeight = 0.03f;
+  auto model = std::make_unique<ripples::Ripples>(shaders, p);
+  model->touch(0.35f, 0.55f, 0.15f, -0.05f);
+  model->touch(0.7f, 0.35f, 0.1f, -0.04f);
+  for (int i = 0; i < 12; ++i) model->step(1.0 / 60, profiler);
+  return model;
+}
+
+std::vector<float> lightOf(const RipplesView3D& view) {
+  std::vector<float> light(std::size_t(view.caustics().width()) * view.caustics().height());
+  view.caustics().download(GL_RED, GL_FLOAT, light.data());
+  return light;
+}
+
+}  // namespace
+
+TEST_F(RipplesCompute, TopViewMatchesTheRasterView) {
+  gl::GpuProfiler profiler;
+  for (const bool withBall : {false, true}) {
+    const auto pool = wavyPool(shaders(), withBall, profiler);
+    const ripples::Ripples& model = *pool;
+    RipplesView view(shaders());
+    RenderTarget target(200, 120);
+    view.params().renderer = RipplesRenderer::Raster;
+    view.render(model, target, profiler);
+    const std::vector<uint8_t> raster = target.readRgba8();
+    view.params().renderer = RipplesRenderer::Compute;
+    view.render(model, target, profiler);
+    expectClose(withBall ? "ripples-2d-ball" : "ripples-2d", target, raster, target.readRgba8());
+  }
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+TEST_F(RipplesCompute, CausticsSplatLandsLikeThePoints) {
+  gl::GpuProfiler profiler;
+  const auto pool = wavyPool(shaders(), false, profiler);
+  const ripples::Ripples& model = *pool;
+  RipplesView3D view(shaders());
+  view.params().lightGrid = 128;
+  view.params().causticsSize = 64;
+  RenderTarget target(32, 32);
+  view.params().renderer = RipplesRenderer::Raster;
+  view.render(model, target, profiler);
+  const std::vector<float> raster = lightOf(view);
+  view.params().renderer = RipplesRenderer::Compute;
+  view.render(model, target, profiler);
+  const std::vector<float> compute = lightOf(view);
+  ASSERT_EQ(raster.size(), compute.size());
+  double maxDiff = 0, sumRaster = 0, sumCompute = 0;
+  int off = 0;
+  for (std::size_t i = 0; i < raster.size(); ++i) {
+    maxDiff = std::max(maxDiff, double(std::abs(raster[i] - compute[i])));
+    off += std::abs(raster[i] - compute[i]) > 1e-2f;
+    sumRaster += raster[i];
+    sumCompute += compute[i];
+  }
+  std::cout << "caustics: " << off << " of " << raster.size() << " texels differ, max by " << maxDiff << "; light "
+            << sumRaster << " (raster) " << sumCompute << " (compute)\n";
+  // Points within a rounding error of a texel edge may land on either side: the raster snaps
+  // them to its sub-pixel grid first. One light point carries 64 x 48 / (128 x 96) = 0.25.
+  EXPECT_LT(off, int(raster.size()) / 20) << "nearly all points land in the same texels";
+  EXPECT_LE(maxDiff, 2 * 0.25 + 1e-3) << "and the others next door";
+  EXPECT_NEAR(sumCompute, double(compute.size()), 1e-6 * double(compute.size())) << "every point lands once";
+  EXPECT_GT(*std::max_element(compute.begin(), compute.end()), 1.5f) << "the waves should focus light";
+  // A second frame starts from cleared counters.
+  view.render(model, target, profiler);
+  EXPECT_EQ(lightOf(view), compute);
+}
+
+TEST_F(RipplesCompute, TankViewMatchesTheRasterView) {
+  gl::GpuProfiler profiler;
+  for (const bool withBall : {false, true}) {
+    const auto pool = wavyPool(shaders(), withBall, profiler);
+    const ripples::Ripples& model = *pool;
+    RipplesView3D view(shaders());
+    view.params().lightGrid = 256;
+    view.params().causticsSize = 128;
+    RenderTarget target(240, 160);
+    view.params().renderer = RipplesRenderer::Raster;
+    view.render(model, target, profiler);
+    const std::vector<uint8_t> raster = target.readRgba8();
+    view.params().renderer = RipplesRenderer::Compute;
+    view.render(model, target, profiler);
+    expectClose(withBall ? "ripples-3d-ball" : "ripples-3d", target, raster, target.readRgba8());
+  }
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+TEST_F(RipplesCompute, TankViewFromOtherAnglesMatchesTheRasterView) {
+  gl::GpuProfiler profiler;
+  const auto pool = wavyPool(shaders(), true, profiler);
+  const ripples::Ripples& model = *pool;
+  RipplesView3D view(shaders());
+  view.params().exaggeration = 12.0f;  // steep waves: grazing rays, surfaces seen edge-on
+  RenderTarget target(240, 160);
+  const float angles[][2] = {{2.2f, 0.25f}, {-2.5f, 1.2f}, {0.4f, 0.08f}};  // yaw, pitch
+  for (const auto& a : angles) {
+    view.camera().params().yaw = a[0];
+    view.camera().params().pitch = a[1];
+    view.params().renderer = RipplesRenderer::Raster;
+    view.render(model, target, profiler);
+    const std::vector<uint8_t> raster = target.readRgba8();
+    view.params().renderer = RipplesRenderer::Compute;
+    view.render(model, target, profiler);
+    expectClose("ripples-3d-yaw" + std::to_string(a[0]) + "-pitch" + std::to_string(a[1]), target, raster,
+                target.readRgba8());
+  }
+}
