@@ -1,9 +1,7 @@
 // `tidepool bench balls <scene> --n 65536,... --steps 10:310`: median GPU ms per step over a
 // window of steps, split by pass, with steps per second and GPU bytes per ball. --n sets the
 // ball count of lattice scenes (bench-lattice); other scenes run as they are.
-#include <chrono>
 #include <cstdio>
-#include <map>
 #include <regex>
 
 #include "base/error.h"
@@ -40,40 +38,11 @@ int run(Env& env, const std::string& sceneName, const std::string& sizes, const 
     balls::Params p = base;
     if (lattice) p.latticeCount = int(n);
     balls::Balls model(env.shaders, p);
-    gl::GpuProfiler profiler;
-    std::map<std::string, std::vector<double>> passes;
-    std::vector<double> totals, wall;
-    const bool software = softwareRenderer();  // time whole steps on the wall clock there
-    for (int step = 0; step < w.last; ++step) {
-      if (software) glFinish();
-      const auto start = std::chrono::steady_clock::now();
-      profiler.beginFrame();
-      model.stepOnce(&profiler);
-      profiler.endFrame();
-      if (software) {
-        glFinish();
-        if (step >= w.first)
-          wall.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-      }
-      if (step + 1 == w.first) {
-        profiler.finish();
-        profiler.takeCompleted();  // warm-up steps are not timed
-      }
-    }
-    profiler.finish();
-    for (const auto& frame : profiler.takeCompleted()) {
-      double total = 0;
-      for (const auto& [name, ms] : frame.passes) {
-        passes[name].push_back(ms);
-        total += ms;
-      }
-      totals.push_back(total);
-    }
-    auto med = [&](const char* name) { return passes.count(name) ? median(passes[name]) : 0.0; };
-    const double perStep = software ? median(wall) : median(totals);
+    const PassTimes t = timePasses(w.first, w.last - w.first, [&](gl::GpuProfiler& p) { model.stepOnce(&p); });
+    const double perStep = t.frameMs();
     table.add({std::to_string(model.count()), fixed(model.radius(), 5), std::to_string(model.cells()),
-               fixed(med("balls.count"), 4), fixed(med("balls.scan"), 4), fixed(med("balls.reorder"), 4),
-               fixed(med("balls.drift"), 4), fixed(med("balls.collide"), 4), fixed(perStep, 4),
+               fixed(t.median("balls.count"), 4), fixed(t.median("balls.scan"), 4), fixed(t.median("balls.reorder"), 4),
+               fixed(t.median("balls.drift"), 4), fixed(t.median("balls.collide"), 4), fixed(perStep, 4),
                fixed(perStep > 0 ? 1000.0 / perStep : 0.0, 0), std::to_string(model.bytesPerBall())});
   }
   table.print();

@@ -82,6 +82,45 @@ double gpuMedianMs(const Common& c, const std::function<void()>& work) {
   return median(ms);
 }
 
+double PassTimes::median(const std::string& pass) const {
+  const auto it = passes.find(pass);
+  return it == passes.end() ? 0.0 : bench::median(it->second);
+}
+
+double PassTimes::frameMs() const { return bench::median(wall.empty() ? totals : wall); }
+
+PassTimes timePasses(int warmup, int timed, const std::function<void(gl::GpuProfiler&)>& frame) {
+  const bool software = softwareRenderer();  // its timer queries do not measure: time whole frames
+  gl::GpuProfiler profiler;
+  PassTimes t;
+  for (int i = 0; i < warmup + timed; ++i) {
+    if (software) glFinish();
+    const auto start = std::chrono::steady_clock::now();
+    profiler.beginFrame();
+    frame(profiler);
+    profiler.endFrame();
+    if (software) {
+      glFinish();
+      if (i >= warmup)
+        t.wall.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    }
+    if (i + 1 == warmup) {
+      profiler.finish();
+      profiler.takeCompleted();  // warm-up frames are not timed
+    }
+  }
+  profiler.finish();
+  for (const auto& f : profiler.takeCompleted()) {
+    double total = 0;
+    for (const auto& [name, ms] : f.passes) {
+      t.passes[name].push_back(ms);
+      total += ms;
+    }
+    t.totals.push_back(total);
+  }
+  return t;
+}
+
 std::string timingCaveat(const std::string& device) {
   if (device.find("llvmpipe") == std::string::npos && device.find("softpipe") == std::string::npos) return "";
   return "note: " + device +

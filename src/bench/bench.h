@@ -5,11 +5,13 @@
 
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "gl/context.h"
+#include "gl/gpu_profiler.h"
 #include "gl/shader_library.h"
 
 namespace tidepool::bench {
@@ -56,6 +58,18 @@ double median(std::vector<double> values);
 // common.warmup untimed runs. `work` must not open GpuProfiler scopes (queries cannot nest).
 // On a software renderer (llvmpipe) the wall clock around glFinish is used instead.
 double gpuMedianMs(const Common& common, const std::function<void()>& work);
+
+// Per-pass times of a run of profiled frames (balls steps, renderer frames): `frame` is called
+// warmup + timed times, each inside one GpuProfiler frame; the warm-up frames are not kept.
+struct PassTimes {
+  std::map<std::string, std::vector<double>> passes;  // GPU ms per timed frame, by scope name
+  std::vector<double> totals;                         // the scopes' sum per timed frame
+  std::vector<double> wall;                           // ms around glFinish per timed frame, on a software renderer only
+  bool has(const std::string& pass) const { return passes.count(pass) > 0; }
+  double median(const std::string& pass) const;  // 0 when the pass never ran
+  double frameMs() const;                        // median frame: wall clock on software, else GPU
+};
+PassTimes timePasses(int warmup, int timed, const std::function<void(gl::GpuProfiler&)>& frame);
 
 // True on llvmpipe / softpipe, whose GL timer queries do not measure execution.
 bool softwareRenderer();

@@ -2,9 +2,7 @@
 // renderer (scene, gbuffer, thickness, blur, compose) in both modes, simulation excluded. The
 // balls are the scene's (--n sets the count of lattice scenes), settled for a few steps first so
 // they are not a perfect lattice, and seen from the scene's camera.
-#include <chrono>
 #include <cstdio>
-#include <map>
 #include <regex>
 
 #include "base/error.h"
@@ -39,7 +37,6 @@ int run(Env& env, const Options& o) {
   ballsView(scene, look, camera);
   const glm::ivec2 image = parseImage(o.image);
   const bool lattice = base.fill == balls::Fill::Lattice;
-  const bool software = softwareRenderer();
   std::printf("render benchmark on %s: scene %s, %dx%d, %d settling steps, medians of %d frames\n", env.device.c_str(),
               scene.name.c_str(), image.x, image.y, o.settle, env.common.repeats);
   Table table({"balls", "mode", "scene ms", "gbuffer ms", "thickness ms", "blur ms", "compose ms", "frame ms"});
@@ -55,37 +52,11 @@ int run(Env& env, const Options& o) {
     view.camera().params() = camera;
     for (BallsMode mode : {BallsMode::Balls, BallsMode::Water}) {
       view.params().mode = mode;
-      gl::GpuProfiler profiler;
-      std::vector<double> wall;
-      for (int frame = 0; frame < env.common.warmup + env.common.repeats; ++frame) {
-        const bool timed = frame >= env.common.warmup;
-        if (software) glFinish();
-        const auto start = std::chrono::steady_clock::now();
-        profiler.beginFrame();
-        view.render(model, target, profiler);
-        profiler.endFrame();
-        if (software) glFinish();
-        if (timed && software)
-          wall.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-        if (frame + 1 == env.common.warmup) {
-          profiler.finish();
-          profiler.takeCompleted();  // warm-up frames are not timed
-        }
-      }
-      profiler.finish();
-      std::map<std::string, std::vector<double>> passes;
-      std::vector<double> totals;
-      for (const auto& frame : profiler.takeCompleted()) {
-        double total = 0;
-        for (const auto& [name, ms] : frame.passes) {
-          passes[name].push_back(ms);
-          total += ms;
-        }
-        totals.push_back(total);
-      }
+      const PassTimes t =
+          timePasses(env.common.warmup, env.common.repeats, [&](gl::GpuProfiler& p) { view.render(model, target, p); });
       std::vector<std::string> row = {std::to_string(model.count()), kBallsModeNames[int(mode)]};
-      for (const char* pass : kPasses) row.push_back(passes.count(pass) ? fixed(median(passes[pass]), 4) : "-");
-      row.push_back(fixed(software ? median(wall) : median(totals), 4));
+      for (const char* pass : kPasses) row.push_back(t.has(pass) ? fixed(t.median(pass), 4) : "-");
+      row.push_back(fixed(t.frameMs(), 4));
       table.add(row);
     }
   }
