@@ -14,6 +14,7 @@
 // Every number is the median of --repeats GL_TIME_ELAPSED queries after --warmup untimed runs.
 #include <chrono>
 #include <cmath>
+#include <iterator>
 #include <random>
 #include <sstream>
 
@@ -161,30 +162,28 @@ std::string checkGrid(const grid::UniformGrid& grid, const std::vector<glm::vec4
   return "";
 }
 
+// The main table's columns; a row that was not measured is N, ppc and a note, the rest blank.
+const char* const kColumns[] = {
+    "N",          "cells",        "ppc",      "count_ms", "scan_ms",   "reorder_ms",   "total_ms",
+    "sorted_ms",  "scanN_ms",     "naive_ms", "copy_ms",  "scan_GBps", "reorder_GBps", "copy_GBps",
+    "scan/copy%", "naive/scan_x", "grid_MiB", "note"};
+
+std::vector<std::string> noteRow(std::size_t n, const std::string& ppc, const std::string& note) {
+  std::vector<std::string> row(std::size(kColumns));
+  row.front() = std::to_string(n);
+  row[2] = ppc;
+  row.back() = note;
+  return row;
+}
+
 std::vector<std::string> runRow(Env& env, const GridOptions& opt, const grid::ScanConfig& scanShape, bool wallClock,
                                 std::size_t n, double perCell) {
   const std::size_t limit = grid::maxStorageBlockBytes();
   const std::string nText = std::to_string(n);
   if (n * sizeof(glm::vec4) > limit)
-    return {nText,
-            "",
-            "",
-            "",
-            "",
-            "",
-            "",
-            "",
-            "",
-            "",
-            "",
-            "",
-            "",
-            "",
-            "",
-            "",
-            "",
-            "skipped: " + std::to_string(n * sizeof(glm::vec4) >> 20) +
-                " MiB of positions exceed this driver's SSBO limit of " + std::to_string(limit >> 20) + " MiB"};
+    return noteRow(n, "",
+                   "skipped: " + std::to_string(n * sizeof(glm::vec4) >> 20) +
+                       " MiB of positions exceed this driver's SSBO limit of " + std::to_string(limit >> 20) + " MiB");
   // The scan target is stated for N uint32: scan, naive scan and copy of exactly those bytes,
   // timed first, before the grid's large buffers exist (measured after them, on the H100 both
   // the scan and the copy of 16M words ran 2-3x slower: the driver's memory placement).
@@ -276,17 +275,14 @@ int runGridBench(Env& env, const GridOptions& opt) {
               wallClock ? "WALL CLOCK around glFinish (this driver's GL timer queries are not meaningful)"
                         : "GL_TIME_ELAPSED queries");
   std::fflush(stdout);
-  Table table({"N", "cells", "ppc", "count_ms", "scan_ms", "reorder_ms", "total_ms", "sorted_ms", "scanN_ms",
-               "naive_ms", "copy_ms", "scan_GBps", "reorder_GBps", "copy_GBps", "scan/copy%", "naive/scan_x",
-               "grid_MiB", "note"});
+  Table table(std::vector<std::string>(std::begin(kColumns), std::end(kColumns)));
   for (std::size_t n : sizes) {
     if (n == 0 || n > grid::PrefixScan::kMaxCount) throw Error("--n: sizes must be between 1 and 2^31");
     for (double ppc : perCell) {
       try {
         table.add(runRow(env, opt, shapes[0], wallClock, n, ppc));
       } catch (const Error& e) {  // e.g. out of GPU memory: report the row, keep going
-        table.add({std::to_string(n), "", fixed(ppc, 2), "", "", "", "", "", "", "", "", "", "", "", "", "", "",
-                   std::string("error: ") + e.what()});
+        table.add(noteRow(n, fixed(ppc, 2), std::string("error: ") + e.what()));
       }
     }
   }
