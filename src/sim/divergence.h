@@ -5,8 +5,13 @@
 // be undone exactly.
 #pragma once
 
+#include <array>
+#include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
+
+#include "gl/async_readback.h"
 
 namespace tidepool {
 
@@ -19,6 +24,29 @@ struct Health {
 struct DivergenceReport {
   std::string message;  // what failed, with method and time step, and what to do
   double time = 0;      // simulated seconds of the failed check
+};
+
+// The watch's timing, shared by the models: a check every `interval` frames, never two in flight,
+// none while `allowed` is false (after a divergence, with nothing to watch). A model's check
+// reduces its state into a health buffer whose first four 32-bit words come back here.
+class CheckCycle {
+ public:
+  using Words = std::array<std::uint32_t, 4>;
+  using Judge = std::function<void(const Words& words, double time)>;  // time: of the state checked
+
+  explicit CheckCycle(int interval) : m_interval(interval) {}
+  // Once per frame: a finished check goes to judge(); then, when one is due, start() runs the
+  // model's reduction into `health` (and copies the state it judges) and the read-back begins.
+  void frame(double time, bool allowed, const Judge& judge, const std::function<void()>& start,
+             const gl::Buffer& health);
+  void flush(const Judge& judge);  // waits for the check in flight and judges it
+  void restart();                  // drops the check in flight (reset, recovery); counts from 0
+
+ private:
+  gl::AsyncReadback m_readback;
+  double m_time = 0;  // of the state the check in flight judges
+  int m_interval;
+  int m_frames = 0;
 };
 
 }  // namespace tidepool

@@ -14,7 +14,6 @@ namespace {
 constexpr float kPi = 3.14159265358979f;
 constexpr int kGroup = 128;                                        // local size of the balls kernels
 constexpr int kStatsValues = 10;                                   // per work group, see shaders/balls/stats.comp
-constexpr int kCheckInterval = 8;                                  // frames between divergence checks
 constexpr std::size_t kMaxCheckpointBalls = std::size_t(4) << 20;  // larger runs keep no copy to go back to
 
 std::string mib(std::size_t bytes) { return std::to_string((bytes + (1 << 20) - 1) >> 20) + " MiB"; }
@@ -70,9 +69,7 @@ void Balls::reset() {
   m_tapNextLayer = 0;
   m_hasGood = false;
   m_divergence.reset();
-  m_framesSinceCheck = 0;
-  std::vector<std::byte> discard;
-  m_readback.wait(discard);
+  m_checks.restart();
   m_pos[0].upload(water.data(), water.size() * sizeof(glm::vec4));
   m_vel[0].fillZero();
   m_acc.fillZero();
@@ -315,33 +312,32 @@ void Balls::step(gl::GpuProfiler& profiler) {
 double Balls::speedBound() const { return 2.0 * m_radius / m_params.dt; }
 
 void Balls::watch() {
-  std::vector<std::byte> bytes;
-  if (m_readback.poll(bytes)) {
-    GLuint v[4];
-    std::memcpy(v, bytes.data(), sizeof v);
-    judge(v, m_pendingTime);
-  }
-  if (m_readback.pending() || ++m_framesSinceCheck < kCheckInterval || m_divergence || m_count == 0) return;
-  m_framesSinceCheck = 0;
-  m_health.fillZero();
-  gl::Program& p = m_shaders.program({"balls/health.comp"});
-  p.use();
-  p.set("uCount", GLuint(m_count));
-  p.set("uWallMin", m_wallMin);
-  p.set("uWallMax", m_wallMax);
-  positions().bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_POS_IN);
-  velocities().bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VEL_IN);
-  m_health.bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_STATS);
-  p.dispatchThreads(m_count);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  if (m_pendingPos) {
-    const std::size_t bytes = m_count * sizeof(glm::vec4);
-    m_ops.copy(positions(), m_pendingPos, bytes);
-    m_ops.copy(velocities(), m_pendingVel, bytes);
-  }
-  m_pendingTime = m_time;
-  m_pendingCount = m_count;
-  m_readback.request(m_health, m_health.size());
+  m_checks.frame(
+      m_time, !m_divergence && m_count > 0, judgeFn(),
+      [this] {
+        m_health.fillZero();
+        gl::Program& p = m_shaders.program({"balls/health.comp"});
+        p.use();
+        p.set("uCount", GLuint(m_count));
+        p.set("uWallMin", m_wallMin);
+        p.set("uWallMax", m_wallMax);
+        positions().bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_POS_IN);
+        velocities().bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VEL_IN);
+        m_health.bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_STATS);
+        p.dispatchThreads(m_count);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        if (m_pendingPos) {
+          const std::size_t bytes = m_count * sizeof(glm::vec4);
+          m_ops.copy(positions(), m_pendingPos, bytes);
+          m_ops.copy(velocities(), m_pendingVel, bytes);
+        }
+        m_pendingCount = m_count;
+      },
+      m_health);
+}
+
+CheckCycle::Judge Balls::judgeFn() {
+  return [this](const CheckCycle::Words& v, double time) { judge(v.data(), time); };
 }
 
 void Balls::judge(const GLuint v[4], double time) {
@@ -382,20 +378,11 @@ bool Balls::recover() {
   m_params.dt *= 0.5f;
   m_params.substeps = std::min(m_params.substeps * 2, 1000);  // same simulated time per frame
   m_divergence.reset();
-  m_framesSinceCheck = 0;
-  std::vector<std::byte> discard;
-  m_readback.wait(discard);
+  m_checks.restart();
   return true;
 }
 
-void Balls::flushChecks() {
-  if (!m_readback.pending()) return;
-  std::vector<std::byte> bytes;
-  m_readback.wait(bytes);
-  GLuint v[4];
-  std::memcpy(v, bytes.data(), sizeof v);
-  judge(v, m_pendingTime);
-}
+void Balls::flushChecks() { m_checks.flush(judgeFn()); }
 
 Stats Balls::stats() {
   Stats st;

@@ -10,7 +10,6 @@
 #include <optional>
 #include <string>
 
-#include "gl/async_readback.h"
 #include "gl/buffer.h"
 #include "gl/buffer_ops.h"
 #include "gl/gpu_profiler.h"
@@ -93,6 +92,7 @@ class Balls {
   void emitFromTap();           // appends a layer of balls when the jet has advanced one spacing
   void watch();                 // polls the check in flight, starts the next one
   void judge(const GLuint values[4], double time);
+  CheckCycle::Judge judgeFn();  // judge() for the watch's CheckCycle
   void updateWalls();
   std::vector<gl::ShaderDefine> defines(bool verlet) const;
   void bindCommon(gl::Program& p) const;
@@ -119,11 +119,10 @@ class Balls {
   bool m_trackOrder = false, m_accValid = false;
   // Divergence watch: reduced values, the state copied at the check, the last state judged good.
   gl::Buffer m_health, m_pendingPos, m_pendingVel, m_goodPos, m_goodVel;
-  gl::AsyncReadback m_readback;
-  double m_pendingTime = 0, m_goodTime = 0;
+  CheckCycle m_checks{8};  // a check every 8 frames
+  double m_goodTime = 0;
   std::size_t m_pendingCount = 0, m_goodCount = 0;
   bool m_hasGood = false;
-  int m_framesSinceCheck = 0;
   std::optional<DivergenceReport> m_divergence;
 };
 

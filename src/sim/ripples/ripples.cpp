@@ -9,8 +9,7 @@
 
 namespace tidepool::ripples {
 namespace {
-constexpr int kTile = 16;          // work-group edge of step.comp and touch.comp
-constexpr int kCheckInterval = 8;  // frames between divergence checks
+constexpr int kTile = 16;  // work-group edge of step.comp and touch.comp
 
 std::string fmt(const char* format, double a, double b = 0) {
   char buf[512];
@@ -47,9 +46,7 @@ void Ripples::reset() {
   m_time = 0;
   m_hasGood = false;
   m_divergence.reset();
-  m_framesSinceCheck = 0;
-  std::vector<std::byte> discard;
-  m_readback.wait(discard);  // a check of the old state must not judge the new one
+  m_checks.restart();
 }
 
 gl::Program& Ripples::stepProgram() {
@@ -135,28 +132,28 @@ double Ripples::heightBound() const {
 }
 
 void Ripples::watch() {
-  std::vector<std::byte> bytes;
-  if (m_readback.poll(bytes)) {
-    GLuint v[4];
-    std::memcpy(v, bytes.data(), sizeof v);
-    float maxH = 0, maxV = 0;
+  m_checks.frame(
+      m_time, !m_divergence, judgeFn(),
+      [this] {
+        m_health.fillZero();
+        gl::Program& p = m_shaders.program({"ripples/health.comp"});
+        p.use();
+        p.set("uCells", GLuint(m_width * m_height));
+        m_state[m_current].bindBase(GL_SHADER_STORAGE_BUFFER, RIPPLES_STATE_IN);
+        m_health.bindBase(GL_SHADER_STORAGE_BUFFER, RIPPLES_HEALTH);
+        p.dispatchThreads(std::size_t(m_width) * m_height);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        m_ops.copy(m_state[m_current], m_pending, m_pending.size());  // the state this check judges
+      },
+      m_health);
+}
+
+CheckCycle::Judge Ripples::judgeFn() {
+  return [this](const CheckCycle::Words& v, double time) {
+    float maxH = 0;
     std::memcpy(&maxH, &v[0], sizeof maxH);
-    std::memcpy(&maxV, &v[1], sizeof maxV);
-    judge({m_pendingTime, double(v[2]), double(maxH)});
-  }
-  if (m_readback.pending() || ++m_framesSinceCheck < kCheckInterval || m_divergence) return;
-  m_framesSinceCheck = 0;
-  m_health.fillZero();
-  gl::Program& p = m_shaders.program({"ripples/health.comp"});
-  p.use();
-  p.set("uCells", GLuint(m_width * m_height));
-  m_state[m_current].bindBase(GL_SHADER_STORAGE_BUFFER, RIPPLES_STATE_IN);
-  m_health.bindBase(GL_SHADER_STORAGE_BUFFER, RIPPLES_HEALTH);
-  p.dispatchThreads(std::size_t(m_width) * m_height);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  m_ops.copy(m_state[m_current], m_pending, m_pending.size());  // the state this check judges
-  m_pendingTime = m_time;
-  m_readback.request(m_health, m_health.size());
+    judge({time, double(v[2]), double(maxH)});
+  };
 }
 
 void Ripples::judge(const Health& h) {
@@ -190,22 +187,11 @@ bool Ripples::recover() {
   else
     m_params.substeps = std::min(m_params.substeps * 2, 256);
   m_divergence.reset();
-  m_framesSinceCheck = 0;
-  std::vector<std::byte> discard;
-  m_readback.wait(discard);
+  m_checks.restart();
   return true;
 }
 
-void Ripples::flushChecks() {
-  std::vector<std::byte> bytes;
-  if (!m_readback.pending()) return;
-  m_readback.wait(bytes);
-  GLuint v[4];
-  std::memcpy(v, bytes.data(), sizeof v);
-  float maxH = 0;
-  std::memcpy(&maxH, &v[0], sizeof maxH);
-  judge({m_pendingTime, double(v[2]), double(maxH)});
-}
+void Ripples::flushChecks() { m_checks.flush(judgeFn()); }
 
 void Ripples::touch(float x, float y, float radius, float depth) {
   gl::Program& p = m_shaders.program({"ripples/touch.comp"});

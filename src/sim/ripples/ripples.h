@@ -10,7 +10,6 @@
 #include <random>
 #include <string>
 
-#include "gl/async_readback.h"
 #include "gl/buffer.h"
 #include "gl/buffer_ops.h"
 #include "gl/gpu_profiler.h"
@@ -54,7 +53,8 @@ class Ripples {
   void allocate();
   void watch();  // polls the check in flight, starts the next one
   void judge(const Health& health);
-  void pushBody(double dt);  // the sphere's displacement change over the next step
+  CheckCycle::Judge judgeFn();  // decodes the health words for judge()
+  void pushBody(double dt);     // the sphere's displacement change over the next step
   gl::Program& stepProgram();
 
   gl::ShaderLibrary& m_shaders;
@@ -69,10 +69,9 @@ class Ripples {
   double m_rainDebt = 0;
   // Divergence watch: reduced values, the state copied at the check, the last state judged good.
   gl::Buffer m_health, m_pending, m_good;
-  gl::AsyncReadback m_readback;
-  double m_pendingTime = 0, m_goodTime = 0;
+  CheckCycle m_checks{8};  // a check every 8 frames
+  double m_goodTime = 0;
   bool m_hasGood = false;
-  int m_framesSinceCheck = 0;
   double m_lastDt = 0;
   std::optional<DivergenceReport> m_divergence;
   double m_lastMaxHeight = NAN;
