@@ -12,6 +12,7 @@
 // Each row's results are compared with the CPU after timing (note column; --no-check skips it).
 // --scan-shapes 256x4,512x8,... adds a table of the N-uint32 scan per work-group shape.
 // Every number is the median of --repeats GL_TIME_ELAPSED queries after --warmup untimed runs.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iterator>
@@ -115,14 +116,25 @@ std::string shapeText(const grid::ScanConfig& c) {
   return std::to_string(c.groupSize) + "x" + std::to_string(c.vecsPerThread) + (c.propagate ? "p" : "");
 }
 
+// The buffers of the scans and copies of N uint32, allocated once for the largest N before
+// anything else and shared by every row. Allocated per row instead, on the H100 the 16M-word
+// buffers placed after a row's 16M-particle random reorder ran the scan (and the naive scan)
+// 2-3x slower than the same kernels on buffers placed first: the driver's memory placement.
+struct WordBuffers {
+  explicit WordBuffers(std::size_t maxN) : in(maxN * 4), out((maxN + 1) * 4), copy(maxN * 4) {}
+  gl::Buffer in, out, copy;
+};
+
 // Scan of N uint32 with each shape against the copy of the same bytes (only with several shapes).
-void addShapeRows(Env& env, Table& table, bool wallClock, std::size_t n, const std::vector<grid::ScanConfig>& shapes) {
+void addShapeRows(Env& env, Table& table, WordBuffers& words, bool wallClock, std::size_t n,
+                  const std::vector<grid::ScanConfig>& shapes) {
   if ((n + 1) * 4 > grid::maxStorageBlockBytes()) return;
   std::vector<uint32_t> values(n);
   std::mt19937 rng{uint32_t(n)};
   uint64_t sum = 0;
   for (uint32_t& v : values) sum += v = rng() % 16;
-  gl::Buffer in(n * 4, values.data()), out((n + 1) * 4), copy(n * 4);
+  words.in.upload(values.data(), n * 4);
+  gl::Buffer &in = words.in, &out = words.out, &copy = words.copy;
   const gl::BufferOps ops(env.shaders);
   const double copyMs = medianMs(env.common, wallClock, [&] { ops.copy(in, copy, n * 4); });
   const double copyGbps = gbps(8.0 * n, copyMs);
@@ -176,8 +188,8 @@ std::vector<std::string> noteRow(std::size_t n, const std::string& ppc, const st
   return row;
 }
 
-std::vector<std::string> runRow(Env& env, const GridOptions& opt, const grid::ScanConfig& scanShape, bool wallClock,
-                                std::size_t n, double perCell) {
+std::vector<std::string> runRow(Env& env, const GridOptions& opt, const grid::ScanConfig& scanShape, WordBuffers& words,
+                                bool wallClock, std::size_t n, double perCell) {
   const std::size_t limit = grid::maxStorageBlockBytes();
   const std::string nText = std::to_string(n);
   if (n * sizeof(glm::vec4) > limit)
@@ -185,13 +197,13 @@ std::vector<std::string> runRow(Env& env, const GridOptions& opt, const grid::Sc
                    "skipped: " + std::to_string(n * sizeof(glm::vec4) >> 20) +
                        " MiB of positions exceed this driver's SSBO limit of " + std::to_string(limit >> 20) + " MiB");
   // The scan target is stated for N uint32: scan, naive scan and copy of exactly those bytes,
-  // timed first, before the grid's large buffers exist (measured after them, on the H100 both
-  // the scan and the copy of 16M words ran 2-3x slower: the driver's memory placement).
+  // timed first, in the buffers allocated at the start (WordBuffers).
   std::mt19937 scanRng(uint32_t(n) * 7u + 1u);
   std::string scanNote;
   std::vector<uint32_t> values(n);
   for (uint32_t& v : values) v = scanRng() % 16;
-  gl::Buffer in(n * 4, values.data()), out((n + 1) * 4), copy(n * 4);
+  words.in.upload(values.data(), n * 4);
+  gl::Buffer &in = words.in, &out = words.out, &copy = words.copy;
   grid::PrefixScan scan(env.shaders, scanShape);
   grid::NaiveScan naive(env.shaders);
   scan.reserve(n);
@@ -275,12 +287,17 @@ int runGridBench(Env& env, const GridOptions& opt) {
               wallClock ? "WALL CLOCK around glFinish (this driver's GL timer queries are not meaningful)"
                         : "GL_TIME_ELAPSED queries");
   std::fflush(stdout);
-  Table table(std::vector<std::string>(std::begin(kColumns), std::end(kColumns)));
+  std::size_t maxWords = 0;
   for (std::size_t n : sizes) {
     if (n == 0 || n > grid::PrefixScan::kMaxCount) throw Error("--n: sizes must be between 1 and 2^31");
+    if ((n + 1) * 4 <= grid::maxStorageBlockBytes()) maxWords = std::max(maxWords, n);
+  }
+  WordBuffers words(maxWords);
+  Table table(std::vector<std::string>(std::begin(kColumns), std::end(kColumns)));
+  for (std::size_t n : sizes) {
     for (double ppc : perCell) {
       try {
-        table.add(runRow(env, opt, shapes[0], wallClock, n, ppc));
+        table.add(runRow(env, opt, shapes[0], words, wallClock, n, ppc));
       } catch (const Error& e) {  // e.g. out of GPU memory: report the row, keep going
         table.add(noteRow(n, fixed(ppc, 2), std::string("error: ") + e.what()));
       }
@@ -292,7 +309,7 @@ int runGridBench(Env& env, const GridOptions& opt) {
     std::printf(
         "\nscan of N uint32 by work-group shape (invocations x uvec4 per invocation; p: scan-then-propagate)\n");
     Table byShape({"N", "shape", "dispatches", "scan_ms", "scan_GBps", "copy_GBps", "scan/copy%", "note"});
-    for (std::size_t n : sizes) addShapeRows(env, byShape, wallClock, n, shapes);
+    for (std::size_t n : sizes) addShapeRows(env, byShape, words, wallClock, n, shapes);
     byShape.print();
   }
   return 0;
