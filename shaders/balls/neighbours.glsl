@@ -2,8 +2,7 @@
 // uniform grid, and the obstacle's fixed particles, found in the obstacle's own (spinning) frame
 // through its own grid. The including kernel declares
 //   void onContact(vec3 n, float overlap, vec3 otherVelocity, float massRatio, float share);
-// before including this file (n points from the other body to the ball, world frame), and runs
-// in work groups of NEIGHBOUR_GROUP invocations (local_size_x = NEIGHBOUR_GROUP).
+// before including this file (n points from the other body to the ball, world frame).
 #ifndef BALLS_NEIGHBOURS_GLSL
 #define BALLS_NEIGHBOURS_GLSL
 
@@ -23,29 +22,8 @@ uniform float uObstacleSpin;       // rad/s
 
 uniform float uRadius;  // m
 
-// Ball-ball contacts are found in two phases. The search tests ~30-100 candidates per ball, a
-// fifth of them touching; were each contact handled where it is found, every iteration of a warp
-// would pay for the contact law (some lane nearly always touches). So the search only notes the
-// touching balls in a per-invocation list in shared memory ([slot][invocation]: no bank
-// conflicts), and the contacts are handled from the list, in the order found (the same sums as
-// handling them in place). A full list is handled and emptied mid-search.
-#define CONTACT_LIST 24u
-shared uint sContactList[CONTACT_LIST * NEIGHBOUR_GROUP];
-
-void handleBallContacts(uint lane, uint count, vec3 p) {
-  const float reach = 2.0 * uRadius;
-  for (uint k = 0u; k < count; ++k) {
-    const uint j = sContactList[k * uint(NEIGHBOUR_GROUP) + lane];
-    const vec3 d = p - posIn[j].xyz;
-    const float dist = sqrt(dot(d, d));
-    onContact(d / dist, reach - dist, velIn[j].xyz, 0.5, 0.5);
-  }
-}
-
 void forEachContact(uint self, vec3 p, vec3 v) {
   const float reach = 2.0 * uRadius;
-  const uint lane = gl_LocalInvocationIndex;
-  uint listed = 0u;
   const ivec3 c = cellCoord(p);
   // Cells are numbered x fastest, so the three cells x-1..x+1 of a row hold one contiguous run
   // of balls: 9 runs instead of 27 cells (fewer cellStart reads and loop heads).
@@ -57,20 +35,14 @@ void forEachContact(uint self, vec3 p, vec3 v) {
       const uint first = cellIndex(row);
       const uint end = cellStart[first + uint(x1 - x0) + 1u];
       for (uint j = cellStart[first]; j < end; ++j) {
+        if (j == self) continue;
         const vec3 d = p - posIn[j].xyz;
         const float dist2 = dot(d, d);
-        // Itself and coincident balls (no normal) have dist2 = 0.
-        if (dist2 < reach * reach && dist2 > 0.0) {
-          if (listed == CONTACT_LIST) {
-            handleBallContacts(lane, listed, p);
-            listed = 0u;
-          }
-          sContactList[listed * uint(NEIGHBOUR_GROUP) + lane] = j;
-          ++listed;
-        }
+        if (dist2 >= reach * reach || dist2 == 0.0) continue;  // coincident balls have no normal
+        const float dist = sqrt(dist2);
+        onContact(d / dist, reach - dist, velIn[j].xyz, 0.5, 0.5);
       }
     }
-  handleBallContacts(lane, listed, p);
 #ifdef HAS_OBSTACLE
   // The ball in the obstacle's frame: rotate by −angle about the vertical axis through the pivot.
   const vec2 cs = uObstacleRotation;

@@ -7,8 +7,7 @@
 //   [9] column height: largest z of balls within 2r of the back (x min) wall (−inf when none)
 #include "balls/bindings.glsl"
 
-#define NEIGHBOUR_GROUP 128
-layout(local_size_x = NEIGHBOUR_GROUP) in;
+layout(local_size_x = 128) in;
 #include "common/index.glsl"
 
 layout(std430, binding = BALLS_POS_IN) readonly buffer PosIn { vec4 posIn[]; };

@@ -16,8 +16,10 @@
 #include <chrono>
 #include <cmath>
 #include <iterator>
+#include <memory>
 #include <random>
 #include <sstream>
+#include <thread>
 
 #include "base/error.h"
 #include "bench/bench.h"
@@ -36,6 +38,7 @@ struct GridOptions {
   int arrays = 2;                    // vec4 arrays reordered (positions, velocities, ...)
   std::string scanShapes = "256x4";  // PrefixScan work-group shapes; the first one is the grid's
   bool noCheck = false;              // skip comparing every row's results with the CPU
+  int settleMs = 0;  // idle time before each row (lets the driver finish freeing the last row's buffers)
 };
 
 // Median time (ms) of `work` over the common repeats after the warmup runs. GPU time from
@@ -116,17 +119,34 @@ std::string shapeText(const grid::ScanConfig& c) {
   return std::to_string(c.groupSize) + "x" + std::to_string(c.vecsPerThread) + (c.propagate ? "p" : "");
 }
 
-// The buffers of the scans and copies of N uint32, allocated once for the largest N before
-// anything else and shared by every row. Allocated per row instead, on the H100 the 16M-word
-// buffers placed after a row's 16M-particle random reorder ran the scan (and the naive scan)
-// 2-3x slower than the same kernels on buffers placed first: the driver's memory placement.
-struct WordBuffers {
-  explicit WordBuffers(std::size_t maxN) : in(maxN * 4), out((maxN + 1) * 4), copy(maxN * 4) {}
+// The scans of N uint32 (one per work-group shape, and the naive one) with their buffers and
+// those of the copy, allocated once for the largest N before anything else and shared by every
+// row. Allocated per row instead, on the H100 the scans of 16M words measured after a row's
+// 16M-particle random reorder ran 2-3x slower (the copy did not): the driver's placement of the
+// new allocations.
+struct WordScans {
+  WordScans(Env& env, const std::vector<grid::ScanConfig>& shapes, std::size_t maxN)
+      : in(maxN * 4), out((maxN + 1) * 4), copy(maxN * 4), naive(env.shaders) {
+    naive.reserve(maxN);
+    for (const grid::ScanConfig& shape : shapes) {
+      try {
+        scans.push_back(std::make_unique<grid::PrefixScan>(env.shaders, shape));
+        scans.back()->reserve(maxN);
+        errors.emplace_back();
+      } catch (const Error& e) {  // an unsupported shape: its rows say why
+        scans.push_back(nullptr);
+        errors.push_back(e.what());
+      }
+    }
+  }
   gl::Buffer in, out, copy;
+  grid::NaiveScan naive;
+  std::vector<std::unique_ptr<grid::PrefixScan>> scans;  // per shape; null where it failed
+  std::vector<std::string> errors;                       // per shape
 };
 
 // Scan of N uint32 with each shape against the copy of the same bytes (only with several shapes).
-void addShapeRows(Env& env, Table& table, WordBuffers& words, bool wallClock, std::size_t n,
+void addShapeRows(Env& env, Table& table, WordScans& words, bool wallClock, std::size_t n,
                   const std::vector<grid::ScanConfig>& shapes) {
   if ((n + 1) * 4 > grid::maxStorageBlockBytes()) return;
   std::vector<uint32_t> values(n);
@@ -138,30 +158,31 @@ void addShapeRows(Env& env, Table& table, WordBuffers& words, bool wallClock, st
   const gl::BufferOps ops(env.shaders);
   const double copyMs = medianMs(env.common, wallClock, [&] { ops.copy(in, copy, n * 4); });
   const double copyGbps = gbps(8.0 * n, copyMs);
-  for (const grid::ScanConfig& shape : shapes) {
-    try {
-      grid::PrefixScan scan(env.shaders, shape);
-      scan.reserve(n);
-      const double ms = medianMs(env.common, wallClock, [&] { scan.run(in, out, n); });
-      const bool right = out.read<uint32_t>(1, n)[0] == uint32_t(sum);
-      const double g = gbps(8.0 * n + 4, ms);
-      table.add({std::to_string(n), shapeText(shape), std::to_string(scan.dispatchesFor(n)), fixed(ms, 4), fixed(g, 1),
-                 fixed(copyGbps, 1), fixed(copyGbps > 0 ? 100.0 * g / copyGbps : 0, 1), right ? "" : "WRONG total"});
-    } catch (const Error& e) {
-      table.add({std::to_string(n), shapeText(shape), "", "", "", "", "", std::string("error: ") + e.what()});
+  for (std::size_t s = 0; s < shapes.size(); ++s) {
+    grid::PrefixScan* scan = words.scans[s].get();
+    if (!scan) {
+      table.add({std::to_string(n), shapeText(shapes[s]), "", "", "", "", "", "error: " + words.errors[s]});
+      continue;
     }
+    const double ms = medianMs(env.common, wallClock, [&] { scan->run(in, out, n); });
+    const bool right = ops.readBack<uint32_t>(out, 1, n)[0] == uint32_t(sum);
+    const double g = gbps(8.0 * n + 4, ms);
+    table.add({std::to_string(n), shapeText(shapes[s]), std::to_string(scan->dispatchesFor(n)), fixed(ms, 4),
+               fixed(g, 1), fixed(copyGbps, 1), fixed(copyGbps > 0 ? 100.0 * g / copyGbps : 0, 1),
+               right ? "" : "WRONG total"});
   }
 }
 
 // Compares the grid after build + reorder with the CPU (grid_reference.h); "" when right.
 // Every array holds the positions, so dst[0] must be the positions in cell order.
-std::string checkGrid(const grid::UniformGrid& grid, const std::vector<glm::vec4>& pos, const gl::Buffer& sorted) {
+std::string checkGrid(const gl::BufferOps& ops, const grid::UniformGrid& grid, const std::vector<glm::vec4>& pos,
+                      const gl::Buffer& sorted) {
   const std::size_t n = pos.size();
   const std::vector<uint32_t> counts = grid::reference::histogram(grid.shape(), pos);
-  if (grid.cellCount().read<uint32_t>(grid.cells()) != counts) return "WRONG cell counts; ";
+  if (ops.readBack<uint32_t>(grid.cellCount(), grid.cells()) != counts) return "WRONG cell counts; ";
   const std::vector<uint32_t> starts = grid::reference::exclusiveScan(counts);
-  if (grid.cellStart().read<uint32_t>(grid.cells() + 1) != starts) return "WRONG cellStart; ";
-  const std::vector<glm::vec4> got = sorted.read<glm::vec4>(n);
+  if (ops.readBack<uint32_t>(grid.cellStart(), grid.cells() + 1) != starts) return "WRONG cellStart; ";
+  const std::vector<glm::vec4> got = ops.readBack<glm::vec4>(sorted, n);
   std::vector<bool> seen(n, false);
   std::size_t cell = 0;
   for (std::size_t j = 0; j < n; ++j) {
@@ -188,8 +209,8 @@ std::vector<std::string> noteRow(std::size_t n, const std::string& ppc, const st
   return row;
 }
 
-std::vector<std::string> runRow(Env& env, const GridOptions& opt, const grid::ScanConfig& scanShape, WordBuffers& words,
-                                bool wallClock, std::size_t n, double perCell) {
+std::vector<std::string> runRow(Env& env, const GridOptions& opt, WordScans& words, bool wallClock, std::size_t n,
+                                double perCell) {
   const std::size_t limit = grid::maxStorageBlockBytes();
   const std::string nText = std::to_string(n);
   if (n * sizeof(glm::vec4) > limit)
@@ -197,22 +218,22 @@ std::vector<std::string> runRow(Env& env, const GridOptions& opt, const grid::Sc
                    "skipped: " + std::to_string(n * sizeof(glm::vec4) >> 20) +
                        " MiB of positions exceed this driver's SSBO limit of " + std::to_string(limit >> 20) + " MiB");
   // The scan target is stated for N uint32: scan, naive scan and copy of exactly those bytes,
-  // timed first, in the buffers allocated at the start (WordBuffers).
+  // timed first, in the buffers allocated at the start (WordScans).
   std::mt19937 scanRng(uint32_t(n) * 7u + 1u);
   std::string scanNote;
   std::vector<uint32_t> values(n);
   for (uint32_t& v : values) v = scanRng() % 16;
   words.in.upload(values.data(), n * 4);
   gl::Buffer &in = words.in, &out = words.out, &copy = words.copy;
-  grid::PrefixScan scan(env.shaders, scanShape);
-  grid::NaiveScan naive(env.shaders);
-  scan.reserve(n);
+  if (!words.scans[0]) throw Error(words.errors[0]);
+  grid::PrefixScan& scan = *words.scans[0];
+  grid::NaiveScan& naive = words.naive;
   const std::vector<uint32_t> want = opt.noCheck ? std::vector<uint32_t>() : grid::reference::exclusiveScan(values);
-  const double uscanMs = medianMs(env.common, wallClock, [&] { scan.run(in, out, n); });
-  if (!opt.noCheck && out.read<uint32_t>(n + 1) != want) scanNote += "WRONG scan; ";
-  const double naiveMs = medianMs(env.common, wallClock, [&] { naive.run(in, out, n); });
-  if (!opt.noCheck && out.read<uint32_t>(n + 1) != want) scanNote += "WRONG naive scan; ";
   const gl::BufferOps ops(env.shaders);
+  const double uscanMs = medianMs(env.common, wallClock, [&] { scan.run(in, out, n); });
+  if (!opt.noCheck && ops.readBack<uint32_t>(out, n + 1) != want) scanNote += "WRONG scan; ";
+  const double naiveMs = medianMs(env.common, wallClock, [&] { naive.run(in, out, n); });
+  if (!opt.noCheck && ops.readBack<uint32_t>(out, n + 1) != want) scanNote += "WRONG naive scan; ";
   const double copyMs = medianMs(env.common, wallClock, [&] { ops.copy(in, copy, n * 4); });
 
   // A cube of side s cells of size 1 holding about perCell particles per cell.
@@ -241,7 +262,7 @@ std::vector<std::string> runRow(Env& env, const GridOptions& opt, const grid::Sc
     grid.build(positions, n);
     grid.reorder(positions, arrays);
   });
-  std::string note = (opt.noCheck ? "" : checkGrid(grid, pos, dst[0])) + scanNote;
+  std::string note = (opt.noCheck ? "" : checkGrid(ops, grid, pos, dst[0])) + scanNote;
   if (note.empty() && !opt.noCheck) note = "checked";
   // A running simulation rebuilds from last step's cell order, barely changed: the same build
   // with the arrays already sorted (dst) as input, moving them back into src.
@@ -292,12 +313,14 @@ int runGridBench(Env& env, const GridOptions& opt) {
     if (n == 0 || n > grid::PrefixScan::kMaxCount) throw Error("--n: sizes must be between 1 and 2^31");
     if ((n + 1) * 4 <= grid::maxStorageBlockBytes()) maxWords = std::max(maxWords, n);
   }
-  WordBuffers words(maxWords);
+  WordScans words(env, shapes, maxWords);
   Table table(std::vector<std::string>(std::begin(kColumns), std::end(kColumns)));
   for (std::size_t n : sizes) {
     for (double ppc : perCell) {
       try {
-        table.add(runRow(env, opt, shapes[0], words, wallClock, n, ppc));
+        glFinish();
+        std::this_thread::sleep_for(std::chrono::milliseconds(opt.settleMs));
+        table.add(runRow(env, opt, words, wallClock, n, ppc));
       } catch (const Error& e) {  // e.g. out of GPU memory: report the row, keep going
         table.add(noteRow(n, fixed(ppc, 2), std::string("error: ") + e.what()));
       }
@@ -328,6 +351,9 @@ Benchmark addGridBench(CLI::App& bench) {
                   "is used in the main table, several add a table comparing them)")
       ->capture_default_str();
   sub->add_flag("--no-check", opt->noCheck, "skip comparing each row's grid and scans with the CPU");
+  sub->add_option("--settle-ms", opt->settleMs, "idle milliseconds before each row")
+      ->check(CLI::Range(0, 60000))
+      ->capture_default_str();
   return {sub, [opt](Env& env) { return runGridBench(env, *opt); }};
 }
 

@@ -12,6 +12,7 @@
 #include <cstdio>
 
 #include "bench/bench.h"
+#include "gl/buffer_ops.h"
 #include "life/bindings.glsl"
 #include "sim/life/life.h"
 
@@ -54,9 +55,9 @@ void bruteForce(gl::ShaderLibrary& shaders, const life::Life& model) {
 
 // Pairs in the full 3x3 block of cells around each particle's cell (clamped at walls, wrapped
 // when looping): the measure, an upper bound of what forces.comp examines.
-double blockPairs(const life::Life& model) {
+double blockPairs(const gl::BufferOps& ops, const life::Life& model) {
   const glm::uvec3 dims = model.grid().dims();
-  const std::vector<GLuint> count = model.grid().cellCount().read<GLuint>(model.grid().cells());
+  const std::vector<GLuint> count = ops.readBack<GLuint>(model.grid().cellCount(), model.grid().cells());
   const bool wrap = model.rules().loopingBorders;
   double total = 0;
   for (int y = 0; y < int(dims.y); ++y)
@@ -88,6 +89,7 @@ int run(Env& env, const LifeOptions& o) {
       "life benchmark on %s (%d species, seed %d, %s, dt 0.025, density 65536 per 1024x576, %d settle "
       "steps, medians of %d)\n",
       env.device.c_str(), o.species, o.seed, o.looping ? "looping" : "walls", o.settle, env.common.repeats);
+  const gl::BufferOps ops(env.shaders);  // read-backs that leave the model's buffers where they are
   Table table({"N", "box", "grid", "pairs/particle", "ms/step", "steps/s", "sort ms", "forces ms", "integrate ms",
                "pairs/s", "3x3 pairs/s"});
   for (std::size_t n : parseSizes(o.sizes)) {
@@ -98,7 +100,7 @@ int run(Env& env, const LifeOptions& o) {
     const double sortMs = gpuMedianMs(env.common, [&] { model.sortByCell(); });
     const double forcesMs = gpuMedianMs(env.common, [&] { model.evaluateForces(); });
     const double pairs = double(model.countCandidatePairs());
-    const double block = blockPairs(model);  // the counts of the last sort, i.e. these positions
+    const double block = blockPairs(ops, model);  // the counts of the last sort, i.e. these positions
     const glm::uvec3 dims = model.grid().dims();
     char box[64], grid[64], rate[32], blockRate[32];
     std::snprintf(box, sizeof box, "%.0fx%.0f", double(model.rules().size.x), double(model.rules().size.y));
@@ -120,9 +122,9 @@ int run(Env& env, const LifeOptions& o) {
       const double gridMs = gpuMedianMs(env.common, [&] { model.computeForces(); });
       // Same positions for both: compare the two results once.
       model.computeForces();
-      const std::vector<glm::vec2> binned = model.accelerations().read<glm::vec2>(n);
+      const std::vector<glm::vec2> binned = ops.readBack<glm::vec2>(model.accelerations(), n);
       const double bruteMs = gpuMedianMs(env.common, [&] { bruteForce(env.shaders, model); });
-      const std::vector<glm::vec2> brute = model.accelerations().read<glm::vec2>(n);
+      const std::vector<glm::vec2> brute = ops.readBack<glm::vec2>(model.accelerations(), n);
       double worst = 0, scale = 0;
       for (std::size_t i = 0; i < n; ++i) {
         worst = std::max(worst, double(glm::length(binned[i] - brute[i])));

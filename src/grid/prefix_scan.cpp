@@ -127,10 +127,14 @@ std::size_t NaiveScan::passesFor(std::size_t n) {
   return std::max<std::size_t>(passes, 1);
 }
 
+void NaiveScan::reserve(std::size_t n) {
+  if (m_temp.size() < (n + 1) * kWord) m_temp = gl::Buffer((n + 1) * kWord);
+}
+
 void NaiveScan::run(const gl::Buffer& in, gl::Buffer& out, std::size_t n) {
   checkSizes("naive scan", in, out, n, m_maxBlockBytes);
   if (in.id() == out.id()) throw Error("naive scan: input and output must be different buffers");
-  if (m_temp.size() < (n + 1) * kWord) m_temp = gl::Buffer((n + 1) * kWord);
+  reserve(n);
   const std::size_t passes = passesFor(n);
   m_pass->use();
   m_pass->set("uCount", uint32_t(n));

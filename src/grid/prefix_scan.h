@@ -80,6 +80,7 @@ class NaiveScan {
 
   // Same contract as PrefixScan::run, but `in` and `out` must be different buffers.
   void run(const gl::Buffer& in, gl::Buffer& out, std::size_t n);
+  void reserve(std::size_t n);                               // allocates the ping-pong buffer for n up front
   std::size_t memoryBytes() const { return m_temp.size(); }  // ping-pong buffer (bytes)
   static std::size_t passesFor(std::size_t n);               // ceil(log2(n + 1)), at least 1
 

@@ -2,8 +2,10 @@
 // uvec4s, the 0..3 trailing words, chunks past the SSBO size limit) and refuse bad sizes.
 #include <gtest/gtest.h>
 
+#include <glm/glm.hpp>
 #include <numeric>
 
+#include "base/error.h"
 #include "gl/buffer.h"
 #include "gl/buffer_ops.h"
 #include "support/gl_test.h"
@@ -46,6 +48,19 @@ TEST_F(BufferOpsTest, CopyMovesExactlyTheWordsAskedFor) {
     for (std::size_t i = 0; i < got.size(); ++i)
       ASSERT_EQ(got[i], i < words ? src[i] : 0u) << "word " << i << " of a " << words << "-word copy";
   }
+}
+
+TEST_F(BufferOpsTest, ReadBackReturnsTheElementsAskedForAndLeavesTheBufferAlone) {
+  const BufferOps ops(shaders());
+  const std::vector<uint32_t> words = sequence(1001, 7);
+  Buffer b{std::span<const uint32_t>(words)};
+  EXPECT_EQ(ops.readBack<uint32_t>(b, 1001), words);
+  EXPECT_EQ(ops.readBack<uint32_t>(b, 1, 1000), std::vector<uint32_t>{1007u});
+  const std::vector<glm::uvec4> quads = ops.readBack<glm::uvec4>(b, 2, 3);  // words 12..19
+  EXPECT_EQ(quads[0], glm::uvec4(19, 20, 21, 22));
+  EXPECT_EQ(quads[1], glm::uvec4(23, 24, 25, 26));
+  EXPECT_EQ(b.read<uint32_t>(1001), words);
+  EXPECT_THROW(ops.readBack<uint32_t>(b, 2, 1000), Error);  // past the end
 }
 
 TEST_F(BufferOpsTest, BuffersBeyondTheStorageBlockLimitAreDoneInChunks) {
