@@ -19,7 +19,6 @@
 #include <memory>
 #include <random>
 #include <sstream>
-#include <thread>
 
 #include "base/error.h"
 #include "bench/bench.h"
@@ -38,7 +37,6 @@ struct GridOptions {
   int arrays = 2;                    // vec4 arrays reordered (positions, velocities, ...)
   std::string scanShapes = "256x4";  // PrefixScan work-group shapes; the first one is the grid's
   bool noCheck = false;              // skip comparing every row's results with the CPU
-  int settleMs = 0;  // idle time before each row (lets the driver finish freeing the last row's buffers)
 };
 
 // Median time (ms) of `work` over the common repeats after the warmup runs. GPU time from
@@ -318,8 +316,6 @@ int runGridBench(Env& env, const GridOptions& opt) {
   for (std::size_t n : sizes) {
     for (double ppc : perCell) {
       try {
-        glFinish();
-        std::this_thread::sleep_for(std::chrono::milliseconds(opt.settleMs));
         table.add(runRow(env, opt, words, wallClock, n, ppc));
       } catch (const Error& e) {  // e.g. out of GPU memory: report the row, keep going
         table.add(noteRow(n, fixed(ppc, 2), std::string("error: ") + e.what()));
@@ -351,9 +347,6 @@ Benchmark addGridBench(CLI::App& bench) {
                   "is used in the main table, several add a table comparing them)")
       ->capture_default_str();
   sub->add_flag("--no-check", opt->noCheck, "skip comparing each row's grid and scans with the CPU");
-  sub->add_option("--settle-ms", opt->settleMs, "idle milliseconds before each row")
-      ->check(CLI::Range(0, 60000))
-      ->capture_default_str();
   return {sub, [opt](Env& env) { return runGridBench(env, *opt); }};
 }
 
