@@ -26,8 +26,8 @@ namespace {
 
 constexpr float kRadius = 0.01f, kGravity = 9.81f;
 constexpr int kLayers = 6;
-constexpr float kDamping = 60.0f;      // 1/s
-constexpr double kSettleTime = 0.25;   // s
+constexpr float kDamping = 60.0f;     // 1/s
+constexpr double kSettleTime = 0.25;  // s
 constexpr float kStepsPerContact = 20;
 
 struct Method {
@@ -83,7 +83,8 @@ Row settle(gl::ShaderLibrary& shaders, int across, const Method& m, double dt) {
                end.maxOverlap <= 1.0;
   const double nan = std::numeric_limits<double>::quiet_NaN();
   row.metrics = {end.nonFinite ? nan : end.maxOverlap, end.nonFinite ? nan : end.meanOverlap, energyDrift,
-                 end.nonFinite ? nan : end.kinetic / (n * kGravity * kRadius), m.contact == balls::Contact::SpringDashpot ? kStepsPerContact * dt : 0.0};
+                 end.nonFinite ? nan : end.kinetic / (n * kGravity * kRadius),
+                 m.contact == balls::Contact::SpringDashpot ? kStepsPerContact * dt : 0.0};
   row.x = row.costMsPerSimS;
   row.y = row.metrics[0];
   std::printf("  %-40s dt = %.3g s: max overlap %.3g r, energy drift %+.3g, %s\n", m.name.c_str(), dt, row.y,
