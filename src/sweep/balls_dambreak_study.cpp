@@ -25,7 +25,7 @@ double timedSteps(balls::Balls& model, long steps);  // balls_studies.cpp
 
 namespace {
 
-constexpr double kEndTime = 2.5, kSampleEvery = 0.1, kEarlyEnd = 1.25;  // T*
+constexpr double kEndTime = 2.5, kSampleEvery = 0.1, kEarlyEnd = 1.2;  // T*
 
 struct Curve {
   std::vector<double> front;  // front / a at each sample time (NaN after a blow-up)
@@ -134,7 +134,7 @@ Result dambreak(Env& env) {
       row.x = row.costMsPerSimS;
       row.y = rms;
       r.rows.push_back(row);
-      std::printf("  %-18s t_c/dt = %3d: RMS front deviation %.3g a (to T* = 1.25: %.3g a), %s\n", m.name.c_str(),
+      std::printf("  %-18s t_c/dt = %3d: RMS front deviation %.3g a (to T* = 1.2: %.3g a), %s\n", m.name.c_str(),
                   perContact, rms, row.metrics[3], row.stable ? "stable" : "UNSTABLE");
       std::fflush(stdout);
     }

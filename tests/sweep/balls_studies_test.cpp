@@ -71,7 +71,7 @@ TEST(BallsStudies, SettleOverlapFallsWithDtAtEachLawsOrder) {
 }
 
 // The surge front converges to the finest-dt reference: over the deterministic first half
-// (T* <= 1.25) the coarsest run deviates most and the rerun at the reference's own dt least.
+// (T* <= 1.2) the coarsest run deviates most and the rerun at the reference's own dt least.
 TEST(BallsStudies, DambreakFrontConvergesToTheFinestDtReference) {
   test::TempDir dir;
   const sweep::Result r = quickStudy(dir, "balls-dambreak");
