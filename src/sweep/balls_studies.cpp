@@ -1,4 +1,5 @@
 // Studies of the balls model: the spring-dashpot restitution against cost, per integrator.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -29,6 +30,26 @@ double msPerStep(gl::ShaderLibrary& shaders, int n, balls::Integrator integrator
                             }) /
          kSteps;
 }
+
+}  // namespace
+
+// GPU ms of `steps` steps of a running model, in chunks (GL timer queries; wall clock between
+// glFinish calls on a software renderer, as bench::gpuMedianMs does). Used by the studies that
+// measure their own runs: the cost is that of the run, contacts and all.
+double timedSteps(balls::Balls& model, long steps) {
+  const bench::Common once{"auto", "", 1, 0};
+  constexpr long kChunk = 500;
+  double ms = 0;
+  for (long done = 0; done < steps; done += kChunk) {
+    const long n = std::min(kChunk, steps - done);
+    ms += bench::gpuMedianMs(once, [&] {
+      for (long i = 0; i < n; ++i) model.stepOnce();
+    });
+  }
+  return ms;
+}
+
+namespace {
 
 Result restitution(Env& env) {
   constexpr float kE = 0.5f, kContactTime = 0.01f;

@@ -108,12 +108,16 @@ Result stability(Env& env) {
 }  // namespace
 
 Study ballsRestitutionStudy();  // balls_studies.cpp
+Study ballsSettleStudy();       // balls_settle_study.cpp
+Study ballsDambreakStudy();     // balls_dambreak_study.cpp
 Study swarmOrbitStudy();        // swarm_studies.cpp
 Study swarmPrecisionStudy();
 
 const std::vector<Study>& studies() {
   static const std::vector<Study> table = {
       ballsRestitutionStudy(),
+      ballsSettleStudy(),
+      ballsDambreakStudy(),
       swarmOrbitStudy(),
       swarmPrecisionStudy(),
       {"ripples-dispersion", "phase-speed error vs cost per Courant number (wave rule)", dispersion},

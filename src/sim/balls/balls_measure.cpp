@@ -94,4 +94,15 @@ double stableStepLimit(gl::ShaderLibrary& shaders, Integrator integrator, double
   return bisectLimit(kSmallest, 2.0, tolerance, stable);
 }
 
+ColumnScales columnScales(const Params& p) {
+  const bool block = p.fill == Fill::Block;
+  const glm::vec3 lo = block ? glm::max(p.fillMin, p.domainMin) : p.domainMin;
+  const glm::vec3 hi = block ? glm::min(p.fillMax, p.domainMax) : p.domainMax;
+  return {hi.x - lo.x, hi.z - lo.z};
+}
+
+double frontOverWidth(const Params& p, const Stats& s, float radius) {
+  return (s.front - p.domainMin.x + radius) / columnScales(p).width;
+}
+
 }  // namespace tidepool::balls

@@ -10,6 +10,10 @@
 #include "sim/balls/balls_params.h"
 
 namespace tidepool::balls {
+struct Stats;  // sim/balls/balls.h
+}
+
+namespace tidepool::balls {
 
 struct Bounce {
   double restitution = -1;  // measured e (−1 when the ball never left the floor)
@@ -31,5 +35,15 @@ double contactGrowthRatio(gl::ShaderLibrary& shaders, Integrator integrator, dou
 // Largest dt / t_c at which the undamped contact's amplitude grows less than 1.5x over 12
 // periods, by bisection to a relative width of `tolerance` (0 when t_c/20 already fails).
 double stableStepLimit(gl::ShaderLibrary& shaders, Integrator integrator, double tolerance = 0.01);
+
+// Dam-break scales of a block fill (clamped to the domain): the column's width a and height h0, m.
+struct ColumnScales {
+  double width = 0, height = 0;
+};
+ColumnScales columnScales(const Params& p);
+
+// Surge front in units of a (as `tidepool validate --probe front`): the surface of the ball that is
+// farthest along x among those within 2r of the floor, measured from the back wall. NaN: none.
+double frontOverWidth(const Params& p, const Stats& s, float radius);
 
 }  // namespace tidepool::balls
