@@ -8,6 +8,8 @@
 #include <sstream>
 
 #include "base/error.h"
+#include "gl/buffer.h"
+#include "gl/buffer_ops.h"
 #include "gl/framebuffer.h"
 
 namespace tidepool::bench {
@@ -48,6 +50,17 @@ double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   const std::size_t n = v.size();
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+void wakeGpu(gl::ShaderLibrary& shaders, double ms) {
+  if (softwareRenderer()) return;
+  const gl::BufferOps ops(shaders);
+  gl::Buffer a(64 << 20), b(64 << 20);
+  const auto start = std::chrono::steady_clock::now();
+  while (std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() < ms) {
+    for (int i = 0; i < 20; ++i) ops.copy(i % 2 ? b : a, i % 2 ? a : b, a.size());
+    glFinish();
+  }
 }
 
 bool softwareRenderer() {  // declared in bench.h

@@ -71,6 +71,13 @@ struct PassTimes {
 };
 PassTimes timePasses(int warmup, int timed, const std::function<void(gl::GpuProfiler&)>& frame);
 
+// Keeps the GPU busy with buffer copies for about `ms` of wall-clock time. GPUs lower their clocks
+// when idle, and a few warm-up repeats of a sub-millisecond kernel do not bring them back: on the
+// H100 the 16M scan measured 2.5x slower after the CPU had spent a second checking the last row
+// (or after a 1 s sleep). Benchmarks call it before timing work that follows CPU-side pauses.
+// No-op on a software renderer.
+void wakeGpu(gl::ShaderLibrary& shaders, double ms = 200.0);
+
 // True on llvmpipe / softpipe, whose GL timer queries do not measure execution.
 bool softwareRenderer();
 

@@ -154,6 +154,7 @@ void addShapeRows(Env& env, Table& table, WordScans& words, bool wallClock, std:
   words.in.upload(values.data(), n * 4);
   gl::Buffer &in = words.in, &out = words.out, &copy = words.copy;
   const gl::BufferOps ops(env.shaders);
+  wakeGpu(env.shaders);
   const double copyMs = medianMs(env.common, wallClock, [&] { ops.copy(in, copy, n * 4); });
   const double copyGbps = gbps(8.0 * n, copyMs);
   for (std::size_t s = 0; s < shapes.size(); ++s) {
@@ -228,6 +229,7 @@ std::vector<std::string> runRow(Env& env, const GridOptions& opt, WordScans& wor
   grid::NaiveScan& naive = words.naive;
   const std::vector<uint32_t> want = opt.noCheck ? std::vector<uint32_t>() : grid::reference::exclusiveScan(values);
   const gl::BufferOps ops(env.shaders);
+  wakeGpu(env.shaders);  // after the last row's CPU check the GPU has idled
   const double uscanMs = medianMs(env.common, wallClock, [&] { scan.run(in, out, n); });
   if (!opt.noCheck && ops.readBack<uint32_t>(out, n + 1) != want) scanNote += "WRONG scan; ";
   const double naiveMs = medianMs(env.common, wallClock, [&] { naive.run(in, out, n); });
@@ -253,6 +255,7 @@ std::vector<std::string> runRow(Env& env, const GridOptions& opt, WordScans& wor
   for (int a = 0; a < opt.arrays; ++a) arrays.push_back({&src[a], &dst[a]});
   const gl::Buffer& positions = src[0];
 
+  wakeGpu(env.shaders);  // the CPU has been filling positions
   const double countMs = medianMs(env.common, wallClock, [&] { grid.countParticles(positions, n); });
   const double scanMs = medianMs(env.common, wallClock, [&] { grid.scanCells(); });
   const double reorderMs = medianMs(env.common, wallClock, [&] { grid.reorder(positions, arrays); });
@@ -266,6 +269,7 @@ std::vector<std::string> runRow(Env& env, const GridOptions& opt, WordScans& wor
   // with the arrays already sorted (dst) as input, moving them back into src.
   std::vector<grid::ReorderArray> back;
   for (int a = 0; a < opt.arrays; ++a) back.push_back({&dst[a], &src[a]});
+  wakeGpu(env.shaders);  // after the check
   const double sortedMs = medianMs(env.common, wallClock, [&] {
     grid.build(dst[0], n);
     grid.reorder(dst[0], back);
