@@ -110,12 +110,14 @@ Result stability(Env& env) {
 Study ballsRestitutionStudy();  // balls_studies.cpp
 Study swarmOrbitStudy();        // swarm_studies.cpp
 Study swarmPrecisionStudy();
+Study lifePrecisionStudy();  // life_studies.cpp
 
 const std::vector<Study>& studies() {
   static const std::vector<Study> table = {
       ballsRestitutionStudy(),
       swarmOrbitStudy(),
       swarmPrecisionStudy(),
+      lifePrecisionStudy(),
       {"ripples-dispersion", "phase-speed error vs cost per Courant number (wave rule)", dispersion},
       {"ripples-stability", "noise growth and phase error vs Courant number, with the 1/sqrt(2) limit", stability},
   };
