@@ -1,10 +1,10 @@
-#define GRID_POSITIONS 0  // vec4 positions (xyz + w), read by count and reorder
+#define GRID_POSITIONS 0  // positions (vec4 xyz + w, or uvec2 half xy + word: grid/positions.glsl), read by count and reorder
 #define GRID_INDEX_IN_CELL 1  // uint per particle, the count pass's atomicAdd result
 #define GRID_CELL_COUNT 2  // uint per cell, atomicAdd target (count pass only, so it shares 2)
 #define GRID_CELL_START 2  // uint per cell + 1, exclusive scan of the counts (reorder pass)
 #define GRID_PERMUTATION 3  // uint per particle, permutation[sorted] = original (optional)
-#define GRID_REORDER_SRC 4  // first of GRID_REORDER_MAX_ARRAYS consecutive vec4 source arrays
-#define GRID_REORDER_DST 6  // first of GRID_REORDER_MAX_ARRAYS consecutive vec4 destination arrays
+#define GRID_REORDER_SRC 4  // first of GRID_REORDER_MAX_ARRAYS consecutive source arrays
+#define GRID_REORDER_DST 6  // first of GRID_REORDER_MAX_ARRAYS consecutive destination arrays
 #define GRID_REORDER_MAX_ARRAYS 2  // arrays per reorder pass: bindings 0..7 fit GL 4.3's minimum of 8
 #define SCAN_IN_VEC 0  // scan input as uvec4 (full blocks)
 #define SCAN_IN_WORD 1  // the same buffer as uint (the last, partial block)

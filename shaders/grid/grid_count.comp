@@ -7,8 +7,8 @@ layout(local_size_x = 256) in;
 #include "common/index.glsl"
 #include "common/grid.glsl"
 #include "grid/bindings.glsl"
+#include "grid/positions.glsl"
 
-layout(std430, binding = GRID_POSITIONS) readonly buffer Positions { vec4 positions[]; };
 layout(std430, binding = GRID_CELL_COUNT) buffer CellCount { uint cellCount[]; };
 layout(std430, binding = GRID_INDEX_IN_CELL) writeonly buffer IndexInCell { uint indexInCell[]; };
 
@@ -17,5 +17,5 @@ uniform uint uCount;  // particles
 void main() {
   const uint i = globalIndex();
   if (i >= uCount) return;
-  indexInCell[i] = atomicAdd(cellCount[cellOf(positions[i].xyz)], 1u);
+  indexInCell[i] = atomicAdd(cellCount[cellOf(particlePosition(i))], 1u);
 }

@@ -1,23 +1,24 @@
 #version 430 core
 // Reorder pass of the uniform grid (src/grid/grid.h): particle i moves to slot
-// cellStart[cell] + indexInCell[i], for ARRAYS (0..GRID_REORDER_MAX_ARRAYS) vec4 arrays at once
-// (src -> dst, double-buffered: no copy back). With WRITE_PERMUTATION, permutation[slot] = i.
+// cellStart[cell] + indexInCell[i], for ARRAYS (0..GRID_REORDER_MAX_ARRAYS) arrays at once
+// (src -> dst, double-buffered: no copy back) of the layout's elements (grid/positions.glsl).
+// With WRITE_PERMUTATION, permutation[slot] = i.
 // The cell is recomputed from the positions rather than stored by the count pass: the positions
 // are usually one of the arrays being moved, so that read is served by the cache.
 layout(local_size_x = 256) in;
 #include "common/index.glsl"
 #include "common/grid.glsl"
 #include "grid/bindings.glsl"
+#include "grid/positions.glsl"
 
-layout(std430, binding = GRID_POSITIONS) readonly buffer Positions { vec4 positions[]; };
 layout(std430, binding = GRID_INDEX_IN_CELL) readonly buffer IndexInCell { uint indexInCell[]; };
 layout(std430, binding = GRID_CELL_START) readonly buffer CellStart { uint cellStart[]; };
 #if WRITE_PERMUTATION
 layout(std430, binding = GRID_PERMUTATION) writeonly buffer Permutation { uint permutation[]; };
 #endif
 #if ARRAYS > 0
-layout(std430, binding = GRID_REORDER_SRC) readonly buffer Src { vec4 values[]; } src[ARRAYS];
-layout(std430, binding = GRID_REORDER_DST) writeonly buffer Dst { vec4 values[]; } dst[ARRAYS];
+layout(std430, binding = GRID_REORDER_SRC) readonly buffer Src { GridElement values[]; } src[ARRAYS];
+layout(std430, binding = GRID_REORDER_DST) writeonly buffer Dst { GridElement values[]; } dst[ARRAYS];
 #endif
 
 uniform uint uCount;  // particles
@@ -25,7 +26,7 @@ uniform uint uCount;  // particles
 void main() {
   const uint i = globalIndex();
   if (i >= uCount) return;
-  const uint slot = cellStart[cellOf(positions[i].xyz)] + indexInCell[i];
+  const uint slot = cellStart[cellOf(particlePosition(i))] + indexInCell[i];
 #if ARRAYS > 0
   for (int a = 0; a < ARRAYS; ++a) dst[a].values[slot] = src[a].values[i];
 #endif

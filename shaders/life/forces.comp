@@ -13,8 +13,9 @@ layout(local_size_x = LIFE_FORCES_GROUP) in;
 #include "common/grid.glsl"
 #include "life/box.glsl"
 #include "life/pair_force.glsl"
+#include "life/state.glsl"
 
-layout(std430, binding = LIFE_POSITIONS) readonly buffer Positions { vec4 positions[]; };
+layout(std430, binding = LIFE_POSITIONS) readonly buffer Positions { LifePosition positions[]; };
 layout(std430, binding = LIFE_ACCELERATIONS) writeonly buffer Accelerations { vec2 accelerations[]; };
 layout(std430, binding = LIFE_FORCE_TABLE) readonly buffer ForceTable { vec4 forceTable[]; };
 layout(std430, binding = LIFE_CELL_START) readonly buffer CellStart { uint cellStart[]; };
@@ -68,7 +69,7 @@ void main() {
   const uint i = globalIndex();
   uint examined = 0u;
   if (i < uCount) {
-    const vec4 pi = positions[i];
+    const vec4 pi = unpackPosition(positions[i]);
     const uint s = uint(pi.w);
     const uint row = s * uSpecies;
     vec2 force = -uCentralForce * pi.xy;
@@ -84,7 +85,7 @@ void main() {
           const uint begin = cellStart[first + uint(rx[b].x)], end = cellStart[first + uint(rx[b].y) + 1u];
           examined += end - begin;
           for (uint j = begin; j < end; ++j) {
-            const vec4 pj = positions[j];
+            const vec4 pj = unpackPosition(positions[j]);
             const uint k = row + uint(pj.w);
             if (j != i) force += pairForce(boxDelta(pi.xy, pj.xy), sTableA[k], sTableB[k]);
           }

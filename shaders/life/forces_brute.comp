@@ -7,8 +7,9 @@ layout(local_size_x = LIFE_BRUTE_TILE) in;
 #include "common/index.glsl"
 #include "life/box.glsl"
 #include "life/pair_force.glsl"
+#include "life/state.glsl"
 
-layout(std430, binding = LIFE_POSITIONS) readonly buffer Positions { vec4 positions[]; };
+layout(std430, binding = LIFE_POSITIONS) readonly buffer Positions { LifePosition positions[]; };
 layout(std430, binding = LIFE_ACCELERATIONS) writeonly buffer Accelerations { vec2 accelerations[]; };
 layout(std430, binding = LIFE_FORCE_TABLE) readonly buffer ForceTable { vec4 forceTable[]; };
 
@@ -20,12 +21,12 @@ shared vec4 sTile[LIFE_BRUTE_TILE];
 
 void main() {
   const uint i = globalIndex();
-  const vec4 pi = positions[min(i, uCount - 1u)];
+  const vec4 pi = unpackPosition(positions[min(i, uCount - 1u)]);
   const uint row = uint(pi.w) * uSpecies;
   vec2 force = -uCentralForce * pi.xy;
   for (uint base = 0u; base < uCount; base += LIFE_BRUTE_TILE) {
     const uint k = base + gl_LocalInvocationID.x;
-    sTile[gl_LocalInvocationID.x] = k < uCount ? positions[k] : vec4(0.0);
+    sTile[gl_LocalInvocationID.x] = k < uCount ? unpackPosition(positions[k]) : vec4(0.0);
     barrier();
     const uint n = min(uint(LIFE_BRUTE_TILE), uCount - base);
     for (uint t = 0u; t < n; ++t) {

@@ -9,14 +9,16 @@
 // The friction factor is exact for any dt: with no forces |v| decays as exp(-friction·t).
 // push is the mouse brush: uPushVelocity·exp(-|p - uPushPoint|^2 / uPushRadius^2).
 // Borders, wherever p moves: LOOPING wraps into the box; otherwise the wall clamps p and
-// reflects that velocity component.
+// reflects that velocity component. The state is read and written through life/state.glsl
+// (fp32 or packed fp16); everything in between is fp32.
 layout(local_size_x = 256) in;
 #include "common/index.glsl"
 #include "life/bindings.glsl"
 #include "life/box.glsl"
+#include "life/state.glsl"
 
-layout(std430, binding = LIFE_POSITIONS) buffer Positions { vec4 positions[]; };
-layout(std430, binding = LIFE_VELOCITIES) buffer Velocities { vec4 velocities[]; };
+layout(std430, binding = LIFE_POSITIONS) buffer Positions { LifePosition positions[]; };
+layout(std430, binding = LIFE_VELOCITIES) buffer Velocities { LifeVelocity velocities[]; };
 #if !VERLET_DRIFT
 layout(std430, binding = LIFE_ACCELERATIONS) readonly buffer Accelerations { vec2 accelerations[]; };
 #endif
@@ -55,14 +57,14 @@ void keepInBox(inout vec4 p, inout vec4 v) {
 void main() {
   const uint i = globalIndex();
   if (i >= uCount) return;
-  vec4 p = positions[i];
-  vec4 v = velocities[i];
+  vec4 p = unpackPosition(positions[i]);
+  vec4 v = unpackVelocity(velocities[i]);
 #if STORE_ACCEL
   v.zw = accelerations[i];
 #elif VERLET_DRIFT
   p.xy += v.xy * uDt + 0.5 * v.zw * uDt * uDt;
   keepInBox(p, v);
-  positions[i] = p;
+  positions[i] = packPosition(p);
 #elif VERLET_KICK
   const vec2 a = accelerations[i];
   v.xy = (v.xy + 0.5 * (v.zw + a) * uDt + push(p.xy)) * uDamping;
@@ -73,7 +75,7 @@ void main() {
   v.zw = a;
   p.xy += v.xy * uDt;
   keepInBox(p, v);
-  positions[i] = p;
+  positions[i] = packPosition(p);
 #endif
-  velocities[i] = v;
+  velocities[i] = packVelocity(v);
 }

@@ -8,7 +8,6 @@
 namespace tidepool::grid {
 namespace {
 constexpr std::size_t kWord = sizeof(uint32_t);
-constexpr std::size_t kVec4 = 4 * sizeof(float);
 
 std::string vecText(glm::vec3 v) {
   return "(" + std::to_string(v.x) + ", " + std::to_string(v.y) + ", " + std::to_string(v.z) + ")";
@@ -31,12 +30,17 @@ reference::GridShape shapeOf(const GridParams& p) {
     throw Error("grid of " + std::to_string(dims[0]) + " x " + std::to_string(dims[1]) + " x " +
                 std::to_string(dims[2]) + " cells is too many (at most 2^30): use a larger cell size than " +
                 std::to_string(p.cellSize));
+  if (p.layout == Layout::Half2 && extent.z != 0.0f)
+    throw Error("grid: half-float positions (Layout::Half2) are 2D, but the domain's z extent is " +
+                std::to_string(extent.z));
   reference::GridShape s;
   s.origin = p.domainMin;
   s.invCellSize = 1.0f / p.cellSize;
   s.dims = glm::uvec3(uint32_t(dims[0]), uint32_t(dims[1]), uint32_t(dims[2]));
   return s;
 }
+
+const char* halfDefine(const GridParams& p) { return p.layout == Layout::Half2 ? "1" : "0"; }
 
 void checkArray(const gl::Buffer* b, std::size_t bytes, const std::string& what) {
   if (!b || b->size() < bytes)
@@ -51,7 +55,7 @@ UniformGrid::UniformGrid(gl::ShaderLibrary& shaders, const GridParams& params, s
       m_shaders(&shaders),
       m_maxBlockBytes(maxStorageBlockBytes()),
       m_ops(shaders),
-      m_countPass(&shaders.program({"grid/grid_count.comp"})),
+      m_countPass(&shaders.program({"grid/grid_count.comp"}, {{"HALF_POSITIONS", halfDefine(params)}})),
       m_scan(shaders) {
   const std::size_t startBytes = (cells() + 1) * kWord;
   if (startBytes > m_maxBlockBytes)
@@ -76,9 +80,10 @@ void UniformGrid::build(const gl::Buffer& positions, std::size_t count) {
 }
 
 void UniformGrid::countParticles(const gl::Buffer& positions, std::size_t count) {
-  checkArray(&positions, count * kVec4, std::to_string(count) + " positions");
-  if (count * kVec4 > m_maxBlockBytes)
-    throw Error("grid: " + std::to_string(count) + " positions need " + std::to_string(count * kVec4 >> 20) +
+  const std::size_t bytes = count * elementBytes();
+  checkArray(&positions, bytes, std::to_string(count) + " positions");
+  if (bytes > m_maxBlockBytes)
+    throw Error("grid: " + std::to_string(count) + " positions need " + std::to_string(bytes >> 20) +
                 " MiB, over this driver's SSBO limit of " + std::to_string(m_maxBlockBytes >> 20) + " MiB");
   if (m_indexInCell.size() < count * kWord) m_indexInCell = gl::Buffer(count * kWord);
   m_count = count;
@@ -100,10 +105,11 @@ void UniformGrid::scanCells() { m_scan.run(m_cellCount, m_cellStart, cells()); }
 
 void UniformGrid::reorder(const gl::Buffer& positions, std::span<const ReorderArray> arrays, gl::Buffer* permutation) {
   const std::size_t n = m_count;
-  checkArray(&positions, n * kVec4, "reorder: " + std::to_string(n) + " positions");
+  const std::size_t bytes = n * elementBytes();
+  checkArray(&positions, bytes, "reorder: " + std::to_string(n) + " positions");
   for (std::size_t a = 0; a < arrays.size(); ++a) {
-    checkArray(arrays[a].src, n * kVec4, "reorder: source array " + std::to_string(a));
-    checkArray(arrays[a].dst, n * kVec4, "reorder: destination array " + std::to_string(a));
+    checkArray(arrays[a].src, bytes, "reorder: source array " + std::to_string(a));
+    checkArray(arrays[a].dst, bytes, "reorder: destination array " + std::to_string(a));
     if (arrays[a].src->id() == arrays[a].dst->id())
       throw Error("grid: reorder array " + std::to_string(a) + " has the same source and destination buffer");
   }
@@ -121,7 +127,8 @@ void UniformGrid::reorder(const gl::Buffer& positions, std::span<const ReorderAr
     gl::Program*& program = m_reorderPass[batch][writePermutation];
     if (!program)
       program = &m_shaders->program({"grid/grid_reorder.comp"}, {{"ARRAYS", std::to_string(batch)},
-                                                                 {"WRITE_PERMUTATION", writePermutation ? "1" : "0"}});
+                                                                 {"WRITE_PERMUTATION", writePermutation ? "1" : "0"},
+                                                                 {"HALF_POSITIONS", halfDefine(m_params)}});
     for (std::size_t a = 0; a < batch; ++a) {
       arrays[first + a].src->bindBase(GL_SHADER_STORAGE_BUFFER, GLuint(GRID_REORDER_SRC + a));
       arrays[first + a].dst->bindBase(GL_SHADER_STORAGE_BUFFER, GLuint(GRID_REORDER_DST + a));

@@ -12,8 +12,9 @@
 // Determinism: cellCount and cellStart are the same on every run; the order of particles inside
 // a cell (indexInCell, hence the reordered arrays and the permutation) follows the atomicAdd
 // order and may differ between runs and drivers.
-// Positions are vec4 (xyz + w) std430 SSBOs. Positions outside the domain are clamped into the
-// border cells (never dropped, never written out of bounds); a position exactly on a cell border
+// Positions are vec4 (xyz + w) std430 SSBOs, or for a 2D grid with Layout::Half2 uvec2 (x =
+// packHalf2x16 of xy, y = any word), and then every reordered array has 8-byte elements. Positions outside the domain
+// are clamped into the border cells (never dropped, never written out of bounds); a position exactly on a cell border
 // belongs to the cell above it, one exactly on the domain max to the last cell. The cell math is
 // shaders/common/grid.glsl (setUniforms() feeds it to any kernel) and its CPU twin
 // grid_reference.h. Every pass ends with GL_SHADER_STORAGE_BARRIER_BIT, so later kernels may read
@@ -40,13 +41,20 @@
 
 namespace tidepool::grid {
 
+// What the grid reads and moves (shaders/grid/positions.glsl).
+enum class Layout {
+  Vec4,   // positions vec4 (xyz + w); reordered arrays of 16-byte elements
+  Half2,  // 2D only: positions uvec2 (packHalf2x16(xy), any word); reordered arrays of 8-byte elements
+};
+
 struct GridParams {
   glm::vec3 domainMin{0.0f};  // world units
   glm::vec3 domainMax{1.0f};  // world units; z equal to domainMin.z makes a 2D grid (one layer)
   float cellSize = 0.1f;      // world units; at least the model's interaction radius
+  Layout layout = Layout::Vec4;
 };
 
-// One vec4 array to move by reorder(): src is read in particle order, dst written in cell order.
+// One array to move by reorder(): src is read in particle order, dst written in cell order.
 struct ReorderArray {
   const gl::Buffer* src;
   gl::Buffer* dst;
@@ -83,6 +91,7 @@ class UniformGrid {
   const gl::Buffer& cellStart() const { return m_cellStart; }      // uint per cell + 1 (total)
   const gl::Buffer& indexInCell() const { return m_indexInCell; }  // uint per particle
   std::size_t memoryBytes() const;  // all GPU buffers the grid owns, scan levels included (bytes)
+  std::size_t elementBytes() const { return m_params.layout == Layout::Half2 ? 8 : 16; }  // of positions and arrays
 
  private:
   GridParams m_params;

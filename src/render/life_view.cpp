@@ -43,7 +43,8 @@ void LifeView::zoomAbout(glm::vec2 cursor, float clicks, glm::ivec2 viewport) {
 
 void LifeView::drawParticles(const life::Life& model, const char* fragment, float halfSize, float ppu,
                              glm::vec2 extent) {
-  gl::Program& p = m_shaders.program({"render/life_particle.vert", fragment});
+  gl::Program& p = m_shaders.program({"render/life_particle.vert", fragment},
+                                     {{"LIFE_FP16", model.storage() == life::Storage::Fp16 ? "1" : "0"}});
   p.use();
   p.set("uCentre", m_camera.centre);
   p.set("uExtent", extent);

@@ -183,6 +183,9 @@ class LifeStage final : public Stage {
     return true;
   }
   double simTime() const override { return m_model.time(); }
+  std::optional<DivergenceReport> divergence() const override { return m_model.divergence(); }
+  bool recover() override { return m_model.recover(); }
+  void flushChecks() override { m_model.flushChecks(); }
   std::string status() const override { return m_model.status(); }
   std::string shareText() const override { return m_shareCode; }
 

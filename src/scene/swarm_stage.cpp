@@ -46,6 +46,7 @@ class SwarmStage final : public Stage {
     const sim::SwarmParams& p = m_swarm.params();
     const double dt = double(p.speed) * frameSeconds / p.substeps;
     for (int s = 0; s < p.substeps; ++s) m_swarm.step(dt);
+    m_swarm.watch();
     m_clock += frameSeconds;
   }
 
@@ -79,6 +80,9 @@ class SwarmStage final : public Stage {
   }
 
   double simTime() const override { return m_swarm.time(); }
+  std::optional<DivergenceReport> divergence() const override { return m_swarm.divergence(); }
+  bool recover() override { return m_swarm.recover(); }
+  void flushChecks() override { m_swarm.flushChecks(); }
 
   std::string status() const override {
     char buf[160];

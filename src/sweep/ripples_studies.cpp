@@ -112,6 +112,7 @@ Study ballsSettleStudy();       // balls_settle_study.cpp
 Study ballsDambreakStudy();     // balls_dambreak_study.cpp
 Study swarmOrbitStudy();        // swarm_studies.cpp
 Study swarmPrecisionStudy();
+Study lifePrecisionStudy();  // life_studies.cpp
 
 const std::vector<Study>& studies() {
   static const std::vector<Study> table = {
@@ -120,6 +121,7 @@ const std::vector<Study>& studies() {
       ballsDambreakStudy(),
       swarmOrbitStudy(),
       swarmPrecisionStudy(),
+      lifePrecisionStudy(),
       {"ripples-dispersion", "phase-speed error vs cost per Courant number (wave rule)", dispersion},
       {"ripples-stability", "noise growth and phase error vs Courant number, with the 1/sqrt(2) limit", stability},
   };

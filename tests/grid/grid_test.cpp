@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <glm/gtc/packing.hpp>
 #include <random>
 #include <regex>
 
@@ -138,6 +139,44 @@ TEST_F(Grid, NonMultipleCellSizeRoundsDimsUp) {
   EXPECT_FALSE(grid.is2D());
   const GridParams params = grid.params();
   checkGrid(shaders(), params, makePositions(params, 3000, 0.2f, 5));
+}
+
+// Layout::Half2 (particle life's fp16 state): positions are uvec2 (packHalf2x16(xy), a word) and
+// the reordered arrays have 8-byte elements, moved bit for bit (NaN patterns included).
+TEST_F(Grid, HalfFloatPositionsAndEightByteArrays) {
+  const GridParams params{.domainMin = {-8, -4, 0}, .domainMax = {8, 4, 0}, .cellSize = 0.75f, .layout = Layout::Half2};
+  const std::vector<glm::vec4> wide = makePositions(params, 20001, 1.0f, 7);
+  const std::size_t n = wide.size();
+  std::vector<glm::uvec2> pos(n), other(n);
+  std::vector<glm::vec4> rounded(n);  // what the grid sees
+  for (std::size_t i = 0; i < n; ++i) {
+    pos[i] = {glm::packHalf2x16(glm::vec2(wide[i])), uint32_t(i)};
+    rounded[i] = glm::vec4(glm::unpackHalf2x16(pos[i].x), 0.0f, float(i));
+    other[i] = {0x7fc00000u + uint32_t(i), ~uint32_t(i)};  // float NaN patterns
+  }
+  UniformGrid grid(shaders(), params);
+  EXPECT_EQ(grid.elementBytes(), 8u);
+  gl::Buffer posBuf(n * 8, pos.data()), otherBuf(n * 8, other.data()), posOut(n * 8), otherOut(n * 8), perm(n * 4);
+  grid.build(posBuf, n);
+  grid.reorder(posBuf, {{&posBuf, &posOut}, {&otherBuf, &otherOut}}, &perm);
+  const std::vector<uint32_t> counts = reference::histogram(grid.shape(), rounded);
+  const std::vector<uint32_t> starts = reference::exclusiveScan(counts);
+  ASSERT_EQ(grid.cellCount().read<uint32_t>(grid.cells()), counts);
+  ASSERT_EQ(grid.cellStart().read<uint32_t>(grid.cells() + 1), starts);
+  const std::vector<glm::uvec2> sortedPos = posOut.read<glm::uvec2>(n), sortedOther = otherOut.read<glm::uvec2>(n);
+  const std::vector<uint32_t> permutation = perm.read<uint32_t>(n);
+  std::size_t cell = 0;
+  for (std::size_t j = 0; j < n; ++j) {
+    while (starts[cell + 1] <= j) ++cell;
+    const uint32_t i = permutation[j];
+    ASSERT_LT(i, n);
+    ASSERT_EQ(reference::cellOf(grid.shape(), glm::vec3(rounded[i])), cell) << "slot " << j;
+    ASSERT_EQ(sortedPos[j], pos[i]) << "slot " << j;
+    ASSERT_EQ(sortedOther[j], other[i]) << "slot " << j;
+  }
+  EXPECT_THROW(UniformGrid(shaders(), {.domainMin = {0, 0, 0}, .domainMax = {1, 1, 1}, .layout = Layout::Half2}), Error)
+      << "half positions are 2D";
+  EXPECT_THROW(grid.build(posOut, n + 1), Error) << "n + 1 positions need 8 more bytes";
 }
 
 TEST_F(Grid, ZeroParticles) {

@@ -2,17 +2,21 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <glm/gtc/packing.hpp>
 
 #include "base/error.h"
 #include "life/bindings.glsl"
 
 namespace tidepool::life {
 namespace {
-constexpr std::size_t kMaxDispatchGroupsSpill = 65536;  // dispatchThreads may round groups up by a row
-}
+constexpr std::size_t kMaxDispatchGroupsSpill = 65536;                 // dispatchThreads may round groups up by a row
+constexpr std::size_t kMaxCheckpointParticles = std::size_t(4) << 20;  // larger runs keep no copy to go back to
+constexpr double kCellsPerStepBound = 10;  // the watch's speed bound, in grid cells per step
+}  // namespace
 
 Life::Life(gl::ShaderLibrary& shaders, const Rules& rules, const Params& params)
-    : m_shaders(shaders), m_params(params) {
+    : m_shaders(shaders), m_ops(shaders), m_params(params) {
   setRules(rules, true);
 }
 
@@ -22,16 +26,8 @@ void Life::setRules(const Rules& rules, bool respawn) {
                          rules.speciesCount() == m_rules.speciesCount();
   const bool newGrid = !m_grid || rules.size != m_rules.size || rules.maxRadius() != m_rules.maxRadius();
   m_rules = rules;
-  if (newGrid) {
-    // Cell = the largest radius, but no more cells than particles (or 2048 per axis): tiny radii
-    // would otherwise make the per-step scan of cell counts the dominant cost.
-    const float perParticle = std::sqrt(m_rules.size.x * m_rules.size.y / float(m_rules.particleCount));
-    const float cell = std::max({m_rules.maxRadius(), perParticle, std::max(m_rules.size.x, m_rules.size.y) / 2048.0f});
-    const glm::vec2 half = 0.5f * m_rules.size;
-    m_grid = std::make_unique<grid::UniformGrid>(
-        m_shaders, grid::GridParams{{-half.x, -half.y, 0.0f}, {half.x, half.y, 0.0f}, cell},
-        std::size_t(m_rules.particleCount));
-  }
+  if (!m_grid) m_storage = m_params.storage;
+  if (newGrid) makeGrid();
   uploadTable();
   if (respawn || !sameShape) {
     allocate();
@@ -40,15 +36,43 @@ void Life::setRules(const Rules& rules, bool respawn) {
   m_needAccel = true;
 }
 
+void Life::makeGrid() {
+  // Cell = the largest radius, but no more cells than particles (or 2048 per axis): tiny radii
+  // would otherwise make the per-step scan of cell counts the dominant cost.
+  const float perParticle = std::sqrt(m_rules.size.x * m_rules.size.y / float(m_rules.particleCount));
+  const float cell = std::max({m_rules.maxRadius(), perParticle, std::max(m_rules.size.x, m_rules.size.y) / 2048.0f});
+  const glm::vec2 half = 0.5f * m_rules.size;
+  const grid::Layout layout = m_storage == Storage::Fp16 ? grid::Layout::Half2 : grid::Layout::Vec4;
+  m_grid = std::make_unique<grid::UniformGrid>(
+      m_shaders, grid::GridParams{{-half.x, -half.y, 0.0f}, {half.x, half.y, 0.0f}, cell, layout},
+      std::size_t(m_rules.particleCount));
+}
+
+void Life::applyStorage() {
+  if (m_params.storage == m_storage) return;
+  const std::vector<glm::vec4> pos = downloadPositions(), vel = downloadVelocities();
+  const double time = m_time;
+  const std::uint64_t steps = m_steps;
+  m_storage = m_params.storage;
+  makeGrid();
+  allocate();
+  upload(pos, vel);
+  m_time = time;
+  m_steps = steps;
+}
+
 void Life::allocate() {
   m_count = std::size_t(m_rules.particleCount);
   for (int i = 0; i < 2; ++i) {
-    m_pos[i] = gl::Buffer(m_count * sizeof(glm::vec4));
-    m_vel[i] = gl::Buffer(m_count * sizeof(glm::vec4));
+    m_pos[i] = gl::Buffer(m_count * m_grid->elementBytes());
+    m_vel[i] = gl::Buffer(m_count * m_grid->elementBytes());
+    m_ids[i] = gl::Buffer();
   }
   m_accel = gl::Buffer(m_count * sizeof(glm::vec2));
   m_accel.fillZero();
   m_groupPairs = gl::Buffer((m_count / LIFE_FORCES_GROUP + 1 + kMaxDispatchGroupsSpill) * sizeof(GLuint));
+  m_health = gl::Buffer(4 * sizeof(GLuint));
+  for (gl::Buffer* b : {&m_pendingPos, &m_pendingVel, &m_goodPos, &m_goodVel}) *b = gl::Buffer();  // made on use
 }
 
 void Life::uploadTable() {
@@ -78,14 +102,67 @@ void Life::upload(const std::vector<glm::vec4>& pos, const std::vector<glm::vec4
     throw Error("life: upload of " + std::to_string(pos.size()) + " particles, the model has " +
                 std::to_string(m_count));
   m_current = 0;
-  m_pos[0].upload(std::span<const glm::vec4>(pos));
-  m_vel[0].upload(std::span<const glm::vec4>(vel));
+  if (m_storage == Storage::Fp32) {
+    m_pos[0].upload(std::span<const glm::vec4>(pos));
+    m_vel[0].upload(std::span<const glm::vec4>(vel));
+  } else {
+    std::vector<glm::uvec2> packedPos(m_count), packedVel(m_count);
+    for (std::size_t i = 0; i < m_count; ++i) {
+      packedPos[i] = {glm::packHalf2x16(glm::vec2(pos[i])), GLuint(pos[i].w)};
+      packedVel[i] = {glm::packHalf2x16(glm::vec2(vel[i])), glm::packHalf2x16(glm::vec2(vel[i].z, vel[i].w))};
+    }
+    m_pos[0].upload(std::span<const glm::uvec2>(packedPos));
+    m_vel[0].upload(std::span<const glm::uvec2>(packedVel));
+  }
+  if (m_trackIds) resetIds();
   m_needAccel = true;
+  m_hasGood = false;  // a new state: nothing judged yet
+  m_divergence.reset();
+  m_checks.restart();
+}
+
+std::vector<glm::vec4> Life::downloadPositions() const {
+  if (m_storage == Storage::Fp32) return positions().read<glm::vec4>(m_count);
+  std::vector<glm::vec4> out;
+  for (const glm::uvec2& p : positions().read<glm::uvec2>(m_count))
+    out.emplace_back(glm::unpackHalf2x16(p.x), 0.0f, float(p.y));
+  return out;
+}
+
+std::vector<glm::vec4> Life::downloadVelocities() const {
+  if (m_storage == Storage::Fp32) return velocities().read<glm::vec4>(m_count);
+  std::vector<glm::vec4> out;
+  for (const glm::uvec2& v : velocities().read<glm::uvec2>(m_count))
+    out.emplace_back(glm::unpackHalf2x16(v.x), glm::unpackHalf2x16(v.y));
+  return out;
+}
+
+void Life::trackIds(bool on) {
+  m_trackIds = on;
+  for (gl::Buffer& b : m_ids) b = gl::Buffer();
+  if (on) resetIds();
+}
+
+void Life::resetIds() {
+  const std::size_t words = m_grid->elementBytes() / sizeof(GLuint);  // ids in the first word of each element
+  std::vector<GLuint> ids(m_count * words, 0u);
+  for (std::size_t i = 0; i < m_count; ++i) ids[i * words] = GLuint(i);
+  for (gl::Buffer& b : m_ids) b = gl::Buffer(std::span<const GLuint>(ids));
+}
+
+std::vector<std::uint32_t> Life::ids() const {
+  if (!m_trackIds) return {};
+  const std::size_t words = m_grid->elementBytes() / sizeof(GLuint);
+  const std::vector<GLuint> all = m_ids[m_current].read<GLuint>(m_count * words);
+  std::vector<std::uint32_t> out(m_count);
+  for (std::size_t i = 0; i < m_count; ++i) out[i] = all[i * words];
+  return out;
 }
 
 std::vector<gl::ShaderDefine> Life::defines() const {
-  if (m_rules.loopingBorders) return {{"LOOPING", "1"}};
-  return {};
+  std::vector<gl::ShaderDefine> d = {{"LIFE_FP16", m_storage == Storage::Fp16 ? "1" : "0"}};
+  if (m_rules.loopingBorders) d.push_back({"LOOPING", "1"});
+  return d;
 }
 
 void Life::push(glm::vec2 point, glm::vec2 velocity, float radius) {
@@ -97,7 +174,12 @@ void Life::push(glm::vec2 point, glm::vec2 velocity, float radius) {
 void Life::sortByCell() {
   m_grid->build(m_pos[m_current], m_count);
   const int next = 1 - m_current;
-  m_grid->reorder(m_pos[m_current], {{&m_pos[m_current], &m_pos[next]}, {&m_vel[m_current], &m_vel[next]}});
+  if (m_trackIds)
+    m_grid->reorder(
+        m_pos[m_current],
+        {{&m_pos[m_current], &m_pos[next]}, {&m_vel[m_current], &m_vel[next]}, {&m_ids[m_current], &m_ids[next]}});
+  else
+    m_grid->reorder(m_pos[m_current], {{&m_pos[m_current], &m_pos[next]}, {&m_vel[m_current], &m_vel[next]}});
   m_current = next;
 }
 
@@ -142,6 +224,7 @@ void Life::integrate(const char* variant, float dt) {
 }
 
 void Life::stepOnce(float dt) {
+  applyStorage();
   if (m_params.integrator == Integrator::Verlet) {
     if (m_needAccel) {
       computeForces();
@@ -158,12 +241,91 @@ void Life::stepOnce(float dt) {
   m_needAccel = false;
   m_pushVelocity = glm::vec2(0.0f);  // the brush acts for one step per call to push()
   m_time += dt;
+  m_lastDt = dt;
   ++m_steps;
 }
 
 void Life::step(double frameSeconds, gl::GpuProfiler& profiler) {
-  auto scope = profiler.scope("life.step");
-  stepOnce(float(std::min(double(m_params.maxDt), frameSeconds)));
+  {
+    auto scope = profiler.scope("life.step");
+    stepOnce(float(std::min(double(m_params.maxDt), frameSeconds)));
+  }
+  watch();
+}
+
+double Life::speedBound() const {
+  // A particle that moves more than a cell (>= the largest force radius) per step passes
+  // neighbours without feeling them; ten cells per step is no particle life any more.
+  return kCellsPerStepBound * double(m_grid->params().cellSize) / double(m_lastDt > 0 ? m_lastDt : m_params.maxDt);
+}
+
+void Life::watch() {
+  m_checks.frame(
+      m_time, !m_divergence && m_count > 0, [this](const CheckCycle::Words& w, double time) { judge(w, time); },
+      [this] {
+        m_health.fillZero();
+        gl::Program& p = m_shaders.program({"life/health.comp"}, defines());
+        p.use();
+        p.set("uCount", GLuint(m_count));
+        positions().bindBase(GL_SHADER_STORAGE_BUFFER, LIFE_POSITIONS);
+        velocities().bindBase(GL_SHADER_STORAGE_BUFFER, LIFE_VELOCITIES);
+        m_health.bindBase(GL_SHADER_STORAGE_BUFFER, LIFE_HEALTH);
+        p.dispatchThreads(m_count);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        if (m_count <= kMaxCheckpointParticles) {
+          const std::size_t bytes = positions().size();
+          for (gl::Buffer* b : {&m_pendingPos, &m_pendingVel, &m_goodPos, &m_goodVel})
+            if (b->size() != bytes) *b = gl::Buffer(bytes);
+          m_ops.copy(positions(), m_pendingPos, bytes);
+          m_ops.copy(velocities(), m_pendingVel, velocities().size());
+        }
+        m_pendingSteps = m_steps;
+      },
+      m_health);
+}
+
+void Life::judge(const CheckCycle::Words& w, double time) {
+  float maxSpeed = 0;
+  std::memcpy(&maxSpeed, &w[1], sizeof maxSpeed);
+  if (w[0] == 0 && maxSpeed <= speedBound()) {
+    std::swap(m_pendingPos, m_goodPos);
+    std::swap(m_pendingVel, m_goodVel);
+    m_goodTime = time;
+    m_goodSteps = m_pendingSteps;
+    m_hasGood = bool(m_goodPos);
+    return;
+  }
+  char what[200];
+  if (w[0] > 0)
+    std::snprintf(what, sizeof what, "%u particles are NaN or infinite", w[0]);
+  else
+    std::snprintf(what, sizeof what,
+                  "a particle moves at %.3g units/s, more than 10 grid cells per step (%.3g units/s)", double(maxSpeed),
+                  speedBound());
+  char text[512];
+  std::snprintf(
+      text, sizeof text, "life diverged by t = %.4f s: %s (%s, %s, dt = %.3g s)%s", time, what,
+      kIntegratorNames[int(m_params.integrator)], kStorageNames[int(m_storage)], double(m_lastDt),
+      m_hasGood ? "; halve the time step and resume from the last good state" : "; halve the time step and reset");
+  m_divergence = DivergenceReport{text, time};
+}
+
+bool Life::recover() {
+  if (!m_divergence || !m_hasGood) return false;
+  m_ops.copy(m_goodPos, m_pos[m_current], m_goodPos.size());
+  m_ops.copy(m_goodVel, m_vel[m_current], m_goodVel.size());
+  m_time = m_goodTime;
+  m_steps = m_goodSteps;
+  m_needAccel = true;                                 // Verlet re-evaluates a(x) for the restored state
+  m_params.maxDt = std::max(0.5f * m_lastDt, 1e-4f);  // each frame steps min(maxDt, frame): halve what ran
+  m_lastDt = m_params.maxDt;
+  m_divergence.reset();
+  m_checks.restart();
+  return true;
+}
+
+void Life::flushChecks() {
+  m_checks.flush([this](const CheckCycle::Words& w, double time) { judge(w, time); });
 }
 
 std::uint64_t Life::countCandidatePairs() {
@@ -177,10 +339,11 @@ std::uint64_t Life::countCandidatePairs() {
 std::string Life::status() const {
   char buf[256];
   const glm::uvec3 dims = m_grid->dims();
-  std::snprintf(buf, sizeof buf, "%zu particles, %d species, box %gx%g, grid %ux%u (cell %.3g), %s%s", m_count,
+  std::snprintf(buf, sizeof buf, "%zu particles, %d species, box %gx%g, grid %ux%u (cell %.3g), %s%s%s", m_count,
                 m_rules.speciesCount(), double(m_rules.size.x), double(m_rules.size.y), dims.x, dims.y,
                 double(m_grid->params().cellSize), m_rules.loopingBorders ? "looping" : "walls",
-                m_params.integrator == Integrator::Verlet ? ", Verlet" : "");
+                m_params.integrator == Integrator::Verlet ? ", Verlet" : "",
+                m_storage == Storage::Fp16 ? ", fp16 state" : "");
   return buf;
 }
 

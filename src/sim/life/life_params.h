@@ -10,8 +10,13 @@ namespace tidepool::life {
 enum class Integrator { Euler, Verlet };
 constexpr std::array<const char*, 2> kIntegratorNames = {"euler", "verlet"};
 
+// How the state is stored (shaders/life/state.glsl); it is always computed in fp32.
+enum class Storage { Fp32, Fp16 };
+constexpr std::array<const char*, 2> kStorageNames = {"fp32", "fp16"};
+
 struct Params {
   Integrator integrator = Integrator::Euler;  // euler: the article's symplectic Euler
+  Storage storage = Storage::Fp32;            // fp16: packHalf2x16 positions and velocities, half the bytes
   float maxDt = 0.025f;                       // s: dt = min(maxDt, frame seconds), one step per frame
   float pushStrength = 20.0f;                 // mouse brush: velocity added per unit of drag (the article's 20)
 };
@@ -19,6 +24,10 @@ struct Params {
 inline void visit(ParamVisitor& v, Params& p) {
   v.choice({"integrator", "Integrator", "euler: symplectic Euler (the article's); verlet: velocity Verlet"},
            p.integrator, kIntegratorNames);
+  v.choice({"storage", "Storage",
+            "fp32: 32 B of state per particle; fp16 (packHalf2x16, computed in fp32): 16 B, positions and velocities "
+            "rounded to 11 significant bits every step (docs/ACCURACY.md, life-precision)"},
+           p.storage, kStorageNames);
   v.real({"max_dt", "Max dt", "s; each frame advances min(max dt, frame time) in one step"}, p.maxDt, 1e-4f, 0.1f);
   v.real({"push_strength", "Push strength", "mouse brush: velocity per unit of drag"}, p.pushStrength, 0.0f, 200.0f);
 }

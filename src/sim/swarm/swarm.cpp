@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <glm/gtc/packing.hpp>
 
 #include "base/error.h"
@@ -15,6 +16,10 @@ std::string mib(double bytes) {
   std::snprintf(buf, sizeof buf, "%.0f MiB", bytes / (1024.0 * 1024.0));
   return buf;
 }
+
+constexpr std::size_t kMaxCheckpointParticles = std::size_t(16) << 20;  // larger runs keep no copy to go back to
+constexpr int kMaxSubsteps = 64;                                        // of the "substeps" parameter
+constexpr double kSpeedBoundFactor = 10;  // the watch's bound over the static field's largest speed
 
 std::string countText(std::size_t n) {
   if (n % (1 << 20) == 0) return std::to_string(n >> 20) + "M";
@@ -52,7 +57,7 @@ void visit(ParamVisitor& v, SwarmParams& p) {
   v.choice({"integrator", "Integrator", "explicit Euler, symplectic Euler (the seed's), velocity Verlet, RK4"},
            p.integrator, kIntegratorNames);
   v.real({"speed", "Speed", "simulated seconds per real second"}, p.speed, 0.0f, 4.0f);
-  v.integer({"substeps", "Substeps", "integrator steps per frame"}, p.substeps, 1, 64);
+  v.integer({"substeps", "Substeps", "integrator steps per frame"}, p.substeps, 1, kMaxSubsteps);
   v.real({"gravity", "Gravity", "world units/s^2, downwards"}, p.gravity, 0.0f, 10.0f);
   v.real({"friction", "Friction", "1/s: velocity decays as exp(-friction t), whatever the frame rate"}, p.friction,
          0.0f, 10.0f);
@@ -64,7 +69,10 @@ void visit(ParamVisitor& v, SwarmParams& p) {
   v.integer({"seed", "Seed", "random initial positions"}, p.seed, 0, 1000000);
 }
 
-Swarm::Swarm(gl::ShaderLibrary& shaders, const SwarmParams& params) : m_shaders(shaders), m_params(params) { reset(); }
+Swarm::Swarm(gl::ShaderLibrary& shaders, const SwarmParams& params)
+    : m_shaders(shaders), m_ops(shaders), m_params(params) {
+  reset();
+}
 
 void Swarm::allocate(std::size_t count, Storage storage) {
   if (count == m_count && storage == m_storage && m_state) return;
@@ -74,11 +82,16 @@ void Swarm::allocate(std::size_t count, Storage storage) {
   m_state = gl::Buffer(count * swarmBytesPerParticle(storage));
   m_count = count;
   m_storage = storage;
+  m_pending = gl::Buffer();  // checkpoints are made on use, at the new size
+  m_good = gl::Buffer();
 }
 
 void Swarm::reset() {
   allocate(std::size_t(m_params.particles), m_params.storage);
   m_time = 0.0;
+  m_hasGood = false;
+  m_divergence.reset();
+  m_checks.restart();
   gl::Program& init =
       m_shaders.program({"swarm/swarm_init.comp"}, {{"STORAGE_FP16", m_storage == Storage::Fp16 ? "1" : "0"}});
   init.use();
@@ -93,6 +106,9 @@ void Swarm::upload(std::span<const SwarmParticle> particles) {
   allocate(particles.size(), m_params.storage);
   m_params.particles = int(particles.size());  // a later reset() keeps this count
   m_time = 0.0;
+  m_hasGood = false;
+  m_divergence.reset();
+  m_checks.restart();
   if (m_storage == Storage::Fp32) {
     m_state.upload(particles);
     return;
@@ -152,6 +168,78 @@ void Swarm::step(double dt) {
   p.dispatchThreads(m_count);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   m_time += dt;
+  m_lastDt = dt;
+}
+
+double Swarm::speedBound() const {
+  double strength = std::abs(double(m_params.mouseStrength));
+  for (const Attractor& a : attractorsAt(m_time)) strength += std::abs(a.strength);
+  const double diagonal2 = 4.0 * (m_aspect * m_aspect + 1.0), eps = std::max(double(m_params.epsilon), 1e-6);
+  const double fall = strength * std::log((diagonal2 + eps) / eps) + 4.0 * std::abs(double(m_params.gravity));
+  return kSpeedBoundFactor * std::sqrt(fall);
+}
+
+void Swarm::watch() {
+  if (!m_health) m_health = gl::Buffer(4 * sizeof(GLuint));
+  m_checks.frame(
+      m_time, !m_divergence && m_count > 0, [this](const CheckCycle::Words& w, double time) { judge(w, time); },
+      [this] {
+        m_health.fillZero();
+        gl::Program& p =
+            m_shaders.program({"swarm/health.comp"}, {{"STORAGE_FP16", m_storage == Storage::Fp16 ? "1" : "0"}});
+        p.use();
+        p.set("uCount", unsigned(m_count));
+        m_state.bindBase(GL_SHADER_STORAGE_BUFFER, SWARM_STATE_BINDING);
+        m_health.bindBase(GL_SHADER_STORAGE_BUFFER, SWARM_HEALTH_BINDING);
+        p.dispatchThreads(m_count);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        if (m_count > kMaxCheckpointParticles) return;
+        for (gl::Buffer* b : {&m_pending, &m_good})
+          if (b->size() != m_state.size()) *b = gl::Buffer(m_state.size());
+        m_ops.copy(m_state, m_pending, m_state.size());  // the state this check judges
+      },
+      m_health);
+}
+
+void Swarm::judge(const CheckCycle::Words& w, double time) {
+  float maxSpeed = 0;
+  std::memcpy(&maxSpeed, &w[1], sizeof maxSpeed);
+  if (w[0] == 0 && maxSpeed <= speedBound()) {
+    std::swap(m_pending, m_good);
+    m_goodTime = time;
+    m_hasGood = bool(m_good);
+    return;
+  }
+  char what[200];
+  if (w[0] > 0)
+    std::snprintf(what, sizeof what, "%u particles are NaN or infinite", w[0]);
+  else
+    std::snprintf(what, sizeof what,
+                  "a particle moves at %.3g units/s, ten times what the attractors can give one at rest (%.3g units/s)",
+                  double(maxSpeed), speedBound());
+  char text[512];
+  std::snprintf(
+      text, sizeof text, "swarm diverged by t = %.4f s: %s (%s, %s, dt = %.3g s)%s", time, what,
+      kIntegratorNames[std::size_t(m_params.integrator)], kStorageNames[std::size_t(m_storage)], m_lastDt,
+      m_hasGood ? "; halve the time step and resume from the last good state" : "; halve the time step and reset");
+  m_divergence = DivergenceReport{text, time};
+}
+
+bool Swarm::recover() {
+  if (!m_divergence || !m_hasGood) return false;
+  m_ops.copy(m_good, m_state, m_good.size());
+  m_time = m_goodTime;
+  if (m_params.substeps < kMaxSubsteps)
+    m_params.substeps *= 2;  // same simulated time per frame, half the step
+  else
+    m_params.speed *= 0.5f;
+  m_divergence.reset();
+  m_checks.restart();
+  return true;
+}
+
+void Swarm::flushChecks() {
+  m_checks.flush([this](const CheckCycle::Words& w, double time) { judge(w, time); });
 }
 
 }  // namespace tidepool::sim

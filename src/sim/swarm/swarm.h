@@ -6,6 +6,7 @@
 //   Swarm swarm(shaders, params);   // allocates params.particles and scatters them (reset)
 //   swarm.setAspect(16.0 / 9.0);    // world = ndc * (aspect, 1)
 //   swarm.step(1.0 / 120.0);        // one integrator step of simulated time
+//   swarm.watch();                  // once per frame: the divergence watch (non-blocking)
 //
 // Step: world x = pos * (aspect, 1); integrate (x, v) with forces evaluated at the right times
 // (t, t + dt/2, t + dt); v *= exp(-friction dt); back to NDC; mirror at the walls if bouncing.
@@ -17,7 +18,9 @@
 #include <vector>
 
 #include "gl/buffer.h"
+#include "gl/buffer_ops.h"
 #include "gl/shader_library.h"
+#include "sim/divergence.h"
 #include "sim/swarm/attractors.h"
 #include "sim/swarm/swarm_params.h"
 
@@ -58,11 +61,26 @@ class Swarm {
   const gl::Buffer& state() const { return m_state; }
   std::size_t stateBytes() const { return m_count * swarmBytesPerParticle(m_storage); }
 
+  // Divergence watch (sim/divergence.h). watch() once per frame, after the frame's steps: a
+  // non-blocking check every 8 calls. recover() goes back to the last good state with half the
+  // time step (twice the substeps, or half the speed at 64 substeps); false if there is none.
+  void watch();
+  std::optional<DivergenceReport> divergence() const { return m_divergence; }
+  bool recover();
+  void flushChecks();  // waits for the check in flight (end of a headless run)
+  // World units/s: ten times the fastest a particle starting at rest anywhere in the box can
+  // move in the static field of the attractors now (preset, extra and mouse at full strength):
+  // sqrt(S·ln((D² + ε')/ε') + 2·g·2), S = Σ|s_k|, D = the box diagonal, ε' = max(ε, 10⁻⁶).
+  double speedBound() const;
+  double lastDt() const { return m_lastDt; }  // s, of the last step
+
  private:
   void allocate(std::size_t count, Storage storage);
   gl::Program& stepProgram() const;
+  void judge(const CheckCycle::Words& words, double time);
 
   gl::ShaderLibrary& m_shaders;
+  gl::BufferOps m_ops;  // checkpoint copies
   SwarmParams m_params;
   gl::Buffer m_state;
   std::size_t m_count = 0;
@@ -70,6 +88,14 @@ class Swarm {
   double m_time = 0.0, m_aspect = 16.0 / 9.0;
   std::optional<glm::dvec2> m_mouse;
   std::vector<Attractor> m_extra;
+  double m_lastDt = 0;
+  // Divergence watch: reduced values, the state copied at the check, the last state judged good
+  // (no copies above kMaxCheckpointParticles: a blow-up is still reported, recovery is refused).
+  gl::Buffer m_health, m_pending, m_good;
+  CheckCycle m_checks{8};
+  double m_goodTime = 0;
+  bool m_hasGood = false;
+  std::optional<DivergenceReport> m_divergence;
 };
 
 }  // namespace tidepool::sim

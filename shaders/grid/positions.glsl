@@ -1,0 +1,22 @@
+// The particle arrays the grid reads and moves (src/grid/grid.h, GridParams::layout):
+//   HALF_POSITIONS = 0: positions vec4 (xyz + w); reordered arrays of 16-byte elements
+//   HALF_POSITIONS = 1: 2D positions uvec2 (packHalf2x16(xy), any word); 8-byte elements
+// Elements are moved as unsigned words, so every bit pattern arrives unchanged.
+#ifndef GRID_POSITIONS_GLSL
+#define GRID_POSITIONS_GLSL
+
+#ifndef HALF_POSITIONS
+#define HALF_POSITIONS 0
+#endif
+
+#if HALF_POSITIONS
+#define GridElement uvec2
+layout(std430, binding = GRID_POSITIONS) readonly buffer Positions { uvec2 positions[]; };
+vec3 particlePosition(uint i) { return vec3(unpackHalf2x16(positions[i].x), 0.0); }
+#else
+#define GridElement uvec4
+layout(std430, binding = GRID_POSITIONS) readonly buffer Positions { vec4 positions[]; };
+vec3 particlePosition(uint i) { return positions[i].xyz; }
+#endif
+
+#endif
