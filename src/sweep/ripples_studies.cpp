@@ -110,6 +110,7 @@ Result stability(Env& env) {
 Study ballsRestitutionStudy();  // balls_studies.cpp
 Study swarmOrbitStudy();        // swarm_studies.cpp
 Study swarmPrecisionStudy();
+Study ballsSettleProvisionalStudy();  // auto_settle_study.cpp (until balls-settle lands)
 
 const std::vector<Study>& studies() {
   static const std::vector<Study> table = {
@@ -118,6 +119,7 @@ const std::vector<Study>& studies() {
       swarmPrecisionStudy(),
       {"ripples-dispersion", "phase-speed error vs cost per Courant number (wave rule)", dispersion},
       {"ripples-stability", "noise growth and phase error vs Courant number, with the 1/sqrt(2) limit", stability},
+      ballsSettleProvisionalStudy(),
   };
   return table;
 }
