@@ -18,7 +18,7 @@ struct Settle {
 };
 
 // A column of about 450 balls (r = 1 cm, HCP block 10 x 10 x 30 cm) released touching in a
-// 10 cm x 10 cm tube, t_c = 10 ms, e = 0.5, `seconds` of settling at step dt.
+// 10 cm x 10 cm tube, t_c = 2 ms, e = 0.5 (the penalty law ignores both), `seconds` of settling at step dt.
 Settle measureSettle(gl::ShaderLibrary& shaders, balls::Contact contact, balls::Integrator integrator, double dt,
                      double seconds = 0.5);
 

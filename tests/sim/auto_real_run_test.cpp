@@ -127,10 +127,11 @@ TEST_F(AutoRealRun, BallsPickMeetsItsRestitutionErrorInFewerStepsThanTheMostAccu
   EXPECT_LT(1.0 / picked.dt, 1.0 / best.dt);  // steps per simulated second
 }
 
-// maxOverlap reads balls-settle.csv (or, until that study lands, balls-settle-provisional.csv).
+// maxOverlap reads balls-settle.csv (or, until that study lands, balls-settle-provisional.csv);
+// the scene's t_c is the settling column's, so the pick runs there as it would in the scene.
 TEST_F(AutoRealRun, BallsOverlapPickMeetsItsBoundOnTheSettlingColumn) {
   const Scene scene = parseScene(io::parseJson(R"({"model": "balls", "method": "auto",
-      "accuracy": {"maxOverlap": 0.1}, "params": {"engine": {"dt": 0.0005, "substeps": 8}}})",
+      "accuracy": {"maxOverlap": 0.1}, "params": {"engine": {"dt": 0.0005, "substeps": 8, "contact_time": 0.002}}})",
                                                "s.json"),
                                  "s.json");
   ASSERT_TRUE(scene.autoChoice);
