@@ -56,6 +56,20 @@ void livePlots(const Stage& stage, const UiState& ui) {
 }
 }  // namespace
 
+namespace {
+// "method": "auto": what was picked at load, against what, and what the most accurate would cost.
+void autoChoicePanel(const AutoChoice& c) {
+  ImGui::PushTextWrapPos(0.0f);
+  ImGui::TextColored(ImVec4(0.55f, 0.8f, 1.0f, 1.0f), "method auto picked %s", c.picked.c_str());
+  ImGui::TextDisabled("%s for %s; %.3g ms per simulated s (most accurate: %.3g, %s)", c.errors.c_str(),
+                      c.accuracy.c_str(), c.costMsPerSimS, c.mostAccurateCost, c.mostAccurate.c_str());
+  ImGui::TextDisabled("data: %s, measured on %s", c.studies.c_str(), c.device.c_str());
+  ImGui::PopTextWrapPos();
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("set at load; editing the parameters below leaves the accuracy unchecked");
+}
+}  // namespace
+
 bool drawMainPanel(const Scene& scene, Stage& stage, const gl::GpuProfiler& profiler, UiState& ui) {
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSizeConstraints(ImVec2(340, 0), ImVec2(520, 10000));
@@ -98,6 +112,7 @@ bool drawMainPanel(const Scene& scene, Stage& stage, const gl::GpuProfiler& prof
 
   bool changed = false;
   if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (scene.autoChoice) autoChoicePanel(*scene.autoChoice);
     ParamEditor editor;
     stage.visitParams(editor);
     changed = editor.changed();

@@ -1,6 +1,10 @@
+#include <algorithm>
+
+#include "base/error.h"
 #include "cli/commands.h"
 #include "gl/context.h"
 #include "gl/info.h"
+#include "scene/auto_method.h"
 #include "sweep/sweep.h"
 
 namespace tidepool::cli {
@@ -10,24 +14,32 @@ Command addSweep(CLI::App& app) {
   struct Opts {
     std::string backend = "auto", csvDir = std::string(TIDEPOOL_SOURCE_DIR) + "/bench/results",
                 chartDir = std::string(TIDEPOOL_SOURCE_DIR) + "/docs/charts";
-    bool quick = false, noChart = false, fromCsv = false;
+    bool quick = false, noChart = false, fromCsv = false, ship = false;
   };
   auto o = std::make_shared<Opts>();
   sub->add_option("--backend", o->backend, "auto, egl or osmesa")->check(CLI::IsMember({"auto", "egl", "osmesa"}));
   sub->add_option("--csv-dir", o->csvDir, "folder for <study>.csv");
   sub->add_option("--chart-dir", o->chartDir, "folder for <study>.png and .svg");
   sub->add_flag("--quick", o->quick, "fewer points (smoke runs)");
-  auto* noChart = sub->add_flag("--no-chart", o->noChart, "write the CSV only");
+  sub->add_flag("--no-chart", o->noChart, "write the CSV only");
   sub->add_flag("--from-csv", o->fromCsv,
                 "run nothing: redraw the chart from <csv-dir>/<study>.csv and .chart.json (rows measured "
-                "elsewhere, e.g. on the GPU machine with --no-chart)")
-      ->excludes(noChart);
+                "elsewhere, e.g. on the GPU machine with --no-chart); with --no-chart and --ship, only ship");
+  sub->add_flag("--ship", o->ship,
+                "also copy the CSV to assets/accuracy/<study>.csv, the data \"method\": \"auto\" picks from");
   sub->require_subcommand(1);
   sub->fallthrough();
   auto chosen = std::make_shared<std::vector<std::pair<CLI::App*, const sweep::Study*>>>();
   for (const sweep::Study& s : sweep::studies()) chosen->emplace_back(sub->add_subcommand(s.name, s.summary), &s);
   return {
       sub, [o, chosen] {
+        if (o->ship) {  // refuse before a long run, not after it
+          if (o->quick) throw Error("--ship: --quick rows are smoke-test figures; ship a full run");
+          const std::vector<std::string> shipped = shippedStudies();
+          for (const auto& [app, study] : *chosen)
+            if (app->parsed() && std::find(shipped.begin(), shipped.end(), study->name) == shipped.end())
+              throw Error(std::string("--ship: method auto reads no data from ") + study->name);
+        }
         if (o->fromCsv) {
           for (const auto& [app, study] : *chosen) {
             if (!app->parsed()) continue;
@@ -35,10 +47,13 @@ Command addSweep(CLI::App& app) {
             std::string device;
             const sweep::Result result = sweep::readResult(
                 csv, std::filesystem::path(o->csvDir) / (std::string(study->name) + ".chart.json"), device);
-            const std::filesystem::path base = std::filesystem::path(o->chartDir) / study->name;
-            sweep::drawChart(result, device, base);
-            std::printf("redrew %s.png and .svg from %zu rows measured on %s\n", base.c_str(), result.rows.size(),
-                        device.c_str());
+            if (!o->noChart) {
+              const std::filesystem::path base = std::filesystem::path(o->chartDir) / study->name;
+              sweep::drawChart(result, device, base);
+              std::printf("redrew %s.png and .svg from %zu rows measured on %s\n", base.c_str(), result.rows.size(),
+                          device.c_str());
+            }
+            if (o->ship) std::printf("shipped %s\n", shipStudy(study->name, csv).c_str());
             return 0;
           }
           return 2;
@@ -54,6 +69,7 @@ Command addSweep(CLI::App& app) {
           sweep::writeCsv(result, study->name, env.device, csv);
           sweep::writeChartSpec(result, std::filesystem::path(o->csvDir) / (std::string(study->name) + ".chart.json"));
           std::printf("wrote %zu rows to %s\n", result.rows.size(), csv.c_str());
+          if (o->ship) std::printf("shipped %s\n", shipStudy(study->name, csv).c_str());
           if (!o->noChart) {
             const std::filesystem::path base = std::filesystem::path(o->chartDir) / study->name;
             sweep::drawChart(result, env.device, base);

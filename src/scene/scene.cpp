@@ -9,6 +9,8 @@ void visit(ParamVisitor& v, Scene& s) {
   v.text({"name", "Name", "shown in the window title"}, s.name);
   v.text({"description", "Description", "what the scene shows"}, s.description);
   v.text({"model", "Model", "blank (more models land with their issues)"}, s.model);
+  v.choice({"method", "Method", "params: as the params say; auto: the cheapest measured method meeting accuracy"},
+           s.method, kMethodModeNames);
   if (v.beginGroup({"clip", "Clip", "default headless clip"})) {
     v.integer({"frames", "Frames", "frames rendered headless"}, s.clip.frames, 1, 1000000);
     v.integer({"fps", "FPS", "frames per simulated second"}, s.clip.fps, 1, 1000);
@@ -30,32 +32,40 @@ fs::path resolveScenePath(const std::string& arg) {
   throw Error("scene '" + arg + "' not found: neither a file nor a name in assets/scenes (known: " + known + ")");
 }
 
-Scene parseScene(const io::Json& json, const std::string& where) {
+namespace {
+// The header's keys; "params" and "accuracy" are objects read by the model and by auto.
+Scene parseHeader(const io::Json& json, const std::string& where) {
   if (!json.is_object()) throw Error(where + ": a scene must be a JSON object {...}");
   Scene scene;
   io::Json header = json;
-  if (auto it = header.find("params"); it != header.end()) {
-    scene.params = *it;
-    header.erase("params");
-  }
+  for (auto [key, target] : {std::pair{"params", &scene.params}, std::pair{"accuracy", &scene.accuracy}})
+    if (auto it = header.find(key); it != header.end()) {
+      *target = *it;
+      header.erase(it);
+    }
   readParams(
       header, [&](ParamVisitor& v) { visit(v, scene); }, where + ": scene");
   return scene;
 }
+}  // namespace
 
-Scene loadScene(const fs::path& file) {
-  Scene scene = parseScene(io::readJsonFile(file), file.string());
-  scene.file = file;
-  if (scene.name.empty()) scene.name = file.stem().string();
+Scene parseScene(const io::Json& json, const std::string& where) {
+  Scene scene = parseHeader(json, where);
+  resolveAutoMethod(scene, where);
   return scene;
 }
 
+Scene loadScene(const fs::path& file) { return loadScene(file, io::Json()); }
+
 Scene loadScene(const fs::path& file, const io::Json& overrides) {
-  Scene scene = loadScene(file);
+  Scene scene = parseHeader(io::readJsonFile(file), file.string());
+  scene.file = file;
+  if (scene.name.empty()) scene.name = file.stem().string();
   if (overrides.is_object() && !overrides.empty()) {
     if (!scene.params.is_object()) scene.params = io::Json::object();
     for (const auto& [key, value] : overrides.items()) scene.params[key] = value;
   }
+  resolveAutoMethod(scene, file.string());  // after the overrides, which it must not silently undo
   return scene;
 }
 

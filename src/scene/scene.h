@@ -4,15 +4,20 @@
 //     "params": { "color": [0.1, 0.2, 0.3] },
 //     "clip": { "frames": 90, "fps": 30, "width": 960, "height": 540 } }
 //
+// A scene may instead state the accuracy it needs and let the engine pick the method:
+//   "method": "auto", "accuracy": { "energyDrift": 1e-3 }   (scene/auto_method.h)
+//
 // The window, the headless renderer, benchmarks and tests load the same files.
 #pragma once
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "io/assets.h"
 #include "io/json.h"
+#include "scene/auto_method.h"
 #include "scene/stage.h"
 
 namespace tidepool {
@@ -29,6 +34,9 @@ struct Scene {
   std::string model = "blank";
   io::Json params;  // the model's parameters, validated when the stage is created
   ClipSettings clip;
+  MethodMode method = MethodMode::Params;  // "auto": pick the method from `accuracy` (scene/auto_method.h)
+  io::Json accuracy;                       // e.g. {"energyDrift": 1e-3}; null when not stated
+  std::optional<AutoChoice> autoChoice;    // what "auto" picked (already written into params)
 };
 
 void visit(ParamVisitor& v, Scene& scene);  // every key except "params"

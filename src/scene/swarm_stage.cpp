@@ -44,8 +44,9 @@ class SwarmStage final : public Stage {
     syncColors();
     auto scope = profiler.scope("swarm.step");
     const sim::SwarmParams& p = m_swarm.params();
-    const double dt = double(p.speed) * frameSeconds / p.substeps;
-    for (int s = 0; s < p.substeps; ++s) m_swarm.step(dt);
+    const int substeps = sim::swarmSubsteps(p, frameSeconds);
+    const double dt = double(p.speed) * frameSeconds / substeps;
+    for (int s = 0; s < substeps; ++s) m_swarm.step(dt);
     m_swarm.watch();
     m_clock += frameSeconds;
   }

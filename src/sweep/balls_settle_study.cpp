@@ -16,6 +16,7 @@
 #include <limits>
 
 #include "sim/balls/balls.h"
+#include "sweep/balls_settle_study.h"
 #include "sweep/sweep.h"
 
 namespace tidepool::sweep {
@@ -28,7 +29,7 @@ constexpr float kRadius = 0.01f, kGravity = 9.81f;
 constexpr int kLayers = 6;
 constexpr float kDamping = 60.0f;     // 1/s
 constexpr double kSettleTime = 0.25;  // s
-constexpr float kStepsPerContact = 20;
+constexpr float kStepsPerContact = float(kSettleStepsPerContact);
 
 struct Method {
   std::string name;
@@ -64,7 +65,14 @@ std::vector<glm::vec4> cubicStack(int across) {
   return out;
 }
 
-Row settle(gl::ShaderLibrary& shaders, int across, const Method& m, double dt) {
+// One settle: the public figures, and the study's other columns.
+struct Outcome {
+  Settle settle;
+  double meanOverlap = 0, kineticPerBall = 0;
+  std::size_t count = 0;
+};
+
+Outcome run(gl::ShaderLibrary& shaders, int across, const Method& m, double dt) {
   balls::Balls model(shaders, settleBlock(across, m, dt));
   const std::vector<glm::vec4> stack = cubicStack(across);
   model.upload(stack, std::vector<glm::vec4>(stack.size(), glm::vec4(0.0f)));
@@ -72,23 +80,34 @@ Row settle(gl::ShaderLibrary& shaders, int across, const Method& m, double dt) {
   const long steps = std::lround(kSettleTime / dt);
   const double ms = timedSteps(model, steps);
   const balls::Stats end = model.stats();
-  const double n = double(start.count);
-  const double energyDrift = (end.kinetic + end.potential - start.potential) / (n * kGravity * kRadius);
+  const double n = double(start.count), unit = n * kGravity * kRadius;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  Outcome o;
+  o.settle.energyDrift = (end.kinetic + end.potential - start.potential) / unit;
+  o.settle.maxOverlap = end.nonFinite ? nan : end.maxOverlap;
+  o.settle.stable = end.nonFinite == 0 && end.outside == 0 && end.count == start.count &&
+                    std::isfinite(o.settle.energyDrift) && end.maxOverlap <= 1.0;
+  o.settle.costMsPerSimS = ms / (double(steps) * dt);
+  o.meanOverlap = end.nonFinite ? nan : end.meanOverlap;
+  o.kineticPerBall = end.nonFinite ? nan : end.kinetic / unit;
+  o.count = start.count;
+  return o;
+}
+
+Row settle(gl::ShaderLibrary& shaders, int across, const Method& m, double dt) {
+  const Outcome o = run(shaders, across, m, dt);
   Row row;
   row.method = m.name;
   row.dt = dt;
-  row.resolution = "N = " + std::to_string(start.count) + ", " + std::to_string(kLayers) + " layers";
-  row.costMsPerSimS = ms / (steps * dt);
-  row.stable = end.nonFinite == 0 && end.outside == 0 && end.count == start.count && std::isfinite(energyDrift) &&
-               end.maxOverlap <= 1.0;
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  row.metrics = {end.nonFinite ? nan : end.maxOverlap, end.nonFinite ? nan : end.meanOverlap, energyDrift,
-                 end.nonFinite ? nan : end.kinetic / (n * kGravity * kRadius),
+  row.resolution = "N = " + std::to_string(o.count) + ", " + std::to_string(kLayers) + " layers";
+  row.costMsPerSimS = o.settle.costMsPerSimS;
+  row.stable = o.settle.stable;
+  row.metrics = {o.settle.maxOverlap, o.meanOverlap, o.settle.energyDrift, o.kineticPerBall,
                  m.contact == balls::Contact::SpringDashpot ? kStepsPerContact * dt : 0.0};
   row.x = row.costMsPerSimS;
   row.y = row.metrics[0];
   std::printf("  %-40s dt = %.3g s: max overlap %.3g r, energy drift %+.3g, %s\n", m.name.c_str(), dt, row.y,
-              energyDrift, row.stable ? "stable" : "UNSTABLE");
+              o.settle.energyDrift, row.stable ? "stable" : "UNSTABLE");
   std::fflush(stdout);
   return row;
 }
@@ -123,6 +142,11 @@ Result settleStudy(Env& env) {
 }
 
 }  // namespace
+
+Settle measureSettle(gl::ShaderLibrary& shaders, balls::Contact contact, balls::Integrator integrator, double dt,
+                     int across) {
+  return run(shaders, across, {"", contact, integrator, {}}, dt).settle;
+}
 
 Study ballsSettleStudy() {
   return {"balls-settle", "max overlap and energy drift of a settled water block vs cost, per contact law",

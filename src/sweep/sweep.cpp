@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "base/error.h"
+#include "io/csv.h"
 #include "io/json.h"
 #include "io/video.h"
 
@@ -100,25 +101,9 @@ Result readResult(const fs::path& csv, const fs::path& spec, std::string& device
   std::istringstream lines(io::readTextFile(csv));
   std::string line;
   std::vector<std::string> header;
-  auto split = [](const std::string& text) {  // RFC 4180 fields: quoted commas, doubled quotes
-    std::vector<std::string> out(1);
-    bool inQuotes = false;
-    for (std::size_t i = 0; i < text.size(); ++i) {
-      const char ch = text[i];
-      if (ch == '"' && inQuotes && i + 1 < text.size() && text[i + 1] == '"')
-        out.back() += text[++i];
-      else if (ch == '"')
-        inQuotes = !inQuotes;
-      else if (ch == ',' && !inQuotes)
-        out.emplace_back();
-      else
-        out.back() += ch;
-    }
-    return out;
-  };
   for (int number = 1; std::getline(lines, line); ++number) {
     if (line.empty()) continue;
-    const std::vector<std::string> f = split(line);
+    const std::vector<std::string> f = io::splitCsvLine(line);
     const std::string where = csv.string() + ":" + std::to_string(number);
     if (header.empty()) {
       header = f;

@@ -58,6 +58,8 @@ void visit(ParamVisitor& v, SwarmParams& p) {
            p.integrator, kIntegratorNames);
   v.real({"speed", "Speed", "simulated seconds per real second"}, p.speed, 0.0f, 4.0f);
   v.integer({"substeps", "Substeps", "integrator steps per frame"}, p.substeps, 1, kMaxSubsteps);
+  v.real({"max_dt", "Max step", "s per integrator step at most, by adding substeps (0: off); method auto sets it"},
+         p.maxDt, 0.0f, 1.0f);
   v.real({"gravity", "Gravity", "world units/s^2, downwards"}, p.gravity, 0.0f, 10.0f);
   v.real({"friction", "Friction", "1/s: velocity decays as exp(-friction t), whatever the frame rate"}, p.friction,
          0.0f, 10.0f);

@@ -5,7 +5,9 @@
 // world = ndc * (aspect, 1), so a circle stays round in a wide image. Time is simulated seconds.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 
 #include "scene/param.h"
 
@@ -28,7 +30,8 @@ struct SwarmParams {
   Storage storage = Storage::Fp32;  // changing it resets
   Integrator integrator = Integrator::SymplecticEuler;
   float speed = 0.5f;             // simulated seconds per real second
-  int substeps = 1;               // integrator steps per frame
+  int substeps = 1;               // integrator steps per frame (at least)
+  float maxDt = 0.0f;             // s: 0 none; else more substeps until one step is at most this ("method": "auto")
   float gravity = 0.3f;           // world units / s^2, downwards (seed: 3 x 0.1)
   float friction = 0.06f;         // 1/s: v *= exp(-friction dt) (seed: 0.9995 per 1/120 s)
   float epsilon = 0.01f;          // world units^2: softening of the 1/r force
@@ -39,5 +42,12 @@ struct SwarmParams {
 };
 
 void visit(ParamVisitor& v, SwarmParams& p);
+
+// Integrator steps in a frame of `frameSeconds` real seconds: substeps, or more where maxDt asks.
+inline int swarmSubsteps(const SwarmParams& p, double frameSeconds) {
+  const double simSeconds = double(p.speed) * frameSeconds;
+  const int needed = p.maxDt > 0 ? int(std::ceil(simSeconds / p.maxDt - 1e-9)) : 1;
+  return std::max(p.substeps, needed);
+}
 
 }  // namespace tidepool::sim

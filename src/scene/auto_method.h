@@ -1,0 +1,62 @@
+// "method": "auto": a scene states the accuracy it needs and the engine picks the cheapest
+// measured (method, dt, substeps, precision) that meets it, from the study data shipped in
+// assets/accuracy/<study>.csv (`tidepool sweep <study> --ship` regenerates it).
+//
+//   { "model": "swarm", "method": "auto", "accuracy": { "energyDrift": 1e-3 }, "params": {...} }
+//
+//   model    accuracy key       study (assets/accuracy/)           metric column
+//   swarm    energyDrift        swarm-orbit, swarm-precision       energy_error
+//   ripples  phaseError         ripples-dispersion                 phase_error  (+ wavelength or wavelengthCells)
+//   balls    maxOverlap         balls-settle                       max_overlap
+//   balls    energyDrift        balls-settle                       energy_drift
+//   balls    restitutionError   balls-restitution                  restitution_error
+//
+// The pick is written into the scene's params (integrator, storage, dt, substeps, Courant
+// target, grid), logged at load and shown in the window's parameter panel.
+#pragma once
+
+#include <array>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "io/json.h"
+
+namespace tidepool {
+
+struct Scene;
+
+// "method" in a scene: "params" runs the params as written; "auto" picks from scene.accuracy.
+enum class MethodMode { Params, Auto };
+inline constexpr std::array<const char*, 2> kMethodModeNames = {"params", "auto"};
+
+// What "method": "auto" picked, for the log and the UI.
+struct AutoChoice {
+  std::string accuracy;           // the bounds as stated: "energyDrift <= 0.001"
+  std::string picked;             // the settings in words: "rk4 fp32, dt <= 0.0628 s"
+  std::string errors;             // its measured (worst-case) errors: "energyDrift 3.74e-05"
+  double costMsPerSimS = 0;       // its cost in the study's column
+  std::string mostAccurate;       // the most accurate measured setting, in words
+  double mostAccurateCost = 0;    // and its cost
+  std::string studies, device;    // where the numbers come from
+  io::Json settings;              // the keys written into the scene's params
+  io::Json mostAccurateSettings;  // what the most accurate would have written (tests compare costs)
+  std::string summary() const;    // one line: "auto: picked ... (...; most accurate ... costs ...)"
+};
+
+// Resolves "method": "auto" in place: validates scene.accuracy, picks from the shipped data,
+// writes the pick into scene.params and sets scene.autoChoice. A scene without "method": "auto"
+// must not state accuracy. Throws Error (one line naming the key) for unknown keys, keys of
+// another model, out-of-range values, missing data and bounds no measured setting meets.
+// `where` prefixes messages (the scene file).
+void resolveAutoMethod(Scene& scene, const std::string& where);
+
+// Studies whose CSVs method auto reads: the ones `tidepool sweep <study> --ship` accepts.
+std::vector<std::string> shippedStudies();
+std::filesystem::path accuracyDir();  // assets/accuracy
+
+// Checks that `csv` (a sweep's bench/results/<study>.csv) holds the columns method auto reads
+// and copies it to assets/accuracy/<study>.csv; returns the destination. Throws Error.
+std::filesystem::path shipStudy(const std::string& study, const std::filesystem::path& csv);
+
+}  // namespace tidepool

@@ -1,0 +1,226 @@
+#include "scene/auto_models.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+#include "base/error.h"
+#include "sim/balls/balls_params.h"
+#include "sim/ripples/ripples_params.h"
+#include "sim/swarm/swarm_params.h"
+
+namespace tidepool::automethod {
+namespace {
+
+// A number from the scene's params, or the model's default when absent (a wrong type is left
+// for the stage's own validation to report).
+double param(const io::Json& params, const char* pointer, double fallback) {
+  const io::Json::json_pointer p(pointer);
+  return params.is_object() && params.contains(p) && params.at(p).is_number() ? params.at(p).get<double>() : fallback;
+}
+std::string param(const io::Json& params, const char* pointer, const std::string& fallback) {
+  const io::Json::json_pointer p(pointer);
+  return params.is_object() && params.contains(p) && params.at(p).is_string() ? params.at(p).get<std::string>()
+                                                                              : fallback;
+}
+
+template <std::size_t N>
+bool known(const std::array<const char*, N>& names, const std::string& name) {
+  return std::find_if(names.begin(), names.end(), [&](const char* n) { return name == n; }) != names.end();
+}
+
+// What every row holds: cost, stability and the metric columns of the stated bounds.
+Candidate basics(const ModelInput& in, const io::CsvTable& t, std::size_t row) {
+  Candidate c;
+  c.cost = t.number(row, "gpu_ms_per_sim_s");
+  c.stable = t.number(row, "stable") != 0;
+  for (const Source* s : in.metrics) c.errors.push_back(std::abs(t.number(row, s->column)));  // signed drifts
+  return c;
+}
+
+}  // namespace
+
+const std::vector<Source>& sources() {
+  static const std::vector<Source> table = {
+      {"swarm",
+       "energyDrift",
+       "energy_error",
+       {"swarm-orbit", "swarm-precision"},
+       "max |dE|/s over 10 orbits of the reference orbit, relative to the attractor strength"},
+      {"ripples",
+       "phaseError",
+       "phase_error",
+       {"ripples-dispersion"},
+       "|c_measured/c - 1| of a plane wave at the scene's cells per wavelength"},
+      {"balls",
+       "maxOverlap",
+       "max_overlap_r",
+       {"balls-settle"},
+       "largest overlap of two balls in the settled water block, fraction of r"},
+      {"balls",
+       "energyDrift",
+       "energy_drift",
+       {"balls-settle"},
+       "|energy of the settled block - the rigid stack's| per ball, in units of m g r"},
+      {"balls",
+       "restitutionError",
+       "restitution_error",
+       {"balls-restitution"},
+       "|e_measured/e - 1| of one spring-dashpot bounce"},
+  };
+  return table;
+}
+
+std::vector<std::string> extraKeys(const std::string& model) {
+  if (model == "ripples") return {"wavelength", "wavelengthCells"};
+  return {};
+}
+
+std::vector<std::string> rescaledParams(const std::string& model) {
+  if (model == "ripples") return {"/width", "/height", "/cell_size"};
+  if (model == "balls") return {"/engine/dt", "/engine/substeps"};
+  return {};
+}
+
+// Swarm rows: method "<integrator>" (fp32) or "<integrator> <precision>"; dt is absolute. The
+// stage keeps each step at most max_dt by adding substeps.
+std::vector<Candidate> swarmCandidates(const ModelInput& in) {
+  std::vector<Candidate> out;
+  for (const auto& [study, t] : in.tables.studies)
+    for (std::size_t r = 0; r < t.rows(); ++r) {
+      std::istringstream words(t.text(r, "method"));
+      std::string integrator, storage = "fp32", extra;
+      words >> integrator;
+      words >> storage;
+      if (words >> extra || !known(sim::kIntegratorNames, integrator) || !known(sim::kStorageNames, storage))
+        throw Error(t.where(r) + ": method '" + t.text(r, "method") + "' is not '<swarm integrator> [fp32|fp16]'");
+      Candidate c = basics(in, t, r);
+      const double dt = t.number(r, "dt");
+      c.family = integrator + " " + storage;
+      c.step = dt;
+      c.label = c.family + ", dt <= " + formatValue(dt) + " s";
+      c.settings = {{"integrator", integrator}, {"storage", storage}, {"max_dt", dt}};
+      out.push_back(std::move(c));
+    }
+  return out;
+}
+
+// Ripples rows: a Courant number C and cells per wavelength N. With "wavelengthCells" the grid is
+// the scene's and only C is picked (from rows at the largest measured N not above it); with
+// "wavelength" (m) the pick also sets the cell size to wavelength / N, keeping the pool's size.
+std::vector<Candidate> ripplesCandidates(const ModelInput& in) {
+  const ripples::Params defaults;
+  const std::string rule = param(in.params, "/rule", std::string(ripples::kRuleNames[int(defaults.rule)]));
+  if (rule != "wave")
+    throw Error(in.where + ": the dispersion data measures the wave rule; this scene uses rule '" + rule + "'");
+  const bool fixedGrid = in.accuracy.contains("wavelengthCells");
+  if (fixedGrid == in.accuracy.contains("wavelength"))
+    throw Error(in.where +
+                ": state the shortest wave that must keep its speed, as wavelength (m; the pick may change "
+                "the grid) or wavelengthCells (cells of the scene's grid), one of them");
+  const double width = param(in.params, "/width", defaults.width),
+               height = param(in.params, "/height", defaults.height);
+  const double cellSize = param(in.params, "/cell_size", defaults.cellSize);
+  const double courantCap = kStabilityMargin * ripples::kCourantLimit2D;
+  const io::CsvTable& t = in.tables.studies.at(0).second;
+  double cells = 0;  // fixed grid: the measured N used for the scene
+  if (fixedGrid) {
+    const io::Json& given = in.accuracy.at("wavelengthCells");
+    if (!given.is_number() || !(given.get<double>() >= 2 && given.get<double>() <= 1e5))
+      throw Error(in.where + ".wavelengthCells = " + given.dump() + " is out of range [2, 100000]");
+    double coarsest = INFINITY;
+    for (std::size_t r = 0; r < t.rows(); ++r) {
+      const double n = t.number(r, "cells_per_wavelength");
+      coarsest = std::min(coarsest, n);
+      if (n <= given.get<double>()) cells = std::max(cells, n);
+    }
+    if (cells == 0)
+      throw Error(in.where + ".wavelengthCells " + formatValue(given.get<double>()) +
+                  " is below the coarsest measured (" + formatValue(coarsest) + " cells per wavelength)");
+  } else {
+    const io::Json& given = in.accuracy.at("wavelength");
+    if (!given.is_number() || !(given.get<double>() > 0 && given.get<double>() <= 1e4))
+      throw Error(in.where + ".wavelength = " + given.dump() + " is out of range (0, 10000] m");
+  }
+  std::vector<Candidate> out;
+  for (std::size_t r = 0; r < t.rows(); ++r) {
+    const double n = t.number(r, "cells_per_wavelength"), courant = t.number(r, "courant");
+    if (courant > courantCap || (fixedGrid && n != cells)) continue;
+    Candidate c = basics(in, t, r);
+    c.family = formatValue(n) + " cells per wavelength";
+    c.step = courant;
+    c.settings = {{"auto_substeps", true}, {"courant_target", courant / ripples::kCourantLimit2D}};
+    c.label = "C <= " + formatValue(courant) + " at " + c.family;
+    if (!fixedGrid) {
+      const double dx = in.accuracy.at("wavelength").get<double>() / n;
+      const int w = int(std::lround(width * cellSize / dx)), h = int(std::lround(height * cellSize / dx));
+      if (w < 16 || h < 16 || w > 4096 || h > 4096 || dx < 1e-4 || dx > 10) continue;  // the grid's ranges
+      c.settings["cell_size"] = dx;
+      c.settings["width"] = w;
+      c.settings["height"] = h;
+      c.label += " (" + std::to_string(w) + "x" + std::to_string(h) + " cells of " + formatValue(dx) + " m)";
+    }
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
+// Balls rows: balls-restitution (method = integrator, spring-dashpot, steps_per_contact; dt follows
+// the scene's contact time) or balls-settle (method = "<contact>[ tc = K dt], <integrator>", dt:
+// the overlap there is set by the contact's stiffness, so a spring-dashpot pick also sets the
+// contact time to K dt). The frame keeps its simulated time (the scene's dt x substeps): substeps
+// grow until a step is at most the picked dt.
+std::vector<Candidate> ballsCandidates(const ModelInput& in) {
+  const balls::Params defaults;
+  const double sceneContactTime = param(in.params, "/engine/contact_time", defaults.contactTime);
+  const double frame =
+      param(in.params, "/engine/dt", defaults.dt) * param(in.params, "/engine/substeps", defaults.substeps);
+  std::vector<Candidate> out;
+  for (const auto& [study, t] : in.tables.studies)
+    for (std::size_t r = 0; r < t.rows(); ++r) {
+      const std::string method = t.text(r, "method");
+      std::string contact = "spring-dashpot", integrator = method;
+      double stepsPerContact = 0;  // settle rows: t_c = stepsPerContact x dt
+      if (study != "balls-restitution") {
+        const std::size_t comma = method.find(", ");
+        std::istringstream words(method.substr(0, comma));
+        std::string tc, eq, dtWord;
+        words >> contact;
+        if (words >> tc >> eq >> stepsPerContact >> dtWord && !(tc == "tc" && eq == "=" && dtWord == "dt"))
+          stepsPerContact = -1;
+        integrator = comma == std::string::npos ? "" : method.substr(comma + 2);
+      }
+      if (!known(balls::kContactNames, contact) ||
+          (!integrator.empty() && !known(balls::kIntegratorNames, integrator)) || stepsPerContact < 0)
+        throw Error(t.where(r) + ": method '" + method + "' is not '<balls contact>[ tc = K dt][, <integrator>]'");
+      Candidate c = basics(in, t, r);
+      double dt = t.number(r, "dt"), contactTime = sceneContactTime;
+      std::string stepWords = "dt <= " + formatValue(dt) + " s";
+      c.step = dt;
+      if (contact == "spring-dashpot" && stepsPerContact > 0) {
+        contactTime = stepsPerContact * dt;
+        stepWords += ", t_c = " + formatValue(contactTime) + " s";
+      } else if (contact == "spring-dashpot" && t.has("steps_per_contact")) {
+        const double steps = t.number(r, "steps_per_contact");
+        dt = sceneContactTime / steps;
+        stepWords = "dt <= " + formatValue(dt) + " s (t_c/dt = " + formatValue(steps) + ")";
+        c.step = 1.0 / steps;
+      }
+      // Symplectic Euler and Verlet keep an undamped spring while omega0 dt < 2: dt < 0.64 t_c.
+      if (contact == "spring-dashpot" && integrator != "explicit-euler" &&
+          dt > kStabilityMargin * 2.0 / std::numbers::pi * contactTime)
+        continue;
+      const int substeps = std::max(1, int(std::ceil(frame / dt - 1e-6)));
+      if (substeps > 1000) continue;  // the param's range
+      c.family = method;
+      c.label = contact + (integrator.empty() ? "" : ", " + integrator) + ", " + stepWords;
+      c.settings = {{"engine", {{"contact", contact}, {"dt", frame / substeps}, {"substeps", substeps}}}};
+      if (!integrator.empty()) c.settings["engine"]["integrator"] = integrator;
+      if (stepsPerContact > 0 && contact == "spring-dashpot") c.settings["engine"]["contact_time"] = contactTime;
+      out.push_back(std::move(c));
+    }
+  return out;
+}
+
+}  // namespace tidepool::automethod

@@ -1,0 +1,53 @@
+// The choice behind "method": "auto": among measured settings (rows of the shipped study data),
+// the cheapest whose error meets every stated bound, with a safety margin.
+//
+//   candidates: {rk4 fp32 dt 0.063: cost 0.30, error 3.7e-5}, {verlet fp32 dt 0.016: cost 0.95, error 5.0e-4} ...
+//   selectCheapest(candidates, {{"energyDrift", 1e-3}}, "scene.accuracy")  ->  rk4 fp32 dt 0.063
+//
+// Two margins, both documented in docs/ACCURACY.md ("Picking the method"):
+//  - the engine may take smaller steps than the pick (whole substeps per frame), and smaller is not
+//    always better (RK4 in fp32 gains round-off; the 2D leapfrog's phase error grows as C falls),
+//    so a row counts with the worst error measured in its family at its step or any smaller one;
+//  - the scene is not the study's reference problem, so that worst error must stay under the
+//    bound divided by kMetricMargin.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "io/json.h"
+
+namespace tidepool::automethod {
+
+inline constexpr double kMetricMargin = 2.0;  // measured error x 2 must meet the bound
+
+struct Bound {
+  std::string key;  // accuracy key, e.g. "energyDrift"
+  double value;     // the largest error the scene accepts
+};
+
+struct Candidate {
+  std::string label;           // the settings in words: "rk4 fp32, dt <= 0.0628 s"
+  std::string family;          // rows of one family differ only in `step`
+  double step = 0;             // what the engine may make smaller than picked (dt, Courant number)
+  double cost = 0;             // GPU ms per simulated second (the study's column)
+  std::vector<double> errors;  // measured, one per bound
+  bool stable = true;
+  io::Json settings;               // what the pick writes into the scene's params
+  std::vector<double> guaranteed;  // worst error of the family at this step or below (filled by selectCheapest)
+};
+
+struct Selection {
+  const Candidate* chosen = nullptr;
+  const Candidate* mostAccurate = nullptr;  // the smallest measured error (first bound) among stable rows
+};
+
+// Fills `guaranteed` and returns the cheapest stable candidate with guaranteed x kMetricMargin <=
+// bound for every bound. Throws Error when none does: "<where>.<key> <bound> cannot be met by any
+// measured setting; best is <label> with <error> (needs <= <bound / margin> ...)".
+Selection selectCheapest(std::vector<Candidate>& candidates, const std::vector<Bound>& bounds,
+                         const std::string& where);
+
+std::string formatValue(double v);  // 3 significant digits: 0.000498 -> "0.000498", 1e-06 -> "1e-06"
+
+}  // namespace tidepool::automethod
