@@ -8,6 +8,8 @@ namespace tidepool {
 
 void visit(ParamVisitor& v, BallsViewParams& p) {
   v.choice({"mode", "Mode", "balls: shaded spheres; water: screen-space water surface"}, p.mode, kBallsModeNames);
+  v.choice({"raster", "Raster", "sphere impostors drawn by compute kernels (atomics) or by the raster units"}, p.raster,
+           kBallsRasterNames);
   v.choice({"debug", "Debug view", "a G-buffer channel instead of the final picture"}, p.debug, kBallsDebugNames);
   v.color({"water_color", "Water colour", "linear RGB: ball albedo, water tint"}, p.waterColor);
   v.real({"absorption", "Absorption", "1/m: this inverse thickness transmits the water colour"}, p.absorption, 0.0f,
@@ -148,7 +150,7 @@ void BallsView::render(const BallsScene& scene, const BallsCamera& camera, Rende
   }
   if (scene.water.count == 0) return;
   const bool thickness = water || m_params.debug == BallsDebug::Thickness;
-  m_gbuffer.draw(scene.water, camera, target.depth(), thickness, profiler);
+  m_gbuffer.draw(scene.water, camera, target.depth(), thickness, m_params.raster, profiler);
   m_blurred = water && m_params.blurRadius > 0.0f;
   if (m_blurred) {
     auto scope = profiler.scope("balls.blur");
