@@ -350,3 +350,40 @@ TEST_F(BallsViewTest, BlurFollowsASlopeAndKeepsItFlatUpToASilhouette) {
   EXPECT_LT(after, 0.2 * before) << "the sloping surface is smoothed";
   EXPECT_LT(worstNearEdge, 0.0012) << "m: at the silhouette the surface stays on the plane (noise 1 mm)";
 }
+
+TEST_F(BallsViewTest, BlurSmoothsTheBallsUpToTheWatersTopEdge) {
+  // The water's top edge seen from the side: balls of radius 6 px on a square 8-px lattice, the
+  // top row's centres at y = 36, each a bump of 4 mm on a plane 1 m away (its rim behind its
+  // front). Kernels cut short where a row crosses the scalloped edge left the top row's bumps
+  // standing, a picket fence of normals; the line fit over what each side has must not.
+  const int w = 96, h = 48, top = 36;
+  const float radius = 6.0f, bump = 0.004f;
+  std::vector<glm::vec4> in(std::size_t(w) * h, glm::vec4(0.0f));
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      for (int cy = 4; cy <= top; cy += 8)
+        for (int cx = 4; cx < w; cx += 8) {
+          const float d = std::hypot(float(x - cx), float(y - cy)) / radius;
+          if (d > 1.0f) continue;
+          const float depth = 1.0f + bump * (1.0f - std::sqrt(1.0f - d * d));
+          glm::vec4& p = in[std::size_t(y) * w + x];
+          if (p.a == 0.0f || depth < p.a) p = {0.0f, 0.0f, 0.1f, depth};
+        }
+  gl::Texture2D source(w, h, GL_RGBA32F);
+  source.upload(GL_RGBA, GL_FLOAT, in.data());
+  WaterBlur blur(shaders());
+  blur.run(source, 12.0f, 0.05f, 2);  // 12 px kernels, well above the bumps' 4 mm steps
+  const std::vector<glm::vec4> out = pixels(blur.result());
+  // Squared depth differences between neighbours along x in the band of the top row of balls.
+  const auto roughness = [&](const std::vector<glm::vec4>& img) {
+    double sum = 0;
+    for (int y = top - 6; y < h; ++y)
+      for (int x = 8; x < w - 9; ++x) {
+        const glm::vec4 a = img[std::size_t(y) * w + x], b = img[std::size_t(y) * w + x + 1];
+        if (a.a > 0.0f && b.a > 0.0f) sum += std::pow(double(b.a - a.a), 2);
+      }
+    return sum;
+  };
+  for (std::size_t i = 0; i < in.size(); ++i) ASSERT_EQ(out[i].a > 0.0f, in[i].a > 0.0f) << "coverage is kept";
+  EXPECT_LT(roughness(out), 0.05 * roughness(in)) << "the top row's bumps are smoothed away";
+}
