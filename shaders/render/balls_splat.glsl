@@ -51,7 +51,7 @@ ivec2 axisRange(float c, float z, float focal, int size) {
   const float inv = 1.0 / (z * z - r2);
   const float sLo = (c * z - w) * inv, sHi = (c * z + w) * inv;
   const float halfSize = 0.5 * float(size);
-  return ivec2(floor(halfSize * (sLo * focal + 1.0) - 0.5) - 4.0, ceil(halfSize * (sHi * focal + 1.0) - 0.5) + 4.0);
+  return ivec2(floor(halfSize * (sLo * focal + 1.0) - 0.5) - 1.0, ceil(halfSize * (sHi * focal + 1.0) - 0.5) + 1.0);
 }
 
 // The ball's pixel box (inclusive, clipped to the image); false when nothing can be drawn: the

@@ -22,7 +22,7 @@ namespace tidepool {
 class BallsSplat {
  public:
   static constexpr float kThicknessSteps = 4096.0f;  // fixed-point units per ball radius
-  static constexpr unsigned kMaxBig = 65535;          // balls the big list holds (one group each)
+  static constexpr unsigned kMaxBig = 65535;         // balls the big list holds (one group each)
 
   explicit BallsSplat(gl::ShaderLibrary& shaders);
   // surface RGBA32F, foam R16F and depth R32F of the camera's size receive the frame; thickness

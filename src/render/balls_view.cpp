@@ -11,6 +11,9 @@ void visit(ParamVisitor& v, BallsViewParams& p) {
   v.choice({"raster", "Raster", "sphere impostors drawn by compute kernels (atomics) or by the raster units"}, p.raster,
            kBallsRasterNames);
   v.choice({"debug", "Debug view", "a G-buffer channel instead of the final picture"}, p.debug, kBallsDebugNames);
+  v.flag({"debug_unblurred", "Debug before blur",
+          "water: the debug views show the G-buffer before the blur (off: the blurred one the water uses)"},
+         p.debugUnblurred);
   v.color({"water_color", "Water colour", "linear RGB: ball albedo, water tint"}, p.waterColor);
   v.real({"absorption", "Absorption", "1/m: this inverse thickness transmits the water colour"}, p.absorption, 0.0f,
          200.0f);
@@ -160,7 +163,9 @@ void BallsView::render(const BallsScene& scene, const BallsCamera& camera, Rende
                m_params.depthThreshold * scene.water.radius, m_params.blurIterations);
   }
   auto scope = profiler.scope("balls.compose");
-  m_compose.draw(composedSurface(), m_gbuffer, m_params, camera, scene.water.radius, target);
+  const bool raw = m_params.debug != BallsDebug::Final && m_params.debugUnblurred;
+  m_compose.draw(raw ? m_gbuffer.surface() : composedSurface(), m_gbuffer, m_params, camera, scene.water.radius,
+                 target);
 }
 
 }  // namespace tidepool

@@ -250,6 +250,40 @@ TEST_F(BallsViewTest, ComputeRasterDrawsMoreBigBallsThanItsListHolds) {
 INSTANTIATE_TEST_SUITE_P(Rasters, BallsRasterTest, ::testing::Values(BallsRaster::Compute, BallsRaster::Fragment),
                          [](const auto& info) { return std::string(kBallsRasterNames[int(info.param)]); });
 
+TEST_F(BallsViewTest, DebugViewsShowTheBlurredOrTheUnblurredGBuffer) {
+  // The depth view is (view depth - near) / (far - near) as grey: in water mode it shows the
+  // blurred surface, or with debug_unblurred the G-buffer the blur read.
+  std::vector<glm::vec4> pos;
+  std::mt19937 rng(4);
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+  for (int i = 0; i < 300; ++i) pos.emplace_back(0.6f * u(rng), 0.6f * u(rng), -2.5f + 0.5f * u(rng), 1.0f);
+  const gl::Buffer balls{std::span<const glm::vec4>(pos)};
+  Frame f(shaders(), BallsRaster::Compute);
+  f.view.params().debug = BallsDebug::Depth;
+  for (bool unblurred : {false, true}) {
+    SCOPED_TRACE(unblurred ? "unblurred" : "blurred");
+    f.view.params().debugUnblurred = unblurred;
+    f.render(balls, pos.size(), 0.1f);
+    const std::vector<std::uint8_t> rgba = f.target.readRgba8();  // top row first
+    const std::vector<glm::vec4> raw = pixels(f.view.gbuffer().surface()), blurred = pixels(f.view.composedSurface());
+    int matched = 0, differ = 0;
+    for (int y = 0; y < kSize; ++y)
+      for (int x = 0; x < kSize; ++x) {
+        const std::size_t i = std::size_t(y) * kSize + x;
+        if (raw[i].a <= 0.0f) continue;
+        const float grey = rgba[(std::size_t(kSize - 1 - y) * kSize + x) * 4] / 255.0f;
+        const auto shade = [](float depth) { return (depth - kNear) / (kFar - kNear); };
+        const float want = shade(unblurred ? raw[i].a : blurred[i].a),
+                    other = shade(unblurred ? blurred[i].a : raw[i].a);
+        EXPECT_NEAR(grey, want, 1.0f / 255.0f) << x << "," << y;
+        matched += std::abs(grey - want) < 1.0f / 255.0f;
+        differ += std::abs(other - want) > 2.0f / 255.0f;
+      }
+    EXPECT_GT(matched, 100);
+    EXPECT_GT(differ, 10) << "the blur moved the depth where the two views can tell";
+  }
+}
+
 TEST_F(BallsViewTest, BlurSmoothsFlatRegionsAndKeepsDepthSteps) {
   // Left half at 1 m (R around 0.3), right half at 2 m (R around 0.7), both with noise.
   const int w = 96, h = 32, step = 48;
