@@ -36,7 +36,11 @@ struct SphereHit {
 bool intersectSphere(vec3 quadPoint, vec3 centre, float radius, out SphereHit hit) {
   const vec3 dir = normalize(quadPoint);
   const float b = dot(dir, centre);
-  const float disc = b * b - (dot(centre, centre) - radius * radius);
+  // (half chord)^2 from the ray's distance to the centre, not as b^2 - |c|^2 + r^2: that form
+  // cancels (metres squared of which r^2 is a ten-thousandth) and adds millimetres of chord at
+  // the silhouettes.
+  const vec3 off = b * dir - centre;
+  const float disc = radius * radius - dot(off, off);
   if (disc < 0.0) return false;
   const float root = sqrt(disc);
   hit.point = (b - root) * dir;

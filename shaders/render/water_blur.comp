@@ -3,8 +3,9 @@
 // A work group filters one run of a row (or column): it loads the run plus an apron of APRON
 // texels on each side into shared memory once, then every output texel filters from there.
 // The kernel radius follows the on-screen ball size at that pixel (scale x projected radius,
-// sigma = radius / 2, at most APRON); the kernel stops at empty texels and at depth steps between
-// neighbours above the threshold, so silhouettes and layers stay sharp. All four channels are
+// sigma = radius / 2, at most APRON); each side of the kernel stops at an empty texel or a depth
+// step between neighbours above the threshold, so silhouettes and layers stay sharp, and a
+// weighted line fit (not the mean) keeps one-sided kernels from tilting the surface. All four channels are
 // blurred: the compose pass takes the water's normals from differences of the smoothed depth (A),
 // as in screen-space fluid rendering (van der Laan, Green & Sainz 2009), so the balls' bumps melt
 // into one surface.
@@ -48,25 +49,35 @@ void main() {
   const int taps = int(radius);
   const float sigma = max(0.5 * radius, 0.5);
   const float k = -0.5 / (sigma * sigma);
-  // Both sides are walked outwards. A depth step above the threshold between neighbours ends that
-  // side (later taps there count as the centre itself): walking, rather than comparing with the
-  // centre, still smooths a surface seen at a grazing angle (centimetres of depth across the
-  // kernel, millimetres per texel) while a droplet in front of the pool stays apart. An empty
-  // texel on either side ends both: the kernel stays symmetric up to a silhouette, so the surface
-  // there is smoothed less but not tilted toward the inside (which streaks it).
-  vec4 sum = centre;
-  float weights = 1.0;
+  // Both sides are walked outwards; a side ends at an empty texel (a silhouette) or at a depth
+  // step above the threshold between neighbours (walking, rather than comparing with the centre,
+  // still smooths a surface seen at a grazing angle: centimetres of depth across the kernel,
+  // millimetres per texel, while a droplet in front of the pool stays apart). What is left is
+  // often one-sided, so the value is not the weighted mean but the weighted least-squares line
+  // through the taps, read at the centre: the mean of a one-sided kernel on a sloping surface
+  // tilts it toward the inside, while the line keeps a plane where it is. This lets the kernel
+  // reach into the surface below the water's top edge, whose balls a kernel cut short at the
+  // silhouette left as a row of unsmoothed bumps (a picket fence of normals). With S_j the
+  // weighted sums of x^j and T_j those of x^j v: v(0) = (S2 T0 - S1 T1) / (S0 S2 - S1^2).
+  float s0 = 1.0, s1 = 0.0, s2 = 0.0;
+  vec4 t0 = centre, t1 = vec4(0.0);
   float lastA = centre.a, lastB = centre.a;  // depth of the last texel taken on each side, 0 = ended
-  for (int i = 1; i <= taps; ++i) {
+  for (int i = 1; i <= taps && (lastA > 0.0 || lastB > 0.0); ++i) {
+    const float w = exp(k * float(i * i)), x = float(i);
     const vec4 a = tile[local - i], b = tile[local + i];
-    if ((lastA > 0.0 && a.a <= 0.0) || (lastB > 0.0 && b.a <= 0.0)) break;  // a silhouette: end both
-    if (lastA > 0.0 && abs(a.a - lastA) >= uDepthThreshold) lastA = 0.0;
-    if (lastB > 0.0 && abs(b.a - lastB) >= uDepthThreshold) lastB = 0.0;
-    const float w = exp(k * float(i * i));
-    sum += w * ((lastA > 0.0 ? a : centre) + (lastB > 0.0 ? b : centre));
-    weights += 2.0 * w;
-    if (lastA > 0.0) lastA = a.a;
-    if (lastB > 0.0) lastB = b.a;
+    if (lastA > 0.0 && a.a > 0.0 && abs(a.a - lastA) >= uDepthThreshold) lastA = 0.0;
+    if (lastB > 0.0 && b.a > 0.0 && abs(b.a - lastB) >= uDepthThreshold) lastB = 0.0;
+    if (lastA > 0.0 && a.a > 0.0) {
+      s0 += w, s1 -= w * x, s2 += w * x * x;
+      t0 += w * a, t1 -= w * x * a;
+      lastA = a.a;
+    }
+    if (lastB > 0.0 && b.a > 0.0) {
+      s0 += w, s1 += w * x, s2 += w * x * x;
+      t0 += w * b, t1 += w * x * b;
+      lastB = b.a;
+    }
   }
-  imageStore(uTarget, texel, sum / weights);
+  const float det = s0 * s2 - s1 * s1;  // 0 when only the centre was taken
+  imageStore(uTarget, texel, det > 1e-6 * s0 * s2 ? (s2 * t0 - s1 * t1) / det : t0 / s0);
 }

@@ -1,7 +1,8 @@
-// `tidepool bench render [scene] --n 1M --size 1920x1080`: median GPU ms per pass of the balls
-// renderer (scene, gbuffer, thickness, blur, compose) in both modes, simulation excluded. The
-// balls are the scene's (--n sets the count of lattice scenes), settled for a few steps first so
-// they are not a perfect lattice, and seen from the scene's camera.
+// `tidepool bench render [scene] --n 1M --size 1920x1080 [--raster compute|fragment|both]`: median
+// GPU ms per pass of the balls renderer in both modes, simulation excluded: scene, the sphere
+// impostors (fragment raster: gbuffer, thickness; compute raster: depth splat with the thickness,
+// id, resolve), blur, compose. The balls are the scene's (--n sets the count of lattice scenes),
+// settled for a few steps first so they are not a perfect lattice, and seen from the scene's camera.
 #include <cstdio>
 #include <regex>
 
@@ -15,7 +16,7 @@ namespace tidepool::bench {
 namespace {
 
 struct Options {
-  std::string scene = "bench-lattice", sizes = "1M", image = "1920x1080";
+  std::string scene = "bench-lattice", sizes = "1M", image = "1920x1080", raster = "both";
   int settle = 20;  // simulation steps before timing
 };
 
@@ -27,7 +28,15 @@ glm::ivec2 parseImage(const std::string& text) {
   return {std::stoi(m[1]), std::stoi(m[2])};
 }
 
-constexpr const char* kPasses[] = {"balls.scene", "balls.gbuffer", "balls.thickness", "balls.blur", "balls.compose"};
+constexpr const char* kPasses[] = {"balls.scene",    "balls.gbuffer",       "balls.thickness", "balls.splat.depth",
+                                   "balls.splat.id", "balls.splat.resolve", "balls.blur",      "balls.compose"};
+
+std::vector<BallsRaster> parseRaster(const std::string& text) {
+  if (text == "both") return {BallsRaster::Compute, BallsRaster::Fragment};
+  for (std::size_t i = 0; i < kBallsRasterNames.size(); ++i)
+    if (text == kBallsRasterNames[i]) return {BallsRaster(i)};
+  throw Error("--raster '" + text + "' is not compute, fragment or both");
+}
 
 int run(Env& env, const Options& o) {
   const Scene scene = loadScene(resolveScenePath(o.scene));
@@ -36,10 +45,12 @@ int run(Env& env, const Options& o) {
   OrbitCameraParams camera;
   ballsView(scene, look, camera);
   const glm::ivec2 image = parseImage(o.image);
+  const std::vector<BallsRaster> rasters = parseRaster(o.raster);
   const bool lattice = base.fill == balls::Fill::Lattice;
   std::printf("render benchmark on %s: scene %s, %dx%d, %d settling steps, medians of %d frames\n", env.device.c_str(),
               scene.name.c_str(), image.x, image.y, o.settle, env.common.repeats);
-  Table table({"balls", "mode", "scene ms", "gbuffer ms", "thickness ms", "blur ms", "compose ms", "frame ms"});
+  Table table({"balls", "mode", "raster", "scene ms", "gbuffer ms", "thickness ms", "splat ms", "id ms", "resolve ms",
+               "blur ms", "compose ms", "frame ms"});
   const std::vector<std::size_t> counts = lattice ? parseSizes(o.sizes) : std::vector<std::size_t>{0};
   for (std::size_t n : counts) {
     balls::Params p = base;
@@ -50,15 +61,18 @@ int run(Env& env, const Options& o) {
     BallsView view(env.shaders);
     view.params() = look;
     view.camera().params() = camera;
-    for (BallsMode mode : {BallsMode::Balls, BallsMode::Water}) {
-      view.params().mode = mode;
-      const PassTimes t =
-          timePasses(env.common.warmup, env.common.repeats, [&](gl::GpuProfiler& p) { view.render(model, target, p); });
-      std::vector<std::string> row = {std::to_string(model.count()), kBallsModeNames[int(mode)]};
-      for (const char* pass : kPasses) row.push_back(t.has(pass) ? fixed(t.median(pass), 4) : "-");
-      row.push_back(fixed(t.frameMs(), 4));
-      table.add(row);
-    }
+    for (BallsRaster raster : rasters)
+      for (BallsMode mode : {BallsMode::Balls, BallsMode::Water}) {
+        view.params().raster = raster;
+        view.params().mode = mode;
+        const PassTimes t = timePasses(env.common.warmup, env.common.repeats,
+                                       [&](gl::GpuProfiler& p) { view.render(model, target, p); });
+        std::vector<std::string> row = {std::to_string(model.count()), kBallsModeNames[int(mode)],
+                                        kBallsRasterNames[int(raster)]};
+        for (const char* pass : kPasses) row.push_back(t.has(pass) ? fixed(t.median(pass), 4) : "-");
+        row.push_back(fixed(t.frameMs(), 4));
+        table.add(row);
+      }
   }
   table.print();
   if (const std::string caveat = timingCaveat(env.device); !caveat.empty())
@@ -76,6 +90,7 @@ Benchmark addRenderBench(CLI::App& bench) {
   sub->add_option("--n", o->sizes, "ball counts for lattice scenes, e.g. 65536,1M");
   sub->add_option("--size", o->image, "image WIDTHxHEIGHT (default 1920x1080)");
   sub->add_option("--settle", o->settle, "simulation steps before timing (default 20)");
+  sub->add_option("--raster", o->raster, "sphere impostors: compute, fragment or both (default both)");
   return {sub, [o](Env& env) { return run(env, *o); }};
 }
 

@@ -4,14 +4,15 @@
 
 namespace tidepool {
 
-BallsGBuffer::BallsGBuffer(gl::ShaderLibrary& shaders) : m_shaders(shaders) {}
+BallsGBuffer::BallsGBuffer(gl::ShaderLibrary& shaders) : m_shaders(shaders), m_splat(shaders) {}
 
 void BallsGBuffer::resize(int width, int height) {
   if (m_surface && m_surface.width() == width && m_surface.height() == height) return;
   m_surface = gl::Texture2D(width, height, GL_RGBA32F);
   m_foam = gl::Texture2D(width, height, GL_R16F);
   m_depth = gl::Texture2D(width, height, GL_DEPTH_COMPONENT32F);
-  for (gl::Texture2D* t : {&m_surface, &m_foam, &m_depth}) t->setFilter(GL_NEAREST, GL_NEAREST);
+  m_depthImage = gl::Texture2D(width, height, GL_R32F);
+  for (gl::Texture2D* t : {&m_surface, &m_foam, &m_depth, &m_depthImage}) t->setFilter(GL_NEAREST, GL_NEAREST);
   m_impostorFbo = gl::Framebuffer({&m_surface, &m_foam}, &m_depth);
   m_thicknessFbo = gl::Framebuffer();
   m_thicknessDepthId = 0;
@@ -28,9 +29,24 @@ void BallsGBuffer::drawSpheres(gl::Program& program, const SphereBatch& balls, c
   glDrawArrays(GL_TRIANGLES, 0, GLsizei(6 * balls.count));
 }
 
+std::vector<float> BallsGBuffer::readDepth() const {
+  std::vector<float> out(std::size_t(depth().width()) * std::size_t(depth().height()));
+  depth().download(m_compute ? GL_RED : GL_DEPTH_COMPONENT, GL_FLOAT, out.data());
+  return out;
+}
+
 void BallsGBuffer::draw(const SphereBatch& balls, const BallsCamera& camera, const gl::Texture2D& sceneDepth,
-                        bool thickness, gl::GpuProfiler& profiler) {
+                        bool thickness, BallsRaster raster, gl::GpuProfiler& profiler) {
   resize(camera.width, camera.height);
+  m_compute = raster == BallsRaster::Compute;
+  if (m_compute)
+    m_splat.draw(balls, camera, sceneDepth, thickness, m_surface, m_foam, m_depthImage, profiler);
+  else
+    drawFragments(balls, camera, sceneDepth, thickness, profiler);
+}
+
+void BallsGBuffer::drawFragments(const SphereBatch& balls, const BallsCamera& camera, const gl::Texture2D& sceneDepth,
+                                 bool thickness, gl::GpuProfiler& profiler) {
   m_vao.bind();
   glDisable(GL_BLEND);
   {

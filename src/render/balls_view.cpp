@@ -8,7 +8,12 @@ namespace tidepool {
 
 void visit(ParamVisitor& v, BallsViewParams& p) {
   v.choice({"mode", "Mode", "balls: shaded spheres; water: screen-space water surface"}, p.mode, kBallsModeNames);
+  v.choice({"raster", "Raster", "sphere impostors drawn by compute kernels (atomics) or by the raster units"}, p.raster,
+           kBallsRasterNames);
   v.choice({"debug", "Debug view", "a G-buffer channel instead of the final picture"}, p.debug, kBallsDebugNames);
+  v.flag({"debug_unblurred", "Debug before blur",
+          "water: the debug views show the G-buffer before the blur (off: the blurred one the water uses)"},
+         p.debugUnblurred);
   v.color({"water_color", "Water colour", "linear RGB: ball albedo, water tint"}, p.waterColor);
   v.real({"absorption", "Absorption", "1/m: this inverse thickness transmits the water colour"}, p.absorption, 0.0f,
          200.0f);
@@ -148,7 +153,7 @@ void BallsView::render(const BallsScene& scene, const BallsCamera& camera, Rende
   }
   if (scene.water.count == 0) return;
   const bool thickness = water || m_params.debug == BallsDebug::Thickness;
-  m_gbuffer.draw(scene.water, camera, target.depth(), thickness, profiler);
+  m_gbuffer.draw(scene.water, camera, target.depth(), thickness, m_params.raster, profiler);
   m_blurred = water && m_params.blurRadius > 0.0f;
   if (m_blurred) {
     auto scope = profiler.scope("balls.blur");
@@ -158,7 +163,9 @@ void BallsView::render(const BallsScene& scene, const BallsCamera& camera, Rende
                m_params.depthThreshold * scene.water.radius, m_params.blurIterations);
   }
   auto scope = profiler.scope("balls.compose");
-  m_compose.draw(composedSurface(), m_gbuffer, m_params, camera, scene.water.radius, target);
+  const bool raw = m_params.debug != BallsDebug::Final && m_params.debugUnblurred;
+  m_compose.draw(raw ? m_gbuffer.surface() : composedSurface(), m_gbuffer, m_params, camera, scene.water.radius,
+                 target);
 }
 
 }  // namespace tidepool

@@ -6,6 +6,8 @@
 //   2. gbuffer:   ray-traced sphere impostors -> normal xy, view depth, foam, exact depth
 //   3. thickness: the same spheres, additive into B, depth-tested against the scene
 //                 (water mode, and the thickness debug view)
+//                 2 and 3 run on the raster units (quads, write masks, blending) or, by default,
+//                 as compute kernels with atomics (src/render/balls_splat.h), same G-buffer
 //   4. blur:      water mode only, depth-aware separable Gaussian (row and column compute
 //                 passes, two rounds by default)
 //   5. compose:   shading (balls or water) or a debug view, with depth, into the target

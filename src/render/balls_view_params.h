@@ -16,9 +16,15 @@ inline constexpr std::array<const char*, 2> kBallsModeNames = {"balls", "water"}
 enum class BallsDebug { Final, Local, Normals, Thickness, Depth };
 inline constexpr std::array<const char*, 5> kBallsDebugNames = {"final", "local", "normals", "thickness", "depth"};
 
+// Who draws the sphere impostors: the shader cores (src/render/balls_splat.h) or the raster units.
+enum class BallsRaster { Compute, Fragment };
+inline constexpr std::array<const char*, 2> kBallsRasterNames = {"compute", "fragment"};
+
 struct BallsViewParams {
   BallsMode mode = BallsMode::Balls;
+  BallsRaster raster = BallsRaster::Compute;
   BallsDebug debug = BallsDebug::Final;
+  bool debugUnblurred = false;                 // water: the debug views show the G-buffer before the blur
   glm::vec3 waterColor{0.18f, 0.45f, 0.91f};   // linear RGB: balls' albedo, water's tint (water-webgpu)
   float absorption = 20.0f;                    // 1/m: thickness 1/absorption transmits waterColor
   float blurRadius = 4.0f;                     // blur kernel radius, in on-screen ball radii

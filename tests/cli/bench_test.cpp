@@ -1,6 +1,8 @@
 // Benchmarks run end to end at tiny sizes (timings are never asserted) and reject bad sizes.
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include "support/gl_test.h"
 #include "support/run_process.h"
 
@@ -33,13 +35,19 @@ TEST(Bench, RenderPrintsMsPerPassInBothModes) {
   auto r = runTidepool({"bench", "render", "--n", "4096", "--size", "96x54", "--settle", "2", "--repeats", "2",
                         "--warmup", "1", "--csv", (dir / "render.csv").string()});
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  for (const char* column : {"scene ms", "gbuffer ms", "thickness ms", "blur ms", "compose ms", "frame ms"})
+  for (const char* column : {"scene ms", "gbuffer ms", "thickness ms", "splat ms", "id ms", "resolve ms", "blur ms",
+                             "compose ms", "frame ms"})
     EXPECT_NE(r.out.find(column), std::string::npos) << column << "\n" << r.out;
-  EXPECT_NE(r.out.find("balls"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("water"), std::string::npos) << r.out;
-  EXPECT_TRUE(std::filesystem::exists(dir / "render.csv"));
+  std::ifstream csvFile(dir / "render.csv");
+  const std::string csv((std::istreambuf_iterator<char>(csvFile)), std::istreambuf_iterator<char>());
+  for (const char* row : {",balls,compute,", ",water,compute,", ",balls,fragment,", ",water,fragment,"})
+    EXPECT_NE(csv.find(row), std::string::npos) << row << "\n" << csv;
   auto bad = runTidepool({"bench", "render", "--size", "1920"});
   EXPECT_EQ(bad.exitCode, 1);
   ASSERT_EQ(bad.errLines().size(), 1u) << bad.err;
   EXPECT_NE(bad.err.find("--size '1920' is not WIDTHxHEIGHT"), std::string::npos) << bad.err;
+  auto raster = runTidepool({"bench", "render", "--raster", "rops"});
+  EXPECT_EQ(raster.exitCode, 1);
+  ASSERT_EQ(raster.errLines().size(), 1u) << raster.err;
+  EXPECT_NE(raster.err.find("--raster 'rops' is not compute, fragment or both"), std::string::npos) << raster.err;
 }
