@@ -54,7 +54,10 @@ TEST_F(ObstacleMotion, SceneObstaclesKeepTheirParticlesAndShapeWhileTurningAndTr
   ASSERT_EQ(p.obstacles.size(), 3u);
   ASSERT_NE(p.obstacles[1].spin, 0.0f);
   ASSERT_NE(p.obstacles[2].path.kind, PathKind::None);
-  p.radius = 0.02f;  // a few thousand balls for llvmpipe
+  p.radius = 0.02f;  // a few thousand balls for llvmpipe, falling on all three; no tap (a fixed count)
+  p.fillMin = glm::vec3(0.05f, 0.05f, 0.6f);
+  p.fillMax = glm::vec3(0.95f, 0.95f, 0.95f);
+  p.tap = false;
   p.dt = 1e-3f;
   p.contactTime = 0.01f;
   Balls b(shaders(), p);
