@@ -27,13 +27,14 @@ class BallsSceneObstacles : public test::GlTest {
 
 constexpr const char* kSmall = R"("particles": {"fill": "none", "radius": 0.02})";
 
-std::string withObstacles(const std::string& list) { return std::string("{") + kSmall + ", \"obstacles\": " + list + "}"; }
+std::string withObstacles(const std::string& list) {
+  return std::string("{") + kSmall + ", \"obstacles\": " + list + "}";
+}
 
 }  // namespace
 
 TEST_F(BallsSceneObstacles, ObstacleListLoadsEveryItem) {
-  Scene s = parseScene(io::parseJson(R"({"model": "balls", "params": )" +
-                                         withObstacles(R"([{"shape": "cup"},
+  Scene s = parseScene(io::parseJson(R"({"model": "balls", "params": )" + withObstacles(R"([{"shape": "cup"},
           {"shape": "helix", "spin": 2, "spin_axis": [1, 0, 0]},
           {"shape": "box", "path": {"kind": "circle", "amplitude": [0.1, 0.2, 0], "period": 3, "phase": 90}}])") +
                                          "}",
@@ -56,9 +57,10 @@ TEST_F(BallsSceneObstacles, BadObstacleListsAreOneLineErrorsNamingTheItem) {
             "s.json: params.obstacles[1].path.kind = 'zigzag' is not one of: none, oscillate, circle");
   EXPECT_EQ(errorOf(withObstacles(R"([{"path": {"period": 0}}])")),
             "s.json: params.obstacles[0].path.period = 0 is out of range [0.01, 1000]");
-  EXPECT_EQ(errorOf(withObstacles(R"([{"centr": [0, 0, 0]}])"))
-                .rfind("s.json: params.obstacles[0].centr: unknown key (known here: shape, mesh, shell, size, centre", 0),
-            0u);
+  EXPECT_EQ(
+      errorOf(withObstacles(R"([{"centr": [0, 0, 0]}])"))
+          .rfind("s.json: params.obstacles[0].centr: unknown key (known here: shape, mesh, shell, size, centre", 0),
+      0u);
   EXPECT_EQ(errorOf(withObstacles(R"({"shape": "cup"})")),
             "s.json: params.obstacles: expected an array [{...}, ...], got object");
   EXPECT_EQ(errorOf(withObstacles(R"(["cup"])")), "s.json: params.obstacles[0]: expected an object {...}, got \"cup\"");

@@ -112,8 +112,8 @@ void Obstacles::upload() {
   m_sorted = gl::Buffer(bytes);
 }
 
-void Obstacles::place(const std::vector<ObstacleParams>& params, double time, glm::vec3 domainMin,
-                      glm::vec3 domainMax, gl::GpuProfiler* profiler) {
+void Obstacles::place(const std::vector<ObstacleParams>& params, double time, glm::vec3 domainMin, glm::vec3 domainMax,
+                      gl::GpuProfiler* profiler) {
   std::vector<ObstaclePose> poses(m_bodies.size());
   for (std::size_t k = 0; k < poses.size(); ++k) poses[k] = obstaclePose(params[k], time);
   const bool moved = m_dirty || poses != m_poses;

@@ -52,7 +52,7 @@ class Obstacles {
   // grid (bounded by the domain, where balls can be).
   void place(const std::vector<ObstacleParams>& params, double time, glm::vec3 domainMin, glm::vec3 domainMax,
              gl::GpuProfiler* profiler = nullptr);
-  bool occupied(glm::vec3 world) const;  // inside an obstacle at its placed pose
+  bool occupied(glm::vec3 world) const;   // inside an obstacle at its placed pose
   void bind(gl::Program& program) const;  // uniforms, pose block and buffers of the contact search
 
   bool active() const { return m_grid != nullptr; }  // any particles: the kernels' HAS_OBSTACLE
@@ -60,8 +60,8 @@ class Obstacles {
   std::size_t particles() const { return m_particles; }
   const ObstacleBody& body(std::size_t k) const { return m_bodies[k]; }
   const ObstaclePose& pose(std::size_t k) const { return m_poses[k]; }  // as placed
-  const gl::Buffer& bodies() const { return m_body; }    // vec4 own frame, w = obstacle index
-  const gl::Buffer& placed() const { return m_world; }  // vec4 world, same order as bodies()
+  const gl::Buffer& bodies() const { return m_body; }                   // vec4 own frame, w = obstacle index
+  const gl::Buffer& placed() const { return m_world; }                  // vec4 world, same order as bodies()
 
  private:
   ObstacleBody buildOne(const ObstacleParams& o, float radius);

@@ -220,9 +220,9 @@ TEST_F(ObstacleMotion, MovingObstaclePushesTheWaterItsWayAndLosesNoBall) {
   const Push forward = pushWater(shaders(), true, 0.0f);
   const Push backward = pushWater(shaders(), true, 180.0f);
   const Push verlet = pushWater(shaders(), true, 0.0f, Integrator::VelocityVerlet);  // forces at t + dt
-  std::printf("water momentum x: still %.4g, forward %.4g, backward %.4g, forward (Verlet) %.4g; mean x %.5f %.5f %.5f\n",
-              still.momentum, forward.momentum, backward.momentum, verlet.momentum, still.meanX, forward.meanX,
-              backward.meanX);
+  std::printf(
+      "water momentum x: still %.4g, forward %.4g, backward %.4g, forward (Verlet) %.4g; mean x %.5f %.5f %.5f\n",
+      still.momentum, forward.momentum, backward.momentum, verlet.momentum, still.meanX, forward.meanX, backward.meanX);
   EXPECT_GT(forward.momentum, 0.0);
   EXPECT_LT(backward.momentum, 0.0);
   EXPECT_LT(std::abs(still.momentum), 0.2 * forward.momentum);
