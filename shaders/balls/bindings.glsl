@@ -6,6 +6,8 @@
 #define BALLS_VEL_OUT 3        // vec4, written
 #define BALLS_ACC 4            // vec4 acceleration m/s^2 (velocity Verlet)
 #define BALLS_CELL_START 5     // uint per grid cell + 1 (grid/bindings.glsl's layout)
-#define BALLS_OBST_POS 6       // vec4 obstacle particles (own frame), cell order of the obstacle grid
+#define BALLS_OBST_POS 6       // vec4 obstacle particles (world, w = obstacle index), obstacle-grid cell order
 #define BALLS_OBST_CELL_START 7  // uint per obstacle-grid cell + 1
+#define BALLS_OBST_POSES 0     // uniform block (std140): each obstacle's pose and velocity (obstacle_poses.glsl)
+#define BALLS_MAX_OBSTACLES 16
 #define BALLS_STATS 2          // stats pass: 8 floats of partial sums per work group (reuses POS_OUT)

@@ -1,6 +1,7 @@
 // Every contact of ball `self` at p: the other balls within 2r in the 27 surrounding cells of the
-// uniform grid, and the obstacle's fixed particles, found in the obstacle's own (spinning) frame
-// through its own grid. The including kernel declares
+// uniform grid, and the obstacles' fixed particles, placed in the world this step and found
+// through their own grid; each moves with its obstacle (obstacle_poses.glsl, index k in w).
+// The including kernel declares
 //   void onContact(vec3 n, float overlap, vec3 otherVelocity, float massRatio, float share);
 // before including this file (n points from the other body to the ball, world frame).
 #ifndef BALLS_NEIGHBOURS_GLSL
@@ -12,12 +13,10 @@ layout(std430, binding = BALLS_CELL_START) readonly buffer CellStart { uint cell
 #ifdef HAS_OBSTACLE
 layout(std430, binding = BALLS_OBST_POS) readonly buffer ObstaclePos { vec4 obstaclePos[]; };
 layout(std430, binding = BALLS_OBST_CELL_START) readonly buffer ObstacleCellStart { uint obstacleCellStart[]; };
-uniform vec3 uObstacleOrigin;      // obstacle grid, in the obstacle's frame
+uniform vec3 uObstacleOrigin;  // obstacle grid (world), cell 2r
 uniform float uObstacleInvCell;
 uniform uvec3 uObstacleDims;
-uniform vec3 uObstaclePivot;       // spin axis (vertical) passes through it, m
-uniform vec2 uObstacleRotation;    // cos, sin of the current spin angle
-uniform float uObstacleSpin;       // rad/s
+#include "balls/obstacle_poses.glsl"
 #endif
 
 uniform float uRadius;  // m
@@ -44,31 +43,29 @@ void forEachContact(uint self, vec3 p, vec3 v) {
       }
     }
 #ifdef HAS_OBSTACLE
-  // The ball in the obstacle's frame: rotate by −angle about the vertical axis through the pivot.
-  const vec2 cs = uObstacleRotation;
-  const vec2 rel = p.xy - uObstaclePivot.xy;
-  const vec3 local = vec3(uObstaclePivot.xy + vec2(cs.x * rel.x + cs.y * rel.y, -cs.y * rel.x + cs.x * rel.y), p.z);
-  const vec3 bodyVelocity = uObstacleSpin * vec3(-rel.y, rel.x, 0.0);
-  const ivec3 last = ivec3(uObstacleDims) - 1;
-  const ivec3 oc = clamp(ivec3(clamp(floor((local - uObstacleOrigin) * uObstacleInvCell), vec3(0.0), vec3(last))),
-                         ivec3(0), last);
-  for (int dz = -1; dz <= 1; ++dz)
-    for (int dy = -1; dy <= 1; ++dy)
-      for (int dx = -1; dx <= 1; ++dx) {
-        const ivec3 nc = oc + ivec3(dx, dy, dz);
-        if (any(lessThan(nc, ivec3(0))) || any(greaterThan(nc, last))) continue;
-        const uint cell = uint(nc.x) + uObstacleDims.x * (uint(nc.y) + uObstacleDims.y * uint(nc.z));
-        const uint end = obstacleCellStart[cell + 1u];
-        for (uint j = obstacleCellStart[cell]; j < end; ++j) {
-          const vec3 d = local - obstaclePos[j].xyz;
+  // The grid covers every obstacle particle a ball can reach; balls more than a cell outside it
+  // touch none. Rows of three cells are contiguous, as above.
+  const vec3 g = (p - uObstacleOrigin) * uObstacleInvCell;
+  if (all(greaterThan(g, vec3(-1.0))) && all(lessThan(g, vec3(uObstacleDims) + 1.0))) {
+    const ivec3 last = ivec3(uObstacleDims) - 1;
+    const ivec3 oc = clamp(ivec3(floor(g)), ivec3(0), last);
+    const int ox0 = max(oc.x - 1, 0), ox1 = min(oc.x + 1, last.x);
+    for (int dz = -1; dz <= 1; ++dz)
+      for (int dy = -1; dy <= 1; ++dy) {
+        const ivec3 row = ivec3(ox0, oc.y + dy, oc.z + dz);
+        if (row.y < 0 || row.z < 0 || row.y > last.y || row.z > last.z) continue;
+        const uint first = uint(row.x) + uObstacleDims.x * (uint(row.y) + uObstacleDims.y * uint(row.z));
+        const uint end = obstacleCellStart[first + uint(ox1 - ox0) + 1u];
+        for (uint j = obstacleCellStart[first]; j < end; ++j) {
+          const vec4 q = obstaclePos[j];
+          const vec3 d = p - q.xyz;
           const float dist2 = dot(d, d);
           if (dist2 >= reach * reach || dist2 == 0.0) continue;
           const float dist = sqrt(dist2);
-          const vec3 nLocal = d / dist;
-          const vec3 n = vec3(cs.x * nLocal.x - cs.y * nLocal.y, cs.y * nLocal.x + cs.x * nLocal.y, nLocal.z);
-          onContact(n, reach - dist, bodyVelocity, 1.0, 1.0);
+          onContact(d / dist, reach - dist, obstacleVelocity(uint(q.w), q.xyz), 1.0, 1.0);
         }
       }
+  }
 #endif
 }
 

@@ -4,7 +4,7 @@
 layout(std430, binding = 0) readonly buffer Positions { vec4 positions[]; };
 layout(std430, binding = 1) readonly buffer Velocities { vec4 velocities[]; };
 
-uniform mat4 uModel;     // simulation -> world (domain rotation, obstacle spin)
+uniform mat4 uModel;     // simulation -> world (domain rotation)
 uniform mat4 uView;
 uniform mat4 uProj;
 uniform float uRadius;   // m

@@ -1,7 +1,7 @@
 #version 430 core
 // Obstacle mesh (src/render/obstacle_mesh.h): three vertices per triangle, unindexed, read from
-// an SSBO by gl_VertexID (no vertex attributes to set up), in the obstacle's frame; uModelView
-// carries its spin and the domain's rotation.
+// an SSBO by gl_VertexID (no vertex attributes to set up), in the obstacle's own frame; uModelView
+// carries its pose (moving and turning) and the domain's rotation.
 #include "render/balls_bindings.glsl"
 
 struct MeshVertex {

@@ -57,4 +57,42 @@ bool ParamEditor::beginGroup(const ParamInfo& info) {
 
 void ParamEditor::endGroup() { ImGui::TreePop(); }
 
+bool ParamEditor::beginList(const ParamInfo& info, std::size_t& size, std::size_t maxSize) {
+  const bool open = ImGui::TreeNodeEx(info.key, 0, "%s (%zu)", info.label, size);
+  tooltip(info);
+  if (!open) return false;
+  ImGui::BeginDisabled(size >= maxSize);
+  if (ImGui::SmallButton("Add")) {
+    ++size;
+    m_changed = true;
+  }
+  ImGui::EndDisabled();
+  m_remove.push_back(kNoItem);
+  return true;
+}
+
+bool ParamEditor::beginItem(std::size_t index, const std::string& name) {
+  ImGui::PushID(int(index));
+  const bool open = ImGui::TreeNodeEx("item", 0, "%s", name.c_str());
+  ImGui::SameLine();
+  if (ImGui::SmallButton("Remove")) {
+    m_remove.back() = index;
+    m_changed = true;
+  }
+  if (!open) ImGui::PopID();
+  return open;
+}
+
+void ParamEditor::endItem() {
+  ImGui::TreePop();
+  ImGui::PopID();
+}
+
+std::size_t ParamEditor::endList() {
+  ImGui::TreePop();
+  const std::size_t remove = m_remove.back();
+  m_remove.pop_back();
+  return remove;
+}
+
 }  // namespace tidepool

@@ -1,6 +1,8 @@
 // The ImGui side of ParamVisitor: one widget per declared parameter, tooltips from the help text.
 #pragma once
 
+#include <vector>
+
 #include "scene/param.h"
 
 namespace tidepool {
@@ -18,10 +20,16 @@ class ParamEditor final : public ParamVisitor {
   void choiceIndex(const ParamInfo& info, int& index, std::span<const char* const> names) override;
   bool beginGroup(const ParamInfo& info) override;
   void endGroup() override;
+  // Lists: a tree node with an "Add" button, one node per item with a "Remove" button.
+  bool beginList(const ParamInfo& info, std::size_t& size, std::size_t maxSize) override;
+  bool beginItem(std::size_t index, const std::string& name) override;
+  void endItem() override;
+  std::size_t endList() override;
 
  private:
   void tooltip(const ParamInfo& info);
   bool m_changed = false;
+  std::vector<std::size_t> m_remove;  // per open list: the item whose "Remove" was pressed
 };
 
 }  // namespace tidepool

@@ -64,17 +64,17 @@ BallsScene BallsView::sceneOf(const balls::Balls& model) {
   glm::mat4 world = glm::translate(glm::mat4(1.0f), centre);
   world = glm::rotate(world, -model.domainRotation(), glm::vec3(1, 0, 0));
   world = glm::translate(world, -centre);
-  // Obstacle frame -> simulation: spin about the vertical axis through its centre.
-  glm::mat4 spin = glm::translate(glm::mat4(1.0f), p.obstacleCentre);
-  spin = glm::rotate(spin, model.obstacleAngle(), glm::vec3(0, 0, 1));
-  spin = glm::translate(spin, -p.obstacleCentre);
   BallsScene s;
   s.water = {&model.positions(), &model.velocities(), model.count(), model.radius(), world};
-  if (m_params.showObstacle && model.obstacleCount() > 0) {
-    const std::size_t vertices = m_mesh.update(model);
-    s.obstacleMesh = {&m_mesh.vertices(), vertices, world * spin};
+  const balls::Obstacles& obstacles = model.obstacles();
+  if (m_params.showObstacle && obstacles.particles() > 0) {
+    // Each obstacle's mesh (own frame) where the model placed its particles at the last step.
+    m_meshes.update(obstacles, model.radius());
+    for (std::size_t k = 0; k < obstacles.size(); ++k)
+      if (m_meshes.count(k) > 0)
+        s.obstacleMeshes.push_back({&m_meshes.vertices(k), m_meshes.count(k), world * obstacles.pose(k).matrix()});
     if (m_params.obstacleBalls)
-      s.obstacle = {&model.obstaclePositions(), nullptr, model.obstacleCount(), model.radius(), world * spin};
+      s.obstacle = {&obstacles.placed(), nullptr, obstacles.particles(), model.radius(), world};
   }
   s.boxMin = model.wallMin();
   s.boxMax = model.wallMax();
@@ -121,15 +121,17 @@ void BallsView::drawScene(const BallsScene& scene, const BallsCamera& camera, Re
     scene.obstacle.positions->bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VIEW_POSITIONS);
     glDrawArrays(GL_TRIANGLES, 0, GLsizei(6 * scene.obstacle.count));
   }
-  if (scene.obstacleMesh.count > 0) {
+  if (!scene.obstacleMeshes.empty()) {
     gl::Program& mesh = m_shaders.program({"render/obstacle_mesh.vert", "render/obstacle_mesh.frag"});
     mesh.use();
-    mesh.set("uModelView", camera.view * scene.obstacleMesh.model);
     mesh.set("uProj", camera.proj);
     mesh.set("uColor", m_params.obstacleColor);
     mesh.set("uLightView", camera.towardsLight(m_params.lightDirection));
-    scene.obstacleMesh.vertices->bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VIEW_MESH);
-    glDrawArrays(GL_TRIANGLES, 0, GLsizei(scene.obstacleMesh.count));
+    for (const MeshBatch& batch : scene.obstacleMeshes) {
+      mesh.set("uModelView", camera.view * batch.model);
+      batch.vertices->bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VIEW_MESH);
+      glDrawArrays(GL_TRIANGLES, 0, GLsizei(batch.count));
+    }
   }
   if (m_params.showBox) {
     gl::Program& lines = m_shaders.program({"render/box_lines.vert", "render/flat_color.frag"});

@@ -1,8 +1,8 @@
 // Deferred renderer of the balls model (issue 6), after water-webgpu's sphere renderer without
 // its shortcuts. It only reads the model's SSBOs. One frame:
-//   1. scene:     the obstacle as a mesh (a mesh obstacle's own triangles, flat-shaded; any other
-//                 shape the surface of its balls), its balls too on request, and the domain box
-//                 into the target
+//   1. scene:     each obstacle as a mesh placed by its pose (a mesh obstacle's own triangles,
+//                 flat-shaded; any other shape the surface of its balls), their balls too on
+//                 request, and the domain box into the target
 //   2. gbuffer:   ray-traced sphere impostors -> normal xy, view depth, foam, exact depth
 //   3. thickness: the same spheres, additive into B, depth-tested against the scene
 //                 (water mode, and the thickness debug view)
@@ -39,16 +39,17 @@ class BallsView {
   // (the blurred one in water mode).
   const BallsGBuffer& gbuffer() const { return m_gbuffer; }
   const gl::Texture2D& composedSurface() const;
+  const ObstacleMeshes& obstacleMeshes() const { return m_meshes; }
 
  private:
   void drawScene(const BallsScene& scene, const BallsCamera& camera, RenderTarget& target);
-  BallsScene sceneOf(const balls::Balls& model);  // rebuilds the obstacle mesh when edited
+  BallsScene sceneOf(const balls::Balls& model);  // builds the meshes of new or reshaped obstacles
   gl::ShaderLibrary& m_shaders;
   BallsViewParams m_params;
   OrbitCamera m_camera;
   BallsGBuffer m_gbuffer;
   WaterBlur m_blur;
-  ObstacleMesh m_mesh;
+  ObstacleMeshes m_meshes;
   BallsCompose m_compose;
   bool m_blurred = false;  // the last frame composed the blurred surface
   gl::VertexArray m_vao = gl::VertexArray::create();

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstddef>
 #include <glm/glm.hpp>
+#include <vector>
 
 #include "gl/buffer.h"
 #include "scene/param.h"
@@ -68,11 +69,11 @@ struct MeshBatch {
   glm::mat4 model{1.0f};  // rigid
 };
 
-// Everything in a frame: the water balls, the obstacle (as balls or as a mesh) and the domain box.
+// Everything in a frame: the water balls, the obstacles (as balls and/or meshes) and the domain box.
 struct BallsScene {
   SphereBatch water;
-  SphereBatch obstacle;    // count 0: none
-  MeshBatch obstacleMesh;  // count 0: none
+  SphereBatch obstacle;                   // all obstacles' fixed balls; count 0: none
+  std::vector<MeshBatch> obstacleMeshes;  // one per obstacle, placed by its model matrix
   glm::vec3 boxMin{0.0f}, boxMax{1.0f};
   glm::mat4 boxModel{1.0f};
 };

@@ -210,20 +210,22 @@ std::vector<MeshVertex> ballUnionMesh(const std::vector<glm::vec4>& balls, float
   return out;
 }
 
-std::size_t ObstacleMesh::update(const balls::Balls& model) {
-  if (m_built && m_version == model.obstacleVersion()) return m_count;
-  std::vector<MeshVertex> mesh;
-  if (const io::TriangleMesh* file = model.obstacleMesh()) {
-    mesh = fileMesh(*file);
-  } else if (model.obstacleCount() > 0) {
-    // The model's own particles (one read-back per rebuild), so the surface is where they are.
-    mesh = ballUnionMesh(model.obstaclePositions().read<glm::vec4>(model.obstacleCount()), model.radius());
+void ObstacleMeshes::update(const balls::Obstacles& obstacles, float radius) {
+  std::vector<Entry> next(obstacles.size());
+  for (std::size_t k = 0; k < obstacles.size(); ++k) {
+    const balls::ObstacleBody& body = obstacles.body(k);
+    const auto old = std::find_if(m_meshes.begin(), m_meshes.end(), [&](const Entry& e) { return e.id == body.id; });
+    if (old != m_meshes.end()) {
+      next[k] = std::move(*old);
+      continue;
+    }
+    const std::vector<MeshVertex> mesh = body.mesh ? fileMesh(*body.mesh) : ballUnionMesh(body.particles, radius);
+    next[k].id = body.id;
+    next[k].count = mesh.size();
+    if (!mesh.empty()) next[k].vertices = gl::Buffer(std::span<const MeshVertex>(mesh), GL_STATIC_DRAW);
+    ++m_builds;
   }
-  m_vertices = mesh.empty() ? gl::Buffer() : gl::Buffer(std::span<const MeshVertex>(mesh), GL_STATIC_DRAW);
-  m_count = mesh.size();
-  m_version = model.obstacleVersion();
-  m_built = true;
-  return m_count;
+  m_meshes = std::move(next);
 }
 
 }  // namespace tidepool

@@ -32,19 +32,26 @@ std::vector<MeshVertex> ballUnionMesh(const std::vector<glm::vec4>& balls, float
 // toward the eye), for mesh obstacles: the renderer draws the shape itself, flat-shaded.
 std::vector<MeshVertex> fileMesh(const io::TriangleMesh& mesh);
 
-// A balls model's obstacle as a mesh on the GPU (in the obstacle's frame): a mesh obstacle's file
-// triangles, any other shape the surface of the model's fixed particles. Rebuilt whenever the
-// model rebuilds its obstacle (obstacleVersion()).
-class ObstacleMesh {
+// A balls model's obstacles as meshes on the GPU, one per obstacle in its own frame (its pose
+// places it, every frame, without rebuilding): a mesh obstacle's file triangles, any other shape
+// the surface of its fixed particles. An obstacle's mesh is built once per build of its particles
+// (ObstacleBody::id), so moving, turning, adding or removing others rebuilds nothing.
+class ObstacleMeshes {
  public:
-  std::size_t update(const balls::Balls& model);  // vertex count
-  const gl::Buffer& vertices() const { return m_vertices; }
+  void update(const balls::Obstacles& obstacles, float radius);  // the meshes of the obstacles' bodies
+  std::size_t size() const { return m_meshes.size(); }
+  const gl::Buffer& vertices(std::size_t k) const { return m_meshes[k].vertices; }  // of obstacles.body(k)
+  std::size_t count(std::size_t k) const { return m_meshes[k].count; }              // vertices
+  std::size_t builds() const { return m_builds; }  // meshes built so far (tests: none per frame)
 
  private:
-  gl::Buffer m_vertices;
-  std::size_t m_count = 0;
-  bool m_built = false;
-  unsigned m_version = 0;  // the model's obstacleVersion() built
+  struct Entry {
+    unsigned id = 0;  // ObstacleBody::id
+    gl::Buffer vertices;
+    std::size_t count = 0;
+  };
+  std::vector<Entry> m_meshes;
+  std::size_t m_builds = 0;
 };
 
 }  // namespace tidepool

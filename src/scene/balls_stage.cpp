@@ -58,17 +58,23 @@ class BallsStage final : public Stage {
     m_view.camera().handle(in);
     m_settings.camera = m_view.camera().params();
   }
-  // An OBJ dropped on the window becomes the obstacle (a solid fill when it is closed, else a
-  // shell); the next step builds it, or refuses it (obstacleError()) and keeps the old one.
+  // An OBJ dropped on the window becomes one more obstacle (the last one is replaced when there
+  // are already kMaxObstacles): a solid fill when it is closed, else a shell, in the middle of the
+  // domain. The next step builds it, or refuses it (obstacleError()).
   bool dropFile(const std::string& path) override {
     if (std::filesystem::path(path).extension() != ".obj") return false;
     balls::Params& p = m_model.params();
-    p.obstacle = balls::Shape::Mesh;
-    p.obstacleMesh = path;
+    balls::ObstacleParams o;
+    o.shape = balls::Shape::Mesh;
+    o.mesh = path;
+    o.centre = 0.5f * (p.domainMin + p.domainMax);
+    o.size = glm::vec3(0.2f * glm::length(p.domainMax - p.domainMin) / std::sqrt(3.0f));
     try {
-      p.obstacleShell = !io::checkClosed(io::readObj(path)).closed();
+      o.shell = !io::checkClosed(io::readObj(path)).closed();
     } catch (const Error&) {  // the build says what is wrong with it
     }
+    if (p.obstacles.size() >= balls::kMaxObstacles) p.obstacles.pop_back();
+    p.obstacles.push_back(o);
     return true;
   }
   double simTime() const override { return m_model.time(); }
@@ -84,7 +90,7 @@ class BallsStage final : public Stage {
                   "%zu balls + %zu fixed, r = %.4g m; KE %.4g, PE %.4g; overlap max %.1f%% mean %.2f%% of r",
                   m_model.count(), m_model.obstacleCount(), m_model.radius(), m_stats.kinetic, m_stats.potential,
                   100.0 * m_stats.maxOverlap, 100.0 * m_stats.meanOverlap);
-    // A refused obstacle edit (a missing or open mesh) stays in view until the next one succeeds.
+    // A refused obstacle edit (a missing or open mesh) stays in view until the next edit.
     return m_model.obstacleError().empty() ? std::string(buf) : m_model.obstacleError() + "\n" + buf;
   }
 

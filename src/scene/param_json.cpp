@@ -80,8 +80,35 @@ class Reader final : public ParamVisitor {
     checkUnknown(m_stack.back());
     m_stack.pop_back();
   }
+  bool beginList(const ParamInfo& info, std::size_t& size, std::size_t maxSize) override {
+    const io::Json* j = find(info);
+    if (j && !j->is_array()) throw Error(path(info) + ": expected an array [{...}, ...], got " + typeName(*j));
+    if (j && j->size() > maxSize)
+      throw Error(path(info) + ": " + std::to_string(j->size()) + " items, at most " + std::to_string(maxSize));
+    if (j) size = j->size();
+    m_lists.push_back({j, m_stack.back().prefix + info.key});
+    return true;
+  }
+  bool beginItem(std::size_t index, const std::string&) override {
+    const List& list = m_lists.back();
+    const std::string at = list.path + "[" + std::to_string(index) + "]";
+    const io::Json* item = list.array ? &(*list.array)[index] : nullptr;
+    if (item && !item->is_object()) throw Error(m_where + "." + at + ": expected an object {...}, got " + item->dump());
+    m_stack.push_back({item, at + "."});
+    return true;
+  }
+  void endItem() override { endGroup(); }
+  std::size_t endList() override {
+    m_lists.pop_back();
+    return kNoItem;
+  }
 
  private:
+  struct List {
+    const io::Json* array;  // nullptr: absent, the items keep their defaults
+    std::string path;       // "group.key"
+  };
+
   struct Level {
     const io::Json* object;  // nullptr: absent, all defaults
     std::string prefix;      // "group." for nested keys
@@ -133,6 +160,7 @@ class Reader final : public ParamVisitor {
 
   std::string m_where;
   std::vector<Level> m_stack;
+  std::vector<List> m_lists;
 };
 
 class Writer final : public ParamVisitor {
@@ -148,19 +176,30 @@ class Writer final : public ParamVisitor {
     top()[i.key] = names[std::size_t(index)];
   }
   bool beginGroup(const ParamInfo& i) override {
-    m_path.push_back(i.key);
-    top() = io::Json::object();
+    m_stack.push_back(&(top()[i.key] = io::Json::object()));
     return true;
   }
-  void endGroup() override { m_path.pop_back(); }
+  void endGroup() override { m_stack.pop_back(); }
+  bool beginList(const ParamInfo& i, std::size_t&, std::size_t) override {
+    m_stack.push_back(&(top()[i.key] = io::Json::array()));
+    return true;
+  }
+  bool beginItem(std::size_t, const std::string&) override {
+    top().push_back(io::Json::object());
+    m_stack.push_back(&top().back());
+    return true;
+  }
+  void endItem() override { m_stack.pop_back(); }
+  std::size_t endList() override {
+    m_stack.pop_back();
+    return kNoItem;
+  }
 
  private:
-  io::Json& top() {
-    io::Json* j = &result;
-    for (const std::string& k : m_path) j = &(*j)[k];
-    return *j;
-  }
-  std::vector<std::string> m_path;
+  // The object or array being written; a parent is not touched while a child is open, so the
+  // pointers stay valid.
+  io::Json& top() { return *m_stack.back(); }
+  std::vector<io::Json*> m_stack{&result};
 };
 
 }  // namespace

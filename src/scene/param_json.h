@@ -1,6 +1,7 @@
 // JSON <-> parameter structs through ParamVisitor. Reading validates: unknown keys (typos),
 // wrong types and out-of-range values are errors naming the file and the key path, e.g.
 //   scenes/dam.json: params.substeps = 0 is out of range [1, 64]
+//   scenes/cup.json: params.obstacles[2].size[0] = 500 is out of range [0, 100]
 // Keys that are absent keep their defaults.
 #pragma once
 

@@ -60,13 +60,14 @@ TEST(BadInput, ObstacleMeshMissingMalformedOrOpen) {
   test::TempDir dir;
   auto scene = [&](const std::string& name, const std::string& mesh) {
     dir.write(name, R"({"model": "balls", "params": {"particles": {"fill": "none"},
-                        "obstacle": {"shape": "mesh", "mesh": ")" +
-                        mesh + R"("}}})");
+                        "obstacles": [{"shape": "mesh", "mesh": ")" +
+                        mesh + R"("}]}})");
     return std::vector<std::string>{"render", (dir / name).string(), "--frames", "1", "--out", (dir / "o").string()};
   };
   expectOneLineError(scene("missing.json", "nosuchmesh"),
                      (dir / "missing.json").string() +
-                         ": params: mesh 'nosuchmesh' not found: neither a file nor a name in assets/meshes (known: "
+                         ": params: obstacles[0]: mesh 'nosuchmesh' not found: neither a file nor a name in "
+                         "assets/meshes (known: "
                          "blob, cube, torus)",
                      1);
   dir.write("bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 zero\nf 1 2 3\n");
@@ -75,8 +76,11 @@ TEST(BadInput, ObstacleMeshMissingMalformedOrOpen) {
   dir.write("open.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\n");
   expectOneLineError(scene("open.json", (dir / "open.obj").string()),
                      "is not closed: 3 edges belong to one triangle only (a hole); the first at vertices 2-3: a solid "
-                     "fill needs a closed mesh; fix the mesh or set obstacle.shell",
+                     "fill needs a closed mesh; fix the mesh or make the obstacle a shell",
                      1);
+  dir.write("list.json", R"({"model": "balls", "params": {"obstacles": [{}, {"size": [500, 0.1, 0.1]}]}})");
+  expectOneLineError({"render", (dir / "list.json").string(), "--frames", "1", "--out", (dir / "o").string()},
+                     (dir / "list.json").string() + ": params.obstacles[1].size[0] = 500 is out of range [0, 100]", 1);
 }
 
 TEST(BadInput, UnreadableShaderDirectory) {

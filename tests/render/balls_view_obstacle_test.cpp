@@ -1,6 +1,6 @@
 // The balls view draws a mesh obstacle as its triangles, where its fixed particles are (one
 // transform, spin included); other obstacles as the surface of their balls; a hidden obstacle
-// leaves no pixel.
+// leaves no pixel; several obstacles each follow their own pose, meshed once, not every frame.
 #include <gtest/gtest.h>
 
 #include "render/balls_view.h"
@@ -40,11 +40,13 @@ TEST_F(BallsViewObstacleTest, MeshObstacleIsDrawnWhereItsParticlesAreAndTurnsWit
   Params p;
   p.fill = Fill::None;
   p.radius = 0.01f;
-  p.obstacle = Shape::Mesh;
-  p.obstacleMesh = "blob";  // no symmetry about the spin axis
-  p.obstacleCentre = glm::vec3(0.5f, 0.5f, 0.4f);
-  p.obstacleSize = glm::vec3(0.3f);
-  p.obstacleSpin = 4.0f;
+  ObstacleParams blob;
+  blob.shape = Shape::Mesh;
+  blob.mesh = "blob";  // no symmetry about the spin axis
+  blob.centre = glm::vec3(0.5f, 0.5f, 0.4f);
+  blob.size = glm::vec3(0.3f);
+  blob.spin = 4.0f;
+  p.obstacles = {blob};
   p.dt = 1e-3f;
   Balls model(shaders(), p);
   BallsView view(shaders());
@@ -63,10 +65,58 @@ TEST_F(BallsViewObstacleTest, MeshObstacleIsDrawnWhereItsParticlesAreAndTurnsWit
   view.params().showObstacle = false;
   EXPECT_EQ(count(covered(view, model, target)), 0u);
 
-  model.params().obstacle = Shape::Box;  // analytic shapes: the surface built from their balls
+  model.params().obstacles[0].shape = Shape::Box;  // analytic shapes: the surface built from their balls
   model.stepOnce();
-  EXPECT_EQ(model.obstacleMesh(), nullptr);
+  EXPECT_EQ(model.obstacles().body(0).mesh, nullptr);
   view.params().showObstacle = true;
   view.params().obstacleBalls = false;
   EXPECT_GT(count(covered(view, model, target)), 800u);
+}
+
+TEST_F(BallsViewObstacleTest, EachObstacleFollowsItsOwnPoseAndIsMeshedOnce) {
+  Params p;
+  p.fill = Fill::None;
+  p.radius = 0.01f;
+  p.dt = 1e-3f;
+  ObstacleParams helix;  // turning about its vertical axis
+  helix.shape = Shape::Helix;
+  helix.centre = glm::vec3(0.3f, 0.5f, 0.2f);
+  helix.size = glm::vec3(0.15f, 0.15f, 0.3f);
+  helix.spin = 3.0f;
+  ObstacleParams box;  // tilted, going round a circle and tumbling about x
+  box.shape = Shape::Box;
+  box.centre = glm::vec3(0.7f, 0.5f, 0.5f);
+  box.size = glm::vec3(0.1f, 0.05f, 0.03f);
+  box.orientation = glm::vec3(0.0f, 30.0f, 0.0f);
+  box.spin = 2.0f;
+  box.spinAxis = glm::vec3(1.0f, 0.0f, 0.0f);
+  box.path.kind = PathKind::Circle;
+  box.path.amplitude = glm::vec3(0.1f, 0.1f, 0.1f);
+  box.path.period = 1.0f;
+  p.obstacles = {helix, box};
+  Balls model(shaders(), p);
+  BallsView view(shaders());
+  view.params().showBox = false;
+  RenderTarget target(128, 128);
+
+  const std::vector<bool> start = covered(view, model, target);
+  ASSERT_GT(count(start), 800u);
+  EXPECT_EQ(view.obstacleMeshes().size(), 2u);
+  EXPECT_EQ(view.obstacleMeshes().builds(), 2u);
+  for (int frame = 0; frame < 6; ++frame) {
+    for (int i = 0; i < 60; ++i) model.stepOnce();
+    const std::vector<bool> mesh = covered(view, model, target);
+    view.params().obstacleBalls = true;
+    const std::vector<bool> both = covered(view, model, target);
+    view.params().obstacleBalls = false;
+    SCOPED_TRACE(frame);
+    EXPECT_LT(onlyIn(both, mesh), count(mesh) / 12) << "every obstacle's balls inside its own mesh";
+    if (frame == 2) EXPECT_GT(onlyIn(mesh, start) + onlyIn(start, mesh), count(mesh) / 10) << "they moved";
+  }
+  EXPECT_EQ(view.obstacleMeshes().builds(), 2u) << "moving obstacles are not meshed again";
+  model.params().obstacles.erase(model.params().obstacles.begin());  // the helix goes: nothing rebuilt
+  model.stepOnce();
+  covered(view, model, target);
+  EXPECT_EQ(view.obstacleMeshes().size(), 1u);
+  EXPECT_EQ(view.obstacleMeshes().builds(), 2u);
 }

@@ -108,17 +108,15 @@ TEST_P(BallsRasterTest, ASphereBehindAnOpaqueMeshAddsNoThickness) {
   // The obstacle as a mesh: a sphere obstacle of balls r = 0.04 whose surface has radius 0.4,
   // centred 2 m away, behind one water ball and in front of another.
   const float r = 0.3f;
-  balls::Params p;
-  p.obstacle = balls::Shape::Sphere;
-  p.obstacleCentre = {0.0f, 0.0f, -2.0f};
-  p.obstacleSize = glm::vec3(0.36f);
-  p.radius = 0.04f;
-  const std::vector<MeshVertex> sphere = ballUnionMesh(balls::Obstacle(p).particles(), p.radius);
+  balls::ObstacleParams o;
+  o.shape = balls::Shape::Sphere;
+  o.size = glm::vec3(0.36f);
+  const std::vector<MeshVertex> sphere = ballUnionMesh(balls::Obstacle(o, 0.04f).particles(), 0.04f);
   ASSERT_FALSE(sphere.empty());
   const gl::Buffer mesh{std::span<const MeshVertex>(sphere)}, water = ballsAt({3.0f, 1.2f});
   Frame f(shaders(), GetParam());
   BallsScene scene;
-  scene.obstacleMesh = {&mesh, sphere.size(), glm::mat4(1.0f)};
+  scene.obstacleMeshes = {{&mesh, sphere.size(), glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -2.0f))}};
   scene.water = {&water, nullptr, 1, r, glm::mat4(1.0f)};  // only the ball behind the mesh
   f.view.render(scene, axisCamera(), f.target, f.profiler);
   EXPECT_EQ(f.centre().b, 0.0f);

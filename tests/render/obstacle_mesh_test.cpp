@@ -14,13 +14,13 @@ using namespace tidepool;
 
 namespace {
 
-balls::Params sphereObstacle() {
-  balls::Params p;
-  p.radius = 0.01f;
-  p.obstacle = balls::Shape::Sphere;
-  p.obstacleCentre = {0.5f, 0.5f, 0.5f};
-  p.obstacleSize = glm::vec3(0.1f);
-  return p;
+constexpr float kRadius = 0.01f;
+
+balls::ObstacleParams sphereObstacle() {  // built about the origin, its own frame
+  balls::ObstacleParams o;
+  o.shape = balls::Shape::Sphere;
+  o.size = glm::vec3(0.1f);
+  return o;
 }
 
 }  // namespace
@@ -28,8 +28,8 @@ balls::Params sphereObstacle() {
 TEST(ObstacleMesh, NoBallsNoTriangles) { EXPECT_TRUE(ballUnionMesh({}, 0.01f).empty()); }
 
 TEST(ObstacleMesh, SphereIsClosedOnTheBallsSurfaceWithOutwardNormals) {
-  const balls::Params p = sphereObstacle();
-  const std::vector<MeshVertex> mesh = ballUnionMesh(balls::Obstacle(p).particles(), p.radius);
+  const float r = kRadius;
+  const std::vector<MeshVertex> mesh = ballUnionMesh(balls::Obstacle(sphereObstacle(), r).particles(), r);
   ASSERT_GT(mesh.size(), 300u);
   ASSERT_EQ(mesh.size() % 3, 0u);
   // Closed and consistently wound: each edge as often one way as the other (surface nets can
@@ -47,17 +47,17 @@ TEST(ObstacleMesh, SphereIsClosedOnTheBallsSurfaceWithOutwardNormals) {
   // the smoothed surface runs between the two (over the tops, through the dimples between).
   double mean = 0, meanFacing = 0;
   for (const MeshVertex& v : mesh) {
-    const glm::vec3 out = glm::vec3(v.position) - p.obstacleCentre;
+    const glm::vec3 out = glm::vec3(v.position);
     const float distance = glm::length(out);
-    EXPECT_GT(distance, 0.1f + p.radius - 2.0f * p.radius);
-    EXPECT_LT(distance, 0.1f + p.radius + 0.5f * p.radius);
+    EXPECT_GT(distance, 0.1f + r - 2.0f * r);
+    EXPECT_LT(distance, 0.1f + r + 0.5f * r);
     const float facing = glm::dot(glm::vec3(v.normal), out / distance);
     EXPECT_GT(facing, 0.0f) << "normal outward";
     meanFacing += facing;
     mean += distance;
   }
-  EXPECT_GT(mean / double(mesh.size()), 0.1 - 0.5 * p.radius);
-  EXPECT_LT(mean / double(mesh.size()), 0.1 + p.radius);
+  EXPECT_GT(mean / double(mesh.size()), 0.1 - 0.5 * r);
+  EXPECT_LT(mean / double(mesh.size()), 0.1 + r);
   EXPECT_GT(meanFacing / double(mesh.size()), 0.95) << "mean";
 }
 

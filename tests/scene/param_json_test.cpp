@@ -1,4 +1,4 @@
-// One parameter declaration drives reading (with validation) and writing.
+// One parameter declaration drives reading (with validation) and writing; lists of groups too.
 #include <gtest/gtest.h>
 
 #include "base/error.h"
@@ -19,6 +19,12 @@ struct P {
   glm::vec3 gravity{0.0f, -9.81f, 0.0f};
   std::string label = "x";
   float inner = 1.0f;
+  struct Item {
+    float size = 0.5f;
+    glm::vec3 at{0.0f};
+    float depth = 1.0f;  // in a group of the item
+  };
+  std::vector<Item> items;
 };
 
 void visit(ParamVisitor& v, P& p) {
@@ -33,6 +39,14 @@ void visit(ParamVisitor& v, P& p) {
     v.real({"inner", "Inner", ""}, p.inner, 0.0f, 2.0f);
     v.endGroup();
   }
+  v.list({"items", "Items", ""}, p.items, 3, [](ParamVisitor& v, P::Item& item) {
+    v.real({"size", "Size", ""}, item.size, 0.001f, 1.0f);
+    v.vector({"at", "At", ""}, item.at, -1.0f, 1.0f);
+    if (v.beginGroup({"deep", "Deep", ""})) {
+      v.real({"depth", "Depth", ""}, item.depth, 0.0f, 10.0f);
+      v.endGroup();
+    }
+  });
 }
 
 P read(const std::string& text) {
@@ -96,4 +110,82 @@ TEST(ParamJson, ValidationMessagesNameTheKeyAndTheProblem) {
   EXPECT_NE(errorOf("{\"substep\": 3}").find("params.substep: unknown key (known here: dt, substeps, walls"),
             std::string::npos);
   EXPECT_EQ(errorOf("[1]"), "t.json: params: expected an object {...}, got array");
+}
+
+TEST(ParamJson, ListsReadEveryItemWithDefaultsAndRoundTrip) {
+  EXPECT_TRUE(read("{}").items.empty());
+  P p = read(R"({"items": [{"size": 0.25}, {}, {"at": [0, 1, -1], "deep": {"depth": 3}}]})");
+  ASSERT_EQ(p.items.size(), 3u);
+  EXPECT_FLOAT_EQ(p.items[0].size, 0.25f);
+  EXPECT_FLOAT_EQ(p.items[1].size, 0.5f) << "absent keys keep the item's defaults";
+  EXPECT_EQ(p.items[2].at, glm::vec3(0, 1, -1));
+  EXPECT_FLOAT_EQ(p.items[2].depth, 3.0f);
+  EXPECT_TRUE(read(R"({"items": []})").items.empty());
+  const io::Json j = writeParams([&](ParamVisitor& v) { visit(v, p); });
+  ASSERT_TRUE(j["items"].is_array());
+  EXPECT_FLOAT_EQ(j["items"][2]["deep"]["depth"].get<float>(), 3.0f);
+  EXPECT_FLOAT_EQ(j["group"]["inner"].get<float>(), 1.0f) << "groups after a list still land in the right place";
+  const P q = read(j.dump());
+  ASSERT_EQ(q.items.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_FLOAT_EQ(q.items[i].size, p.items[i].size);
+    EXPECT_EQ(q.items[i].at, p.items[i].at);
+    EXPECT_FLOAT_EQ(q.items[i].depth, p.items[i].depth);
+  }
+}
+
+TEST(ParamJson, ListErrorsNameTheItemByIndex) {
+  EXPECT_EQ(errorOf(R"({"items": [{}, {}, {"size": 5}]})"),
+            "t.json: params.items[2].size = 5 is out of range [0.001, 1]");
+  EXPECT_EQ(errorOf(R"({"items": [{"at": [0, 2, 0]}]})"), "t.json: params.items[0].at[1] = 2 is out of range [-1, 1]");
+  EXPECT_EQ(errorOf(R"({"items": [{}, {"deep": {"depth": -1}}]})"),
+            "t.json: params.items[1].deep.depth = -1 is out of range [0, 10]");
+  EXPECT_EQ(errorOf(R"({"items": [{}, {"sise": 1}]})"),
+            "t.json: params.items[1].sise: unknown key (known here: size, at, deep)");
+  EXPECT_EQ(errorOf(R"({"items": [{}, 3]})"), "t.json: params.items[1]: expected an object {...}, got 3");
+  EXPECT_EQ(errorOf(R"({"items": {"size": 1}})"), "t.json: params.items: expected an array [{...}, ...], got object");
+  EXPECT_EQ(errorOf(R"({"items": [{}, {}, {}, {}]})"), "t.json: params.items: 4 items, at most 3");
+}
+
+namespace {
+// A visitor like the editor's: adds one item, removes another.
+class AddAndRemove final : public ParamVisitor {
+ public:
+  std::size_t remove = kNoItem;
+  std::vector<std::string> names;
+  void real(const ParamInfo&, float&, float, float) override {}
+  void integer(const ParamInfo&, int&, int, int) override {}
+  void flag(const ParamInfo&, bool&) override {}
+  void text(const ParamInfo&, std::string&) override {}
+  void color(const ParamInfo&, glm::vec3&) override {}
+  void vector(const ParamInfo&, glm::vec3&, float, float) override {}
+  void choiceIndex(const ParamInfo&, int&, std::span<const char* const>) override {}
+  bool beginGroup(const ParamInfo&) override { return true; }
+  void endGroup() override {}
+  bool beginList(const ParamInfo&, std::size_t& size, std::size_t maxSize) override {
+    if (size < maxSize) ++size;
+    return true;
+  }
+  bool beginItem(std::size_t, const std::string& name) override {
+    names.push_back(name);
+    return true;
+  }
+  std::size_t endList() override { return remove; }
+};
+}  // namespace
+
+TEST(ParamJson, ListVisitorsMayAddAndRemoveItems) {
+  P p = read(R"({"items": [{"size": 0.1}, {"size": 0.2}]})");
+  AddAndRemove edit;
+  edit.remove = 0;
+  visit(edit, p);
+  ASSERT_EQ(p.items.size(), 2u);
+  EXPECT_FLOAT_EQ(p.items[0].size, 0.2f);
+  EXPECT_FLOAT_EQ(p.items[1].size, 0.5f) << "the added item has the defaults";
+  EXPECT_EQ(edit.names, (std::vector<std::string>{"0", "1", "2"}));
+  edit.remove = ParamVisitor::kNoItem;
+  visit(edit, p);
+  EXPECT_EQ(p.items.size(), 3u);
+  visit(edit, p);
+  EXPECT_EQ(p.items.size(), 3u) << "at most 3";
 }

@@ -19,7 +19,8 @@ constexpr std::size_t kMaxCheckpointBalls = std::size_t(4) << 20;  // larger run
 std::string mib(std::size_t bytes) { return std::to_string((bytes + (1 << 20) - 1) >> 20) + " MiB"; }
 }  // namespace
 
-Balls::Balls(gl::ShaderLibrary& shaders, const Params& params) : m_shaders(shaders), m_ops(shaders), m_params(params) {
+Balls::Balls(gl::ShaderLibrary& shaders, const Params& params)
+    : m_shaders(shaders), m_ops(shaders), m_params(params), m_obstacles(shaders) {
   reset();
 }
 
@@ -61,9 +62,11 @@ void Balls::reset() {
   const Params p = resolved(m_params);
   if (glm::any(glm::lessThanEqual(p.domainMax, p.domainMin)))
     throw Error("balls: domain_max must exceed domain_min on every axis");
+  m_obstacles.build(m_params.obstacles, p.radius);  // first: a bad mesh fails before anything is allocated
   m_radius = p.radius;
-  const Obstacle obstacle(p);  // first: a bad mesh fails before anything is allocated
-  const std::vector<glm::vec4> water = waterParticles(m_params, obstacle);
+  m_obstacles.place(m_params.obstacles, 0.0, p.domainMin, p.domainMax);
+  const std::vector<glm::vec4> water =
+      waterParticles(m_params, [this](glm::vec3 q) { return m_obstacles.occupied(q); });
   allocate(water.size(), water.size() + (m_params.tap ? std::size_t(m_params.tapMax) : 0));
   m_tapEmitted = 0;
   m_tapNextLayer = 0;
@@ -78,41 +81,8 @@ void Balls::reset() {
   m_accValid = false;
   grid::GridParams gp{p.domainMin, p.domainMax, 2.0f * m_radius};
   m_grid = std::make_unique<grid::UniformGrid>(m_shaders, gp, m_capacity);
-  buildObstacle(obstacle);
   m_obstacleError.clear();
   updateWalls();
-}
-
-namespace {
-// The parameters an obstacle is built from (spin only turns it).
-void copyObstacle(Params& to, const Params& from) {
-  to.obstacle = from.obstacle;
-  to.obstacleMesh = from.obstacleMesh;
-  to.obstacleShell = from.obstacleShell;
-  to.obstacleCentre = from.obstacleCentre;
-  to.obstacleSize = from.obstacleSize;
-  to.obstacleOrientation = from.obstacleOrientation;
-}
-}  // namespace
-
-bool Balls::obstacleEdited() const {
-  const Params& a = m_params;
-  const Params& b = m_builtObstacle;
-  return a.obstacle != b.obstacle || a.obstacleShell != b.obstacleShell || a.obstacleCentre != b.obstacleCentre ||
-         a.obstacleSize != b.obstacleSize || a.obstacleOrientation != b.obstacleOrientation ||
-         (a.obstacle == Shape::Mesh && a.obstacleMesh != b.obstacleMesh);
-}
-
-void Balls::rebuildObstacle() {
-  Params p = m_params;
-  p.radius = m_radius;
-  try {
-    buildObstacle(Obstacle(p));
-    m_obstacleError.clear();
-  } catch (const Error& e) {
-    copyObstacle(m_params, m_builtObstacle);
-    m_obstacleError = std::string("obstacle not changed: ") + e.what();
-  }
 }
 
 void Balls::emitFromTap() {
@@ -146,28 +116,6 @@ void Balls::emitFromTap() {
   m_tapNextLayer = m_time + s * 0.8165 / p.tapSpeed;  // HCP layer spacing 2r·√(2/3)
 }
 
-void Balls::buildObstacle(const Obstacle& obstacle) {
-  m_builtObstacle = m_params;
-  const std::vector<glm::vec4> particles = obstacle.particles();
-  m_obstacleMesh = obstacle.mesh() ? std::make_shared<const io::TriangleMesh>(*obstacle.mesh()) : nullptr;
-  ++m_obstacleVersion;
-  m_obstacleCount = particles.size();
-  m_obstacleGrid.reset();
-  if (particles.empty()) return;
-  glm::vec3 lo(1e30f), hi(-1e30f);
-  for (const glm::vec4& q : particles) {
-    lo = glm::min(lo, glm::vec3(q));
-    hi = glm::max(hi, glm::vec3(q));
-  }
-  m_obstaclePos = gl::Buffer(particles.size() * sizeof(glm::vec4), particles.data());
-  m_obstacleSorted = gl::Buffer(particles.size() * sizeof(glm::vec4));
-  grid::GridParams gp{lo - 2.0f * m_radius, hi + 2.0f * m_radius, 2.0f * m_radius};
-  m_obstacleGrid = std::make_unique<grid::UniformGrid>(m_shaders, gp, particles.size());
-  m_obstacleGrid->build(m_obstaclePos, particles.size());
-  m_obstacleGrid->reorder(m_obstaclePos, {{&m_obstaclePos, &m_obstacleSorted}});
-  std::swap(m_obstaclePos, m_obstacleSorted);
-}
-
 glm::vec3 Balls::gravity() const {
   const float a = domainRotation();
   const glm::vec3 g = resolved(m_params).gravity;
@@ -177,8 +125,6 @@ glm::vec3 Balls::gravity() const {
 float Balls::domainRotation() const {
   return (m_params.rotation + m_params.rotationRate * float(m_time)) * kPi / 180.0f;
 }
-
-float Balls::obstacleAngle() const { return m_params.obstacleSpin * float(m_time); }
 
 void Balls::updateWalls() {
   const Params& p = m_params;
@@ -206,7 +152,7 @@ std::vector<gl::ShaderDefine> Balls::defines(bool verlet) const {
     d.push_back({"INTEGRATOR_VERLET", ""});
   else if (m_params.integrator == Integrator::ExplicitEuler)
     d.push_back({"INTEGRATOR_EXPLICIT", ""});
-  if (m_obstacleGrid) d.push_back({"HAS_OBSTACLE", ""});
+  if (m_obstacles.active()) d.push_back({"HAS_OBSTACLE", ""});
   return d;
 }
 
@@ -233,18 +179,7 @@ void Balls::bindCommon(gl::Program& p) const {
   p.set("uFoamGain", q.foamGain);
   p.set("uFoamDecay", std::pow(q.foamDecay, q.dt / 0.0005f));  // the seed's decay per 0.5 ms
   m_grid->setUniforms(p);
-  if (m_obstacleGrid) {
-    const grid::GridParams& g = m_obstacleGrid->params();
-    p.set("uObstacleOrigin", g.domainMin);
-    p.set("uObstacleInvCell", 1.0f / g.cellSize);
-    p.set("uObstacleDims", m_obstacleGrid->dims());
-    p.set("uObstaclePivot", q.obstacleCentre);
-    const float a = obstacleAngle();
-    p.set("uObstacleRotation", glm::vec2(std::cos(a), std::sin(a)));
-    p.set("uObstacleSpin", q.obstacleSpin);
-    m_obstaclePos.bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_OBST_POS);
-    m_obstacleGrid->cellStart().bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_OBST_CELL_START);
-  }
+  if (m_obstacles.active()) m_obstacles.bind(p);
   m_grid->cellStart().bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_CELL_START);
 }
 
@@ -283,11 +218,20 @@ void Balls::gridAndCollide(gl::GpuProfiler* profiler, bool verlet, float kick) {
 
 void Balls::stepOnce(gl::GpuProfiler* profiler) {
   updateWalls();
-  if (obstacleEdited()) rebuildObstacle();  // added, removed, moved, turned or resized while running
+  // Obstacles added, removed or reshaped while running are rebuilt; all are placed where they are
+  // when the forces act: at t, or at t + dt for Verlet's forces on the drifted positions.
+  if (std::string error; m_obstacles.update(m_params.obstacles, m_radius, error)) m_obstacleError = error;
   emitFromTap();
+  const bool verlet = m_params.integrator == Integrator::VelocityVerlet;
+  const auto placeObstacles = [&](double time, gl::GpuProfiler* p) {
+    m_obstacles.place(m_params.obstacles, time, m_params.domainMin, m_params.domainMax, p);
+  };
+  if (verlet && !m_accValid && m_count > 0) {  // a(x0) for the first drift
+    placeObstacles(m_time, nullptr);
+    gridAndCollide(nullptr, true, 0.0f);
+  }
+  placeObstacles(verlet ? m_time + m_params.dt : m_time, profiler);
   if (m_count > 0) {
-    const bool verlet = m_params.integrator == Integrator::VelocityVerlet;
-    if (verlet && !m_accValid) gridAndCollide(nullptr, true, 0.0f);  // a(x0) for the first drift
     if (verlet) {
       auto s = profiler ? profiler->scope("balls.drift") : gl::GpuProfiler::Scope(nullptr);
       gl::Program& drift = m_shaders.program({"balls/drift.comp"}, defines(false));

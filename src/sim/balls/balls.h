@@ -1,9 +1,9 @@
 // Water as N equal balls colliding (DEM), after water-webgpu: a uniform grid finds every pair
 // within 2r (27 cells), one of three contact laws acts on it, one of three integrators advances
-// it; box walls (one may be a piston; gravity rotates with the domain) and an obstacle of fixed
-// particles (a shape or a voxelised triangle mesh, optionally spinning) complete the scene. The
-// model owns its buffers and passes; renderers read positions() / velocities() (foam in velocity
-// w), the obstacle's particles and its mesh.
+// it; box walls (one may be a piston; gravity rotates with the domain) and obstacles of fixed
+// particles (shapes or voxelised triangle meshes, each moving rigidly: obstacles.h) complete the
+// scene. The model owns its buffers and passes; renderers read positions() / velocities() (foam
+// in velocity w) and obstacles() (bodies, poses, meshes).
 #pragma once
 
 #include <memory>
@@ -17,11 +17,10 @@
 #include "grid/grid.h"
 #include "io/obj.h"
 #include "sim/balls/balls_params.h"
+#include "sim/balls/obstacles.h"
 #include "sim/divergence.h"
 
 namespace tidepool::balls {
-
-class Obstacle;  // sim/balls/balls_init.h
 
 struct Stats {
   double time = 0;         // simulated s
@@ -50,13 +49,12 @@ class Balls {
   Stats stats();  // reduction on the GPU, read back (blocking)
 
   std::size_t count() const { return m_count; }
-  std::size_t obstacleCount() const { return m_obstacleCount; }
-  float radius() const { return m_radius; }  // after lattice scaling
-  glm::vec3 gravity() const;                 // current, rotated with the domain
+  std::size_t obstacleCount() const { return m_obstacles.particles(); }  // fixed particles, all obstacles
+  float radius() const { return m_radius; }                              // after lattice scaling
+  glm::vec3 gravity() const;                                             // current, rotated with the domain
   glm::vec3 wallMin() const { return m_wallMin; }
   glm::vec3 wallMax() const { return m_wallMax; }
   float domainRotation() const;  // radians about x
-  float obstacleAngle() const;   // radians about the vertical through its centre
   double time() const { return m_time; }
   std::size_t bytesPerBall() const;                                   // GPU memory per ball, grid included
   std::size_t cells() const { return m_grid ? m_grid->cells() : 0; }  // of the neighbour grid
@@ -67,15 +65,11 @@ class Balls {
   void flushChecks();         // waits for the check in flight
   double speedBound() const;  // m/s: faster means more than 2r per step, balls can pass through each other
 
-  const gl::Buffer& positions() const { return m_pos[m_posIndex]; }      // vec4 (m, w = 1)
-  const gl::Buffer& velocities() const { return m_vel[m_velIndex]; }     // vec4 (m/s, w = foam)
-  const gl::Buffer& obstaclePositions() const { return m_obstaclePos; }  // vec4, obstacle frame
-  const io::TriangleMesh* obstacleMesh() const {
-    return m_obstacleMesh.get();
-  }                                                               // mesh shape, obstacle frame; else null
-  unsigned obstacleVersion() const { return m_obstacleVersion; }  // changes whenever the obstacle is rebuilt
-  // Why the last edit of the obstacle was refused (e.g. a missing mesh file); empty if it was not.
-  // A refused edit leaves the obstacle, and its parameters, as they were.
+  const gl::Buffer& positions() const { return m_pos[m_posIndex]; }   // vec4 (m, w = 1)
+  const gl::Buffer& velocities() const { return m_vel[m_velIndex]; }  // vec4 (m/s, w = foam)
+  const Obstacles& obstacles() const { return m_obstacles; }          // as placed at the last step
+  // Why the last edit of the obstacles was refused (e.g. a missing mesh file); empty if it was not.
+  // A refused edit leaves that obstacle, and its parameters, as they were.
   const std::string& obstacleError() const { return m_obstacleError; }
   // Tests: upload/download all balls (vec4 position, vec4 velocity) and the order of the last step.
   void upload(const std::vector<glm::vec4>& pos, const std::vector<glm::vec4>& vel);
@@ -86,11 +80,8 @@ class Balls {
 
  private:
   void allocate(std::size_t count, std::size_t capacity);
-  void buildObstacle(const Obstacle& obstacle);
-  void rebuildObstacle();       // after an edit while running; refuses edits that fail
-  bool obstacleEdited() const;  // shape, mesh, size, place or orientation changed since the last build
-  void emitFromTap();           // appends a layer of balls when the jet has advanced one spacing
-  void watch();                 // polls the check in flight, starts the next one
+  void emitFromTap();  // appends a layer of balls when the jet has advanced one spacing
+  void watch();        // polls the check in flight, starts the next one
   void judge(const GLuint values[4], double time);
   CheckCycle::Judge judgeFn();  // judge() for the watch's CheckCycle
   void updateWalls();
@@ -103,16 +94,13 @@ class Balls {
   gl::BufferOps m_ops;  // checkpoint copies of the divergence watch
   Params m_params;
   float m_radius = 0;
-  std::size_t m_count = 0, m_capacity = 0, m_obstacleCount = 0;
+  std::size_t m_count = 0, m_capacity = 0;
   std::size_t m_tapEmitted = 0;
   double m_tapNextLayer = 0;  // simulated time of the next layer
-  Params m_builtObstacle;     // the obstacle parameters of the last build
   gl::Buffer m_pos[2], m_vel[2], m_acc, m_permutation, m_stats;
   int m_posIndex = 0, m_velIndex = 0;
-  std::unique_ptr<grid::UniformGrid> m_grid, m_obstacleGrid;
-  gl::Buffer m_obstaclePos, m_obstacleSorted;
-  std::shared_ptr<const io::TriangleMesh> m_obstacleMesh;
-  unsigned m_obstacleVersion = 0;
+  std::unique_ptr<grid::UniformGrid> m_grid;
+  Obstacles m_obstacles;
   std::string m_obstacleError;
   glm::vec3 m_wallMin{0.0f}, m_wallMax{1.0f}, m_wallMinVel{0.0f}, m_wallMaxVel{0.0f};
   double m_time = 0;

@@ -53,7 +53,7 @@ Params resolved(const Params& p) {
   return q;
 }
 
-std::vector<glm::vec4> waterParticles(const Params& input, const Obstacle& obstacle) {
+std::vector<glm::vec4> waterParticles(const Params& input, const std::function<bool(glm::vec3)>& occupied) {
   const Params p = resolved(input);
   const float r = p.radius;
   const glm::vec3 lo = p.domainMin + r, hi = p.domainMax - r;
@@ -67,7 +67,7 @@ std::vector<glm::vec4> waterParticles(const Params& input, const Obstacle& obsta
         b = glm::vec3(hi.x, hi.y, std::min(hi.z, p.domainMin.z + p.slabHeight - r));
       }
       for (const glm::vec3& q : hcpLattice(a, b, r))
-        if (p.obstacle == Shape::None || !obstacle.inside(q)) out.emplace_back(q, 1.0f);
+        if (!occupied || !occupied(q)) out.emplace_back(q, 1.0f);
       break;
     }
     case Fill::Random: {
@@ -92,26 +92,16 @@ std::vector<glm::vec4> waterParticles(const Params& input, const Obstacle& obsta
   return out;
 }
 
-glm::mat3 orientationMatrix(glm::vec3 degrees) {
-  const glm::vec3 a = glm::radians(degrees);
-  glm::mat4 m = glm::rotate(glm::mat4(1.0f), a.z, glm::vec3(0, 0, 1));
-  m = glm::rotate(m, a.y, glm::vec3(0, 1, 0));
-  return glm::mat3(glm::rotate(m, a.x, glm::vec3(1, 0, 0)));
-}
-
-Obstacle::Obstacle(const Params& p)
-    : m_params(p),
-      m_orientation(orientationMatrix(p.obstacleOrientation)),
-      m_turned(p.obstacleOrientation != glm::vec3(0.0f)) {
-  if (p.obstacle != Shape::Mesh) return;
-  const io::TriangleMesh mesh = io::readObj(io::findMesh(p.obstacleMesh));  // errors name the file and line
-  if (!p.obstacleShell) {
+Obstacle::Obstacle(const ObstacleParams& o, float radius) : m_params(o), m_radius(radius) {
+  if (o.shape != Shape::Mesh) return;
+  const io::TriangleMesh mesh = io::readObj(io::findMesh(o.mesh));  // errors name the file and line
+  if (!o.shell) {
     const io::EdgeCheck check = io::checkClosed(mesh);
     if (!check.closed())
-      throw Error("mesh '" + p.obstacleMesh + "' is " + check.describe() +
-                  ": a solid fill needs a closed mesh; fix the mesh or set obstacle.shell");
+      throw Error("mesh '" + o.mesh + "' is " + check.describe() +
+                  ": a solid fill needs a closed mesh; fix the mesh or make the obstacle a shell");
   }
-  m_mesh = std::make_unique<MeshSolid>(placeMesh(mesh, p.obstacleCentre, p.obstacleSize, m_orientation));
+  m_mesh = std::make_unique<MeshSolid>(placeMesh(mesh, glm::vec3(0.0f), o.size, glm::mat3(1.0f)));
 }
 
 Obstacle::~Obstacle() = default;
@@ -120,38 +110,32 @@ const io::TriangleMesh* Obstacle::mesh() const { return m_mesh ? &m_mesh->mesh()
 
 bool Obstacle::inside(glm::vec3 q) const {
   if (m_mesh) return m_mesh->inside(q);
-  if (m_turned) q = m_params.obstacleCentre + glm::transpose(m_orientation) * (q - m_params.obstacleCentre);
-  return insideShape(q);
-}
-
-bool Obstacle::insideShape(glm::vec3 q) const {
-  const Params& p = m_params;
-  const glm::vec3 c = p.obstacleCentre, s = p.obstacleSize;
-  const float r = p.radius;
-  switch (p.obstacle) {
+  const glm::vec3 s = m_params.size;
+  const float r = m_radius;
+  switch (m_params.shape) {
     case Shape::None:
     case Shape::Mesh: return false;
-    case Shape::Sphere: return glm::length(q - c) <= s.x;
-    case Shape::Box: return glm::all(glm::lessThanEqual(glm::abs(q - c), s));
-    case Shape::Capsule: return capsuleDistance(q, c, s.z, s.x) <= 0.0f;
+    case Shape::Sphere: return glm::length(q) <= s.x;
+    case Shape::Box: return glm::all(glm::lessThanEqual(glm::abs(q), s));
+    case Shape::Capsule: return capsuleDistance(q, glm::vec3(0.0f), s.z, s.x) <= 0.0f;
     case Shape::Cup: {
-      // Open cylinder with a bottom: radius s.x, height s.z from c.z up, walls 2.5 balls thick.
+      // Open cylinder with a bottom: radius s.x, height s.z from the base up, walls 2.5 balls thick.
       const float wall = std::max(2.5f * r * 2.0f, 0.12f * s.x);
-      const float rho = glm::length(glm::vec2(q - c));
-      if (q.z < c.z || q.z > c.z + s.z || rho > s.x) return false;
-      return rho >= s.x - wall || q.z <= c.z + wall;
+      const float rho = glm::length(glm::vec2(q));
+      if (q.z < 0.0f || q.z > s.z || rho > s.x) return false;
+      return rho >= s.x - wall || q.z <= wall;
     }
     case Shape::Helix: {
-      // A ramp winding 1.5 turns up from c.z to c.z + s.z between radii 0.3 s.x and s.x.
-      const float rho = glm::length(glm::vec2(q - c));
+      // A ramp winding 1.5 turns up from the base to s.z between radii 0.3 s.x and s.x.
+      const float rho = glm::length(glm::vec2(q));
       if (rho < 0.3f * s.x || rho > s.x) return false;
       const float turns = 1.5f, thickness = 3.0f * r;
       const float pitch = s.z / turns;
-      float angle = std::atan2(q.y - c.y, q.x - c.x);
+      float angle = std::atan2(q.y, q.x);
       if (angle < 0) angle += 2 * kPi;
       for (int t = 0; t < 2; ++t) {
-        const float rampZ = c.z + pitch * (angle / (2 * kPi) + float(t));
-        if (rampZ <= c.z + s.z && std::abs(q.z - rampZ) <= 0.5f * thickness) return true;
+        const float rampZ = pitch * (angle / (2 * kPi) + float(t));
+        if (rampZ <= s.z && std::abs(q.z - rampZ) <= 0.5f * thickness) return true;
       }
       return false;
     }
@@ -160,43 +144,32 @@ bool Obstacle::insideShape(glm::vec3 q) const {
 }
 
 std::vector<glm::vec4> Obstacle::particles() const {
-  const Params& p = m_params;
+  const ObstacleParams& o = m_params;
   std::vector<glm::vec4> out;
-  const float r = p.radius;
+  const float r = m_radius;
   if (m_mesh) {
-    for (const glm::vec3& q : meshLatticePoints(*m_mesh, r, p.obstacleShell)) out.emplace_back(q, 0.0f);
+    for (const glm::vec3& q : meshLatticePoints(*m_mesh, r, o.shell)) out.emplace_back(q, 0.0f);
     return out;
   }
-  if (p.obstacle == Shape::None) return out;
-  glm::vec3 lo = p.obstacleCentre - glm::vec3(p.obstacleSize.x, p.obstacleSize.x, p.obstacleSize.z) - 2 * r;
-  glm::vec3 hi = p.obstacleCentre + glm::vec3(p.obstacleSize.x, p.obstacleSize.x, p.obstacleSize.z) + 2 * r;
-  if (p.obstacle == Shape::Box) {
-    lo = p.obstacleCentre - p.obstacleSize - r;
-    hi = p.obstacleCentre + p.obstacleSize + r;
-  } else if (p.obstacle == Shape::Capsule) {
-    lo = p.obstacleCentre - glm::vec3(p.obstacleSize.z + p.obstacleSize.x, p.obstacleSize.x, p.obstacleSize.x) - r;
-    hi = p.obstacleCentre + glm::vec3(p.obstacleSize.z + p.obstacleSize.x, p.obstacleSize.x, p.obstacleSize.x) + r;
-  }
-  if (m_turned) {  // the bounds of the turned box
-    const glm::vec3 c = p.obstacleCentre, a = lo, b = hi;
-    lo = glm::vec3(1e30f);
-    hi = glm::vec3(-1e30f);
-    for (int k = 0; k < 8; ++k) {
-      const glm::vec3 corner =
-          c + m_orientation * (glm::vec3(k & 1 ? b.x : a.x, k & 2 ? b.y : a.y, k & 4 ? b.z : a.z) - c);
-      lo = glm::min(lo, corner);
-      hi = glm::max(hi, corner);
-    }
+  if (o.shape == Shape::None) return out;
+  const glm::vec3 s = o.size;
+  glm::vec3 lo = -glm::vec3(s.x, s.x, s.z) - 2 * r, hi = glm::vec3(s.x, s.x, s.z) + 2 * r;
+  if (o.shape == Shape::Box) {
+    lo = -s - r;
+    hi = s + r;
+  } else if (o.shape == Shape::Capsule) {
+    lo = -glm::vec3(s.z + s.x, s.x, s.x) - r;
+    hi = glm::vec3(s.z + s.x, s.x, s.x) + r;
   }
   const float d = 2.0f * r;
   for (const glm::vec3& q : hcpLattice(lo, hi, r)) {
     if (!inside(q)) continue;
-    if (p.obstacleShell) {
+    if (o.shell) {
       // Keep particles with a neighbour position outside: the surface layer only.
       bool surface = false;
-      for (const glm::vec3 o : {glm::vec3(d, 0, 0), glm::vec3(-d, 0, 0), glm::vec3(0, d, 0), glm::vec3(0, -d, 0),
-                                glm::vec3(0, 0, d), glm::vec3(0, 0, -d)})
-        surface |= !inside(q + o);
+      for (const glm::vec3 step : {glm::vec3(d, 0, 0), glm::vec3(-d, 0, 0), glm::vec3(0, d, 0), glm::vec3(0, -d, 0),
+                                   glm::vec3(0, 0, d), glm::vec3(0, 0, -d)})
+        surface |= !inside(q + step);
       if (!surface) continue;
     }
     out.emplace_back(q, 0.0f);

@@ -4,6 +4,7 @@
 // surface shell.
 #pragma once
 
+#include <functional>
 #include <glm/glm.hpp>
 #include <memory>
 #include <vector>
@@ -22,30 +23,27 @@ Params resolved(const Params& p);
 
 class MeshSolid;
 
-// The obstacle at rest (its own frame = the world at spin angle 0): the shape turned by its
-// orientation about its centre, or the mesh placed into its box.
+// One obstacle's particles in its own frame: the shape centred on the origin (the reference point
+// of each shape: a cup's or helix's base centre, the others' middle), unturned; a mesh scaled
+// into its box. ObstaclePose (obstacle_pose.h) places it in the world.
 class Obstacle {
  public:
   // Reads a mesh shape's OBJ file: throws Error for a missing or malformed file, or an open mesh
   // asked for a solid fill (its message names the mesh and says what is not closed).
-  explicit Obstacle(const Params& p);
+  Obstacle(const ObstacleParams& o, float radius);
   ~Obstacle();
-  bool inside(glm::vec3 q) const;            // q in the shape (analytic shapes: boundary included)
-  std::vector<glm::vec4> particles() const;  // vec4: position m, w = 0 (immovable)
-  const io::TriangleMesh* mesh() const;      // the placed mesh of a mesh shape, else null
+  bool inside(glm::vec3 q) const;            // q (own frame) in the shape (analytic shapes: boundary included)
+  std::vector<glm::vec4> particles() const;  // vec4: position m (own frame), w = 0
+  const io::TriangleMesh* mesh() const;      // the scaled mesh of a mesh shape (own frame), else null
 
  private:
-  bool insideShape(glm::vec3 q) const;  // analytic shapes in their unturned frame
-  Params m_params;
-  glm::mat3 m_orientation{1.0f};  // shape -> obstacle frame, about the centre
-  bool m_turned = false;
+  ObstacleParams m_params;
+  float m_radius;
   std::unique_ptr<MeshSolid> m_mesh;
 };
 
-glm::mat3 orientationMatrix(glm::vec3 degrees);  // about x, then y, then z
-
-// Water particles (vec4: position m, w = 1), none inside the obstacle. Deterministic: same
-// parameters, same particles.
-std::vector<glm::vec4> waterParticles(const Params& p, const Obstacle& obstacle);
+// Water particles (vec4: position m, w = 1), none where `occupied` (inside an obstacle, say).
+// Deterministic: same parameters, same particles.
+std::vector<glm::vec4> waterParticles(const Params& p, const std::function<bool(glm::vec3)>& occupied);
 
 }  // namespace tidepool::balls

@@ -57,19 +57,40 @@ void visit(ParamVisitor& v, Params& p) {
     v.integer({"max", "Max balls", "the tap stops after adding this many"}, p.tapMax, 0, 1 << 26);
     v.endGroup();
   }
-  if (v.beginGroup({"obstacle", "Obstacle", "fixed particles from a shape (rebuilt when edited)"})) {
-    v.choice({"shape", "Shape", "none, sphere, box, capsule, cup, helix or mesh"}, p.obstacle, kShapeNames);
-    v.text({"mesh", "Mesh", "mesh shape: OBJ file in assets/meshes (torus, cube, blob) or a path"}, p.obstacleMesh);
-    v.flag({"shell", "Shell only", "surface shell instead of a solid fill (open meshes need it)"}, p.obstacleShell);
-    v.vector({"centre", "Centre", "m"}, p.obstacleCentre, -100.0f, 100.0f);
-    v.vector({"size", "Size",
-              "half extents (box; mesh: its bounds fit inside, aspect kept), radius x and height z (others), m"},
-             p.obstacleSize, 0.0f, 100.0f);
-    v.vector({"orientation", "Orientation", "degrees about x, then y, then z (about the centre)"},
-             p.obstacleOrientation, -360.0f, 360.0f);
-    v.real({"spin", "Spin", "rad/s about the vertical axis"}, p.obstacleSpin, -100.0f, 100.0f);
+  v.list(
+      {"obstacles", "Obstacles", "fixed particles from shapes; added, removed, moved and turned while running"},
+      p.obstacles, kMaxObstacles, [](ParamVisitor& v, ObstacleParams& o) { visit(v, o); },
+      [](std::size_t i, const ObstacleParams& o) {
+        return std::to_string(i) + ": " +
+               (o.shape == Shape::Mesh ? "mesh " + o.mesh : std::string(kShapeNames[std::size_t(o.shape)]));
+      });
+}
+
+void visit(ParamVisitor& v, ObstacleParams& o) {
+  v.choice({"shape", "Shape", "none, sphere, box, capsule, cup, helix or mesh (rebuilt when edited)"}, o.shape,
+           kShapeNames);
+  v.text({"mesh", "Mesh", "mesh shape: OBJ file in assets/meshes (torus, cube, blob) or a path"}, o.mesh);
+  v.flag({"shell", "Shell only", "surface shell instead of a solid fill (open meshes need it)"}, o.shell);
+  v.vector({"size", "Size",
+            "half extents (box; mesh: its bounds fit inside, aspect kept), radius x and height z (others), m"},
+           o.size, 0.0f, 100.0f);
+  v.vector({"centre", "Centre", "m (moves it while running)"}, o.centre, -100.0f, 100.0f);
+  v.vector({"orientation", "Orientation", "degrees about x, then y, then z (about the centre)"}, o.orientation, -360.0f,
+           360.0f);
+  v.real({"spin", "Spin", "rad/s about the spin axis through the centre"}, o.spin, -100.0f, 100.0f);
+  v.vector({"spin_axis", "Spin axis", "direction (any length; zero: no spin)"}, o.spinAxis, -1.0f, 1.0f);
+  if (v.beginGroup({"path", "Path", "periodic translation of the centre"})) {
+    v.choice({"kind", "Kind", "none; oscillate: centre + amplitude sin; circle: (a.x cos, a.y sin, a.z sin)"},
+             o.path.kind, kPathNames);
+    v.vector({"amplitude", "Amplitude", "m"}, o.path.amplitude, -10.0f, 10.0f);
+    v.real({"period", "Period", "s"}, o.path.period, 0.01f, 1000.0f);
+    v.real({"phase", "Phase", "degrees at t = 0"}, o.path.phase, -360.0f, 360.0f);
     v.endGroup();
   }
+}
+
+bool sameBody(const ObstacleParams& a, const ObstacleParams& b) {
+  return a.shape == b.shape && a.shell == b.shell && a.size == b.size && (a.shape != Shape::Mesh || a.mesh == b.mesh);
 }
 
 }  // namespace tidepool::balls

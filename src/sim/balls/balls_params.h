@@ -7,7 +7,9 @@
 #include <cmath>
 #include <glm/glm.hpp>
 #include <string>
+#include <vector>
 
+#include "balls/bindings.glsl"
 #include "scene/param.h"
 
 namespace tidepool::balls {
@@ -20,6 +22,37 @@ enum class Fill { Block, Slab, Random, Lattice, None };
 constexpr std::array<const char*, 5> kFillNames = {"block", "slab", "random", "lattice", "none"};
 enum class Shape { None, Sphere, Box, Capsule, Cup, Helix, Mesh };
 constexpr std::array<const char*, 7> kShapeNames = {"none", "sphere", "box", "capsule", "cup", "helix", "mesh"};
+enum class PathKind { None, Oscillate, Circle };
+constexpr std::array<const char*, 3> kPathNames = {"none", "oscillate", "circle"};
+constexpr std::size_t kMaxObstacles = BALLS_MAX_OBSTACLES;
+
+// A periodic translation of an obstacle's centre, θ = 2π·t/period + phase:
+//   oscillate  centre + amplitude·sin θ                        (to and fro along the amplitude)
+//   circle     centre + (a.x·cos θ, a.y·sin θ, a.z·sin θ)       (a circle or ellipse about it)
+struct ObstaclePath {
+  PathKind kind = PathKind::None;
+  glm::vec3 amplitude{0.1f, 0.0f, 0.0f};  // m
+  float period = 2.0f;                    // s
+  float phase = 0.0f;                     // degrees
+};
+
+// One obstacle: fixed particles from a shape, built once in the obstacle's own frame (shape,
+// mesh, shell, size), and a rigid pose that may change every step without rebuilding them
+// (centre, orientation, spin, path; sim/balls/obstacle_pose.h).
+struct ObstacleParams {
+  Shape shape = Shape::Sphere;
+  std::string mesh = "torus";  // mesh: OBJ in assets/meshes (".obj" optional) or a path
+  bool shell = false;          // a surface shell instead of a solid fill
+  glm::vec3 centre{0.5f, 0.5f, 0.4f};
+  glm::vec3 size{0.1f, 0.1f, 0.1f};  // half extents (box, mesh bounds), radius (x) and height (z), per shape
+  glm::vec3 orientation{0.0f};       // degrees about x, then y, then z, turning the shape about its centre
+  float spin = 0.0f;                 // rad/s about spinAxis through the (moving) centre
+  glm::vec3 spinAxis{0.0f, 0.0f, 1.0f};
+  ObstaclePath path;
+};
+void visit(ParamVisitor& v, ObstacleParams& o);
+// The parameters its particles are built from (a change rebuilds them; pose changes do not).
+bool sameBody(const ObstacleParams& a, const ObstacleParams& b);
 
 struct Params {
   // Particles and domain
@@ -54,17 +87,8 @@ struct Params {
   float pistonPeriod = 4.0f;  // s per in-and-out
   float rotation = 0.0f;      // degrees about x
   float rotationRate = 0.0f;  // degrees per s
-  // Obstacle: fixed particles from a shape, optionally spinning about the vertical axis. One only:
-  // several would need a list of groups in the parameter system (scene/param.h has no lists yet)
-  // and, in shaders/balls/neighbours.glsl, a transform per obstacle (pivot, rotation, spin) picked
-  // by an obstacle index in each fixed particle's w, with all of them in the one obstacle grid.
-  Shape obstacle = Shape::None;
-  std::string obstacleMesh = "torus";  // mesh: OBJ in assets/meshes (".obj" optional) or a path
-  bool obstacleShell = false;          // a surface shell instead of a solid fill
-  glm::vec3 obstacleCentre{0.5f, 0.5f, 0.4f};
-  glm::vec3 obstacleSize{0.2f, 0.2f, 0.2f};  // half extents (box, mesh bounds), radius (x) and height (z), per shape
-  glm::vec3 obstacleOrientation{0.0f};       // degrees about x, then y, then z, turning the shape about its centre
-  float obstacleSpin = 0.0f;                 // rad/s about the vertical axis through its centre
+  // Obstacles: up to kMaxObstacles, each moving rigidly (src/sim/balls/obstacles.h)
+  std::vector<ObstacleParams> obstacles;
   // Tap: emits balls over time (up to tapMax in total) from a disc facing tapDirection
   bool tap = false;
   glm::vec3 tapPosition{0.5f, 0.5f, 0.05f};  // m

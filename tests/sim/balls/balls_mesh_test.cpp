@@ -11,6 +11,7 @@
 #include "sim/balls/balls.h"
 #include "sim/balls/balls_init.h"
 #include "sim/balls/balls_mesh.h"
+#include "sim/balls/obstacle_pose.h"
 #include "support/gl_test.h"
 
 using namespace tidepool;
@@ -54,14 +55,32 @@ float surfaceDistance(const io::TriangleMesh& m, glm::vec3 q) {
   return best;
 }
 
+ObstacleParams shape(Shape kind, glm::vec3 centre, glm::vec3 size) {
+  ObstacleParams o;
+  o.shape = kind;
+  o.centre = centre;
+  o.size = size;
+  return o;
+}
+
+ObstacleParams meshShape(const std::string& mesh, glm::vec3 centre, glm::vec3 size) {
+  ObstacleParams o = shape(Shape::Mesh, centre, size);
+  o.mesh = mesh;
+  return o;
+}
+
 Params meshObstacle(const std::string& mesh, glm::vec3 centre, glm::vec3 size, float r) {
   Params p;
   p.radius = r;
-  p.obstacle = Shape::Mesh;
-  p.obstacleMesh = mesh;
-  p.obstacleCentre = centre;
-  p.obstacleSize = size;
+  p.obstacles = {meshShape(mesh, centre, size)};
   return p;
+}
+
+// Obstacle k's mesh where the model placed it.
+io::TriangleMesh placedMesh(const Balls& b, std::size_t k) {
+  io::TriangleMesh m = *b.obstacles().body(k).mesh;
+  for (glm::vec3& v : m.vertices) v = b.obstacles().pose(k).place(v);
+  return m;
 }
 
 class MeshObstacle : public test::GlTest {};
@@ -72,12 +91,7 @@ TEST(MeshVoxels, CubeMeshFillsLikeTheAnalyticBoxOnTheSameLattice) {
   for (const float r : {0.01f, 0.0137f}) {
     SCOPED_TRACE(r);
     const glm::vec3 c(0.43f, 0.52f, 0.37f), s(0.11f);
-    Params box;
-    box.radius = r;
-    box.obstacle = Shape::Box;
-    box.obstacleCentre = c;
-    box.obstacleSize = s;
-    const std::vector<glm::vec4> analytic = Obstacle(box).particles();
+    const std::vector<glm::vec4> analytic = Obstacle(shape(Shape::Box, c, s), r).particles();
     const MeshSolid solid(placeMesh(cubeMesh(), c, s, glm::mat3(1.0f)));
     const std::vector<glm::vec3> voxels = meshLatticePoints(solid, r, false);
     // Lattice points lie on the x faces (the lattice starts r outside them): those may go either
@@ -131,12 +145,7 @@ TEST(MeshVoxels, RowsThroughEdgesAndVerticesCountEachCrossingOnce) {
 TEST(MeshVoxels, IcosphereFillsLikeTheAnalyticSphere) {
   const float r = 0.01f, radius = 0.15f;
   const glm::vec3 c(0.5f, 0.45f, 0.4f);
-  Params sphere;
-  sphere.radius = r;
-  sphere.obstacle = Shape::Sphere;
-  sphere.obstacleCentre = c;
-  sphere.obstacleSize = glm::vec3(radius);
-  const std::size_t analytic = Obstacle(sphere).particles().size();
+  const std::size_t analytic = Obstacle(shape(Shape::Sphere, c, glm::vec3(radius)), r).particles().size();
   const io::TriangleMesh ico = icosphere(3);  // 1280 faces, vertices on the sphere
   const std::size_t voxels =
       meshLatticePoints(MeshSolid(placeMesh(ico, c, glm::vec3(radius), glm::mat3(1.0f))), r, false).size();
@@ -172,42 +181,45 @@ TEST(MeshVoxels, ShellPointsHugTheSurfaceAndCoverTheSolidsOuterLayer) {
   EXPECT_NEAR(double(fill.size()) / ideal, 1.0, 0.05) << fill.size() << " vs " << ideal;
 }
 
-TEST(MeshVoxels, OrientationTurnsTheMeshAboutItsCentre) {
+TEST(MeshVoxels, OrientationTurnsTheBodyAboutItsCentre) {
+  // The particles are built once in the obstacle's own frame; its pose turns them (and its mesh).
   const float r = 0.01f;
-  Params p = meshObstacle("torus", glm::vec3(0.5f), glm::vec3(0.2f), r);
-  const std::size_t flat = Obstacle(p).particles().size();
-  p.obstacleOrientation = glm::vec3(90.0f, 0.0f, 0.0f);  // ring upright in the xz plane
-  const Obstacle upright(p);
-  const std::vector<glm::vec4> points = upright.particles();
-  EXPECT_NEAR(double(points.size()) / double(flat), 1.0, 0.03);
-  const glm::vec3 lo = upright.mesh()->boundsMin() - 0.5f, hi = upright.mesh()->boundsMax() - 0.5f;
+  ObstacleParams o = meshShape("torus", glm::vec3(0.5f), glm::vec3(0.2f));
+  o.orientation = glm::vec3(90.0f, 0.0f, 0.0f);  // ring upright in the xz plane
+  const Obstacle torus(o, r);
+  const ObstaclePose pose = obstaclePose(o, 0.0);
+  const std::vector<glm::vec4> points = torus.particles();
+  ASSERT_GT(points.size(), 500u);
+  glm::vec3 lo(1e30f), hi(-1e30f);
+  for (const glm::vec3& v : torus.mesh()->vertices) {
+    lo = glm::min(lo, pose.place(v) - 0.5f);
+    hi = glm::max(hi, pose.place(v) - 0.5f);
+  }
   EXPECT_NEAR(hi.x, 0.2f, 1e-4f);
   EXPECT_NEAR(hi.z, 0.2f, 1e-4f);
   EXPECT_NEAR(hi.y, 0.2f * 0.4f / 1.4f, 1e-3f);
   EXPECT_NEAR(lo.z, -0.2f, 1e-4f);
   for (const glm::vec4& q : points) {
     // Distance from the tube's centre circle (radius 0.2/1.4 in the xz plane about the centre).
-    const glm::vec3 d = glm::vec3(q) - 0.5f;
+    const glm::vec3 d = pose.place(glm::vec3(q)) - 0.5f;
     const float ring = glm::length(glm::vec2(glm::length(glm::vec2(d.x, d.z)) - 0.2f / 1.4f, d.y));
     ASSERT_LE(ring, 0.4f * 0.2f / 1.4f + 1e-4f);
   }
   // Analytic shapes turn too: a box of half extents (0.2, 0.05, 0.1) turned 90° about z.
-  Params box;
-  box.radius = r;
-  box.obstacle = Shape::Box;
-  box.obstacleCentre = glm::vec3(0.5f);
-  box.obstacleSize = glm::vec3(0.2f, 0.05f, 0.1f);
-  box.obstacleOrientation = glm::vec3(0.0f, 0.0f, 90.0f);
-  const Obstacle turnedBox(box);
-  EXPECT_TRUE(turnedBox.inside(glm::vec3(0.5f, 0.68f, 0.5f)));
-  EXPECT_FALSE(turnedBox.inside(glm::vec3(0.68f, 0.5f, 0.5f)));
-  for (const glm::vec4& q : turnedBox.particles()) ASSERT_LE(std::abs(q.x - 0.5f), 0.05f + 1e-4f);
+  ObstacleParams box = shape(Shape::Box, glm::vec3(0.5f), glm::vec3(0.2f, 0.05f, 0.1f));
+  box.orientation = glm::vec3(0.0f, 0.0f, 90.0f);
+  const Obstacle turnedBox(box, r);
+  const ObstaclePose turned = obstaclePose(box, 0.0);
+  EXPECT_TRUE(turnedBox.inside(turned.toBody(glm::vec3(0.5f, 0.68f, 0.5f))));
+  EXPECT_FALSE(turnedBox.inside(turned.toBody(glm::vec3(0.68f, 0.5f, 0.5f))));
+  for (const glm::vec4& q : turnedBox.particles())
+    ASSERT_LE(std::abs(turned.place(glm::vec3(q)).x - 0.5f), 0.05f + 1e-4f);
 }
 
 TEST(MeshVoxels, BadMeshesAreRefusedWithTheReason) {
   auto error = [](const Params& p) {
     try {
-      Obstacle o(p);
+      Obstacle o(p.obstacles[0], p.radius);
     } catch (const Error& e) {
       return std::string(e.what());
     }
@@ -222,12 +234,12 @@ TEST(MeshVoxels, BadMeshesAreRefusedWithTheReason) {
   dir.write("open.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\n");  // no lid
   Params open = meshObstacle((dir / "open.obj").string(), glm::vec3(0.5f), glm::vec3(0.1f), 0.01f);
   EXPECT_EQ(error(open),
-            "mesh '" + open.obstacleMesh +
+            "mesh '" + open.obstacles[0].mesh +
                 "' is not closed: 3 edges belong to one triangle only (a hole); the first at vertices 2-3: "
-                "a solid fill needs a closed mesh; fix the mesh or set obstacle.shell");
-  open.obstacleShell = true;
+                "a solid fill needs a closed mesh; fix the mesh or make the obstacle a shell");
+  open.obstacles[0].shell = true;
   EXPECT_EQ(error(open), "") << "a shell needs no closed mesh";
-  EXPECT_GT(Obstacle(open).particles().size(), 50u);
+  EXPECT_GT(Obstacle(open.obstacles[0], open.radius).particles().size(), 50u);
 }
 
 TEST_F(MeshObstacle, BallsDroppedOnItNeverGetInside) {
@@ -235,7 +247,7 @@ TEST_F(MeshObstacle, BallsDroppedOnItNeverGetInside) {
     for (const char* mesh : {"cube", "torus", "blob"}) {
       SCOPED_TRACE(testing::Message() << mesh << (shell ? " shell" : " solid"));
       Params p = meshObstacle(mesh, glm::vec3(0.3f, 0.3f, 0.15f), glm::vec3(0.12f), 0.01f);
-      p.obstacleShell = shell;
+      p.obstacles[0].shell = shell;
       p.domainMax = glm::vec3(0.6f);
       p.fill = Fill::None;
       p.dt = 2e-4f;
@@ -244,7 +256,7 @@ TEST_F(MeshObstacle, BallsDroppedOnItNeverGetInside) {
       p.friction = 0.5f;  // without it they slide off the lattice's bumps
       Balls b(shaders(), p);
       ASSERT_GT(b.obstacleCount(), 100u);
-      const MeshSolid solid(*b.obstacleMesh());
+      const MeshSolid solid(placedMesh(b, 0));
       std::vector<glm::vec4> pos, vel;
       for (int j = 0; j < 3; ++j)
         for (int i = 0; i < 3; ++i) {  // over the top, from 0.2 m: 2 m/s at impact, 0.4 mm a step
@@ -271,33 +283,36 @@ TEST_F(MeshObstacle, EditingTheMeshWhileRunningRebuildsItOrRefusesTheEdit) {
   p.fill = Fill::None;
   p.domainMax = glm::vec3(0.6f);
   Balls b(shaders(), p);
-  EXPECT_EQ(b.obstacleMesh(), nullptr);
-  b.params().obstacle = Shape::Mesh;  // added
-  b.params().obstacleMesh = "cube";
-  b.params().obstacleCentre = glm::vec3(0.3f);
-  b.params().obstacleSize = glm::vec3(0.1f);
+  EXPECT_EQ(b.obstacles().size(), 0u);
+  b.params().obstacles = {meshShape("cube", glm::vec3(0.3f), glm::vec3(0.1f))};  // added
   b.stepOnce();
-  ASSERT_NE(b.obstacleMesh(), nullptr);
-  EXPECT_EQ(b.obstacleMesh()->triangles.size(), 12u);
+  ASSERT_EQ(b.obstacles().size(), 1u);
+  ASSERT_NE(b.obstacles().body(0).mesh, nullptr);
+  EXPECT_EQ(b.obstacles().body(0).mesh->triangles.size(), 12u);
   const std::size_t cube = b.obstacleCount();
-  const unsigned version = b.obstacleVersion();
+  const unsigned id = b.obstacles().body(0).id;
   EXPECT_GT(cube, 500u);
-  b.params().obstacleMesh = "no-such-mesh";  // refused: the cube stays
+  b.params().obstacles[0].mesh = "no-such-mesh";  // refused: the cube stays
   b.stepOnce();
   EXPECT_EQ(b.obstacleCount(), cube);
-  EXPECT_EQ(b.obstacleVersion(), version);
-  EXPECT_EQ(b.params().obstacleMesh, "cube") << "the refused edit is undone";
-  EXPECT_EQ(b.obstacleError().rfind("obstacle not changed: mesh 'no-such-mesh' not found", 0), 0u) << b.obstacleError();
-  b.params().obstacleOrientation = glm::vec3(0.0f, 0.0f, 45.0f);  // turned
+  EXPECT_EQ(b.obstacles().body(0).id, id);
+  EXPECT_EQ(b.params().obstacles[0].mesh, "cube") << "the refused edit is undone";
+  EXPECT_EQ(b.obstacleError().rfind("obstacles[0] not changed: mesh 'no-such-mesh' not found", 0), 0u)
+      << b.obstacleError();
+  b.params().obstacles[0].orientation = glm::vec3(0.0f, 0.0f, 45.0f);  // turned: placed, not rebuilt
+  b.stepOnce();
+  EXPECT_EQ(b.obstacles().body(0).id, id);
+  EXPECT_EQ(b.obstacleCount(), cube);
+  EXPECT_NEAR(placedMesh(b, 0).boundsMax().x, 0.3f + 0.1f * std::sqrt(2.0f), 1e-4f);
+  b.params().obstacles[0].centre = glm::vec3(0.25f, 0.3f, 0.3f);  // moved
+  b.stepOnce();
+  EXPECT_NEAR(placedMesh(b, 0).boundsMax().x, 0.25f + 0.1f * std::sqrt(2.0f), 1e-4f);
+  b.params().obstacles[0].mesh = "torus";  // reshaped: rebuilt, and the error is gone
   b.stepOnce();
   EXPECT_TRUE(b.obstacleError().empty());
-  EXPECT_NE(b.obstacleVersion(), version);
-  EXPECT_NEAR(b.obstacleMesh()->boundsMax().x, 0.3f + 0.1f * std::sqrt(2.0f), 1e-4f);
-  b.params().obstacleCentre = glm::vec3(0.25f, 0.3f, 0.3f);  // moved
-  b.stepOnce();
-  EXPECT_NEAR(b.obstacleMesh()->boundsMax().x, 0.25f + 0.1f * std::sqrt(2.0f), 1e-4f);
-  b.params().obstacle = Shape::None;  // removed
+  EXPECT_NE(b.obstacles().body(0).id, id);
+  b.params().obstacles.clear();  // removed
   b.stepOnce();
   EXPECT_EQ(b.obstacleCount(), 0u);
-  EXPECT_EQ(b.obstacleMesh(), nullptr);
+  EXPECT_EQ(b.obstacles().size(), 0u);
 }

@@ -1,5 +1,6 @@
-// CPU reference of one balls step (no obstacle): every pair by brute force, double precision,
-// the same laws as shaders/balls/contact.glsl and walls.glsl. The oracle for the GPU step.
+// CPU reference of one balls step: every pair by brute force, double precision, the same laws as
+// shaders/balls/contact.glsl and walls.glsl, and optionally fixed particles that move (obstacles:
+// immovable, mass ratio 1, their own velocity). The oracle for the GPU step.
 #pragma once
 
 #include <cmath>
@@ -15,6 +16,10 @@ using dvec3 = glm::dvec3;
 struct State {
   std::vector<dvec3> x, v;
   std::vector<double> foam;
+};
+
+struct Fixed {  // an obstacle particle: where it is and how fast it moves
+  dvec3 x, v;
 };
 
 inline dvec3 contactAccel(const Params& p, dvec3 n, double overlap, dvec3 relVel, double massRatio, double share) {
@@ -48,7 +53,7 @@ inline dvec3 wallAccel(const Params& p, dvec3 n, double overlap, dvec3 relVel) {
 }
 
 // One symplectic- or explicit-Euler step with fixed walls at the domain bounds.
-inline void step(State& s, const Params& p) {
+inline void step(State& s, const Params& p, const std::vector<Fixed>& fixed = {}) {
   const double r = p.radius, dt = p.dt, reach = 2 * r;
   const std::size_t n = s.x.size();
   std::vector<dvec3> a(n, dvec3(p.gravity));
@@ -59,6 +64,12 @@ inline void step(State& s, const Params& p) {
       const double dist = glm::length(d);
       if (dist >= reach || dist == 0.0) continue;
       a[i] += contactAccel(p, d / dist, reach - dist, s.v[i] - s.v[j], 0.5, 0.5);
+    }
+    for (const Fixed& f : fixed) {
+      const dvec3 d = s.x[i] - f.x;
+      const double dist = glm::length(d);
+      if (dist >= reach || dist == 0.0) continue;
+      a[i] += contactAccel(p, d / dist, reach - dist, s.v[i] - f.v, 1.0, 1.0);
     }
     for (int k = 0; k < 3; ++k) {
       dvec3 axis(0.0);

@@ -121,22 +121,24 @@ TEST_F(BallsStep, SpinningObstacleKeepsItsParticlesAndStirsTheWater) {
   p.domainMax = glm::vec3(0.6f, 0.6f, 0.4f);
   p.fill = Fill::Slab;
   p.slabHeight = 0.15f;
-  p.obstacle = Shape::Box;
-  p.obstacleCentre = glm::vec3(0.3f, 0.3f, 0.1f);
-  p.obstacleSize = glm::vec3(0.2f, 0.04f, 0.1f);
-  p.obstacleSpin = 6.0f;
+  ObstacleParams paddle;
+  paddle.shape = Shape::Box;
+  paddle.centre = glm::vec3(0.3f, 0.3f, 0.1f);
+  paddle.size = glm::vec3(0.2f, 0.04f, 0.1f);
+  paddle.spin = 6.0f;
+  p.obstacles = {paddle};
   p.substeps = 25;
   Balls b(shaders(), p);
   ASSERT_GT(b.obstacleCount(), 50u);
-  const std::vector<glm::vec4> before = b.obstaclePositions().read<glm::vec4>(b.obstacleCount());
+  const std::vector<glm::vec4> before = b.obstacles().bodies().read<glm::vec4>(b.obstacleCount());
   gl::GpuProfiler profiler;
   for (int i = 0; i < 20; ++i) b.step(profiler);
-  EXPECT_EQ(b.obstaclePositions().read<glm::vec4>(b.obstacleCount()), before) << "fixed particles never move";
+  EXPECT_EQ(b.obstacles().bodies().read<glm::vec4>(b.obstacleCount()), before) << "built once, never rebuilt";
   // The water turns with the paddle: positive mean angular momentum about its axis.
   double lz = 0;
   const std::vector<glm::vec4> x = b.downloadPositions(), v = b.downloadVelocities();
   for (std::size_t i = 0; i < x.size(); ++i) {
-    const glm::vec2 r = glm::vec2(x[i]) - glm::vec2(p.obstacleCentre);
+    const glm::vec2 r = glm::vec2(x[i]) - glm::vec2(paddle.centre);
     lz += r.x * v[i].y - r.y * v[i].x;
   }
   EXPECT_GT(lz / double(x.size()), 1e-4);
@@ -193,16 +195,18 @@ TEST_F(BallsStep, ObstacleEditedWhileRunningIsRebuilt) {
   p.fill = Fill::None;
   Balls b(shaders(), p);
   EXPECT_EQ(b.obstacleCount(), 0u);
-  b.params().obstacle = Shape::Sphere;  // added
-  b.params().obstacleCentre = glm::vec3(0.2f, 0.15f, 0.2f);
-  b.params().obstacleSize = glm::vec3(0.08f);
+  ObstacleParams sphere;  // added
+  sphere.shape = Shape::Sphere;
+  sphere.centre = glm::vec3(0.2f, 0.15f, 0.2f);
+  sphere.size = glm::vec3(0.08f);
+  b.params().obstacles = {sphere};
   b.stepOnce();
-  const std::size_t sphere = b.obstacleCount();
-  EXPECT_GT(sphere, 20u);
-  b.params().obstacleSize = glm::vec3(0.12f);  // resized
+  const std::size_t small = b.obstacleCount();
+  EXPECT_GT(small, 20u);
+  b.params().obstacles[0].size = glm::vec3(0.12f);  // resized
   b.stepOnce();
-  EXPECT_GT(b.obstacleCount(), sphere);
-  b.params().obstacle = Shape::None;  // removed
+  EXPECT_GT(b.obstacleCount(), small);
+  b.params().obstacles.clear();  // removed
   b.stepOnce();
   EXPECT_EQ(b.obstacleCount(), 0u);
 }

@@ -1,0 +1,81 @@
+// The obstacles of the balls model: each one's fixed particles are built once in its own frame
+// (shape, size, mesh; balls_init.h) and placed every step by its rigid pose (centre, orientation,
+// spin, path; obstacle_pose.h), evaluated from the time. On the GPU:
+//   bodies    all obstacles' particles in their own frames, one after the other, w = obstacle index
+//   place     obstacle_place.comp: world = centre_k + R_k·body for particle of obstacle k
+//   grid      the placed particles of every obstacle in one grid of cell 2r over their reach
+//   poses     a uniform block: each obstacle's pose and velocity, so a contact sees the moving
+//             particle's velocity v_k + ω_k × (x − c_k) (obstacle_poses.glsl)
+// Placing and the grid run only when a pose changed (animated obstacles: every step). Edits while
+// running rebuild only the obstacles whose shape changed; moving or turning one rebuilds nothing.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "gl/buffer.h"
+#include "gl/gpu_profiler.h"
+#include "gl/shader_library.h"
+#include "grid/grid.h"
+#include "io/obj.h"
+#include "sim/balls/balls_params.h"
+#include "sim/balls/obstacle_pose.h"
+
+namespace tidepool::balls {
+
+class Obstacle;  // balls_init.h
+
+// One obstacle's particles in its own frame, as built.
+struct ObstacleBody {
+  ObstacleParams built;                          // the parameters it was built from
+  std::vector<glm::vec4> particles;              // own frame, m; w = 0
+  std::shared_ptr<const io::TriangleMesh> mesh;  // a mesh shape's triangles, own frame; else null
+  std::shared_ptr<const Obstacle> shape;         // inside tests (the water fill)
+  std::size_t first = 0;                         // its first particle in the bodies buffer
+  float reach = 0;                               // largest |particle| + r, m
+  unsigned id = 0;                               // new with every build: renderers cache by it
+};
+
+class Obstacles {
+ public:
+  explicit Obstacles(gl::ShaderLibrary& shaders) : m_shaders(shaders) {}
+
+  // Every obstacle built anew (reset). Throws Error naming it ("obstacles[1]: mesh 'x' not found
+  // ..."), and then keeps the obstacles it had.
+  void build(const std::vector<ObstacleParams>& params, float radius);
+  // Edits while running: added, removed and reshaped obstacles are (re)built. An edit that fails
+  // (a missing or open mesh) is undone in `params`. Returns whether anything was rebuilt or
+  // refused; `error` then says what was refused (empty: nothing).
+  bool update(std::vector<ObstacleParams>& params, float radius, std::string& error);
+  // Poses at `time`; when one changed (or the bodies did), the particles' world positions and the
+  // grid (bounded by the domain, where balls can be).
+  void place(const std::vector<ObstacleParams>& params, double time, glm::vec3 domainMin, glm::vec3 domainMax,
+             gl::GpuProfiler* profiler = nullptr);
+  bool occupied(glm::vec3 world) const;   // inside an obstacle at its placed pose
+  void bind(gl::Program& program) const;  // uniforms, pose block and buffers of the contact search
+
+  bool active() const { return m_grid != nullptr; }  // any particles: the kernels' HAS_OBSTACLE
+  std::size_t size() const { return m_bodies.size(); }
+  std::size_t particles() const { return m_particles; }
+  const ObstacleBody& body(std::size_t k) const { return m_bodies[k]; }
+  const ObstaclePose& pose(std::size_t k) const { return m_poses[k]; }  // as placed
+  const gl::Buffer& bodies() const { return m_body; }                   // vec4 own frame, w = obstacle index
+  const gl::Buffer& placed() const { return m_world; }                  // vec4 world, same order as bodies()
+
+ private:
+  ObstacleBody buildOne(const ObstacleParams& o, float radius);
+  void upload();  // bodies -> GPU, after any rebuild
+
+  gl::ShaderLibrary& m_shaders;
+  std::vector<ObstacleBody> m_bodies;
+  std::vector<ObstaclePose> m_poses;
+  std::size_t m_particles = 0;
+  float m_radius = 0;
+  unsigned m_nextId = 1;
+  bool m_dirty = true;  // bodies changed since the last place()
+  gl::Buffer m_body, m_world, m_sorted, m_poseBlock;
+  std::unique_ptr<grid::UniformGrid> m_grid;
+};
+
+}  // namespace tidepool::balls
