@@ -31,8 +31,8 @@ int run(Env& env, const std::string& sceneName, const std::string& sizes, const 
   const bool lattice = base.fill == balls::Fill::Lattice;
   std::printf("balls benchmark on %s: scene %s, steps %d..%d, medians per step\n", env.device.c_str(),
               scene.name.c_str(), w.first, w.last);
-  Table table({"balls", "r", "cells", "count ms", "scan ms", "reorder ms", "drift ms", "collide ms", "ms/step",
-               "steps/s", "bytes/ball"});
+  Table table({"balls", "r", "cells", "count ms", "scan ms", "reorder ms", "drift ms", "collide ms", "obstacles ms",
+               "ms/step", "steps/s", "bytes/ball"});
   std::vector<std::size_t> counts = lattice ? parseSizes(sizes) : std::vector<std::size_t>{0};
   for (std::size_t n : counts) {
     balls::Params p = base;
@@ -42,8 +42,9 @@ int run(Env& env, const std::string& sceneName, const std::string& sizes, const 
     const double perStep = t.frameMs();
     table.add({std::to_string(model.count()), fixed(model.radius(), 5), std::to_string(model.cells()),
                fixed(t.median("balls.count"), 4), fixed(t.median("balls.scan"), 4), fixed(t.median("balls.reorder"), 4),
-               fixed(t.median("balls.drift"), 4), fixed(t.median("balls.collide"), 4), fixed(perStep, 4),
-               fixed(perStep > 0 ? 1000.0 / perStep : 0.0, 0), std::to_string(model.bytesPerBall())});
+               fixed(t.median("balls.drift"), 4), fixed(t.median("balls.collide"), 4),
+               fixed(t.median("balls.obstacles"), 4), fixed(perStep, 4), fixed(perStep > 0 ? 1000.0 / perStep : 0.0, 0),
+               std::to_string(model.bytesPerBall())});
   }
   table.print();
   if (const std::string caveat = timingCaveat(env.device); !caveat.empty())
