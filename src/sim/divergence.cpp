@@ -1,5 +1,6 @@
 #include "sim/divergence.h"
 
+#include <cstdio>
 #include <cstring>
 
 namespace tidepool {
@@ -10,6 +11,22 @@ CheckCycle::Words words(const std::vector<std::byte>& bytes) {
   return w;
 }
 }  // namespace
+
+float healthFloat(std::uint32_t word) {
+  float value = 0;
+  std::memcpy(&value, &word, sizeof value);
+  return value;
+}
+
+DivergenceReport divergenceReport(const std::string& model, double time, const std::string& what,
+                                  const std::string& method, bool hasGood) {
+  char at[32];
+  std::snprintf(at, sizeof at, "%.4f", time);
+  return {
+      model + " diverged by t = " + at + " s: " + what + " (" + method + ")" +
+          (hasGood ? "; halve the time step and resume from the last good state" : "; halve the time step and reset"),
+      time};
+}
 
 void CheckCycle::frame(double time, bool allowed, const Judge& judge, const std::function<void()>& start,
                        const gl::Buffer& health) {

@@ -26,6 +26,15 @@ struct DivergenceReport {
   double time = 0;      // simulated seconds of the failed check
 };
 
+// A float the health reduction stored as its bits in one word (e.g. the largest speed).
+float healthFloat(std::uint32_t word);
+
+// The report of a failed check, worded alike for every model:
+//   "<model> diverged by t = <time> s: <what> (<method>); halve the time step and resume from the
+//   last good state" (or "... and reset" when no good state was kept).
+DivergenceReport divergenceReport(const std::string& model, double time, const std::string& what,
+                                  const std::string& method, bool hasGood);
+
 // The watch's timing, shared by the models: a check every `interval` frames, never two in flight,
 // none while `allowed` is false (after a divergence, with nothing to watch). A model's check
 // reduces its state into a health buffer whose first four 32-bit words come back here.

@@ -285,8 +285,7 @@ CheckCycle::Judge Balls::judgeFn() {
 }
 
 void Balls::judge(const GLuint v[4], double time) {
-  float maxSpeed = 0;
-  std::memcpy(&maxSpeed, &v[1], sizeof maxSpeed);
+  const float maxSpeed = healthFloat(v[1]);
   if (v[0] == 0 && v[2] == 0 && maxSpeed <= speedBound()) {
     std::swap(m_pendingPos, m_goodPos);
     std::swap(m_pendingVel, m_goodVel);
@@ -295,7 +294,7 @@ void Balls::judge(const GLuint v[4], double time) {
     m_hasGood = bool(m_goodPos);
     return;
   }
-  char what[160];
+  char what[160], method[160];
   if (v[0] > 0)
     std::snprintf(what, sizeof what, "%u balls are NaN or infinite", v[0]);
   else if (v[2] > 0)
@@ -303,12 +302,9 @@ void Balls::judge(const GLuint v[4], double time) {
   else
     std::snprintf(what, sizeof what, "a ball moves at %.3g m/s, more than its diameter per step (%.3g m/s)", maxSpeed,
                   speedBound());
-  char text[512];
-  std::snprintf(
-      text, sizeof text, "balls diverged by t = %.4f s: %s (%s contacts, %s, dt = %.3g s)%s", time, what,
-      kContactNames[int(m_params.contact)], kIntegratorNames[int(m_params.integrator)], m_params.dt,
-      m_hasGood ? "; halve the time step and resume from the last good state" : "; halve the time step and reset");
-  m_divergence = DivergenceReport{text, time};
+  std::snprintf(method, sizeof method, "%s contacts, %s, dt = %.3g s", kContactNames[int(m_params.contact)],
+                kIntegratorNames[int(m_params.integrator)], m_params.dt);
+  m_divergence = divergenceReport("balls", time, what, method, m_hasGood);
 }
 
 bool Balls::recover() {

@@ -285,8 +285,7 @@ void Life::watch() {
 }
 
 void Life::judge(const CheckCycle::Words& w, double time) {
-  float maxSpeed = 0;
-  std::memcpy(&maxSpeed, &w[1], sizeof maxSpeed);
+  const float maxSpeed = healthFloat(w[1]);
   if (w[0] == 0 && maxSpeed <= speedBound()) {
     std::swap(m_pendingPos, m_goodPos);
     std::swap(m_pendingVel, m_goodVel);
@@ -295,19 +294,16 @@ void Life::judge(const CheckCycle::Words& w, double time) {
     m_hasGood = bool(m_goodPos);
     return;
   }
-  char what[200];
+  char what[200], method[160];
   if (w[0] > 0)
     std::snprintf(what, sizeof what, "%u particles are NaN or infinite", w[0]);
   else
     std::snprintf(what, sizeof what,
                   "a particle moves at %.3g units/s, more than 10 grid cells per step (%.3g units/s)", double(maxSpeed),
                   speedBound());
-  char text[512];
-  std::snprintf(
-      text, sizeof text, "life diverged by t = %.4f s: %s (%s, %s, dt = %.3g s)%s", time, what,
-      kIntegratorNames[int(m_params.integrator)], kStorageNames[int(m_storage)], double(m_lastDt),
-      m_hasGood ? "; halve the time step and resume from the last good state" : "; halve the time step and reset");
-  m_divergence = DivergenceReport{text, time};
+  std::snprintf(method, sizeof method, "%s, %s, dt = %.3g s", kIntegratorNames[int(m_params.integrator)],
+                kStorageNames[int(m_storage)], double(m_lastDt));
+  m_divergence = divergenceReport("life", time, what, method, m_hasGood);
 }
 
 bool Life::recover() {

@@ -149,11 +149,7 @@ void Ripples::watch() {
 }
 
 CheckCycle::Judge Ripples::judgeFn() {
-  return [this](const CheckCycle::Words& v, double time) {
-    float maxH = 0;
-    std::memcpy(&maxH, &v[0], sizeof maxH);
-    judge({time, double(v[2]), double(maxH)});
-  };
+  return [this](const CheckCycle::Words& v, double time) { judge({time, double(v[2]), double(healthFloat(v[0]))}); };
 }
 
 void Ripples::judge(const Health& h) {

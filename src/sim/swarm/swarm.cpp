@@ -204,27 +204,23 @@ void Swarm::watch() {
 }
 
 void Swarm::judge(const CheckCycle::Words& w, double time) {
-  float maxSpeed = 0;
-  std::memcpy(&maxSpeed, &w[1], sizeof maxSpeed);
+  const float maxSpeed = healthFloat(w[1]);
   if (w[0] == 0 && maxSpeed <= speedBound()) {
     std::swap(m_pending, m_good);
     m_goodTime = time;
     m_hasGood = bool(m_good);
     return;
   }
-  char what[200];
+  char what[200], method[160];
   if (w[0] > 0)
     std::snprintf(what, sizeof what, "%u particles are NaN or infinite", w[0]);
   else
     std::snprintf(what, sizeof what,
                   "a particle moves at %.3g units/s, ten times what the attractors can give one at rest (%.3g units/s)",
                   double(maxSpeed), speedBound());
-  char text[512];
-  std::snprintf(
-      text, sizeof text, "swarm diverged by t = %.4f s: %s (%s, %s, dt = %.3g s)%s", time, what,
-      kIntegratorNames[std::size_t(m_params.integrator)], kStorageNames[std::size_t(m_storage)], m_lastDt,
-      m_hasGood ? "; halve the time step and resume from the last good state" : "; halve the time step and reset");
-  m_divergence = DivergenceReport{text, time};
+  std::snprintf(method, sizeof method, "%s, %s, dt = %.3g s", kIntegratorNames[std::size_t(m_params.integrator)],
+                kStorageNames[std::size_t(m_storage)], m_lastDt);
+  m_divergence = divergenceReport("swarm", time, what, method, m_hasGood);
 }
 
 bool Swarm::recover() {
