@@ -40,7 +40,7 @@ void main() {
   const vec3 p = posIn[i].xyz;
   gVelocity = velIn[i].xyz;
   gAccel = uGravity;
-  forEachContact(i, p, gVelocity);
+  forEachContact(p);
   gAccel += wallsAccel(p, gVelocity);
   float foam = velIn[i].w;
 #ifdef INTEGRATOR_VERLET

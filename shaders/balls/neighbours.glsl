@@ -1,7 +1,7 @@
-// Every contact of ball `self` at p: the other balls within 2r in the 27 surrounding cells of the
+// Every contact of the ball at p: the other balls within 2r in the 27 surrounding cells of the
 // uniform grid, and the obstacles' fixed particles, placed in the world this step and found
 // through their own grid; each moves with its obstacle (obstacle_poses.glsl, index k in w).
-// The including kernel declares
+// The including kernel declares the cell-ordered posIn[] and velIn[] buffers and
 //   void onContact(vec3 n, float overlap, vec3 otherVelocity, float massRatio, float share);
 // before including this file (n points from the other body to the ball, world frame).
 #ifndef BALLS_NEIGHBOURS_GLSL
@@ -21,7 +21,18 @@ uniform uvec3 uObstacleDims;
 
 uniform float uRadius;  // m
 
-void forEachContact(uint self, vec3 p, vec3 v) {
+// Candidate j at q: a contact when closer than reach. The ball itself (d = 0) is skipped by the
+// distance test rather than by comparing indices: one test fewer per candidate made the collide
+// pass 13% faster on the H100 (docs/PERFORMANCE.md §4).
+void candidate(uint j, vec3 p, vec3 q, float reach) {
+  const vec3 d = p - q;
+  const float dist2 = dot(d, d);
+  if (dist2 >= reach * reach || dist2 == 0.0) return;  // itself, or coincident: no normal
+  const float dist = sqrt(dist2);
+  onContact(d / dist, reach - dist, velIn[j].xyz, 0.5, 0.5);
+}
+
+void forEachContact(vec3 p) {
   const float reach = 2.0 * uRadius;
   const ivec3 c = cellCoord(p);
   // Cells are numbered x fastest, so the three cells x-1..x+1 of a row hold one contiguous run
@@ -33,14 +44,7 @@ void forEachContact(uint self, vec3 p, vec3 v) {
       if (!cellInGrid(row)) continue;
       const uint first = cellIndex(row);
       const uint end = cellStart[first + uint(x1 - x0) + 1u];
-      for (uint j = cellStart[first]; j < end; ++j) {
-        if (j == self) continue;
-        const vec3 d = p - posIn[j].xyz;
-        const float dist2 = dot(d, d);
-        if (dist2 >= reach * reach || dist2 == 0.0) continue;  // coincident balls have no normal
-        const float dist = sqrt(dist2);
-        onContact(d / dist, reach - dist, velIn[j].xyz, 0.5, 0.5);
-      }
+      for (uint j = cellStart[first]; j < end; ++j) candidate(j, p, posIn[j].xyz, reach);
     }
 #ifdef HAS_OBSTACLE
   // The grid covers every obstacle particle a ball can reach; balls more than a cell outside it

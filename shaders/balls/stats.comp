@@ -46,7 +46,7 @@ void main() {
       gMaxOverlap = 0.0;
       gSumOverlap = 0.0;
       gContacts = 0.0;
-      forEachContact(i, p, v);
+      forEachContact(p);
       values[0] = 0.5 * dot(v, v);
       values[1] = -dot(uGravity, p - uDomainMin);
       values[2] = gSumOverlap / uRadius;
