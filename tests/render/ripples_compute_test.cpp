@@ -64,6 +64,18 @@ void expectClose(const std::string& name, const RenderTarget& target, const std:
   EXPECT_LE(d.farOff, 0.01) << name;
 }
 
+// Draws the model with the view's raster renderer, then its compute renderer, and compares.
+template <class View>
+void expectComputeMatchesRaster(const std::string& name, View& view, const ripples::Ripples& model,
+                                RenderTarget& target, gl::GpuProfiler& profiler) {
+  view.params().renderer = RipplesRenderer::Raster;
+  view.render(model, target, profiler);
+  const std::vector<uint8_t> raster = target.readRgba8();
+  view.params().renderer = RipplesRenderer::Compute;
+  view.render(model, target, profiler);
+  expectClose(name, target, raster, target.readRgba8());
+}
+
 // A 64x48 pool with a few drops' rings, optionally the ball circling through it.
 std::unique_ptr<ripples::Ripples> wavyPool(gl::ShaderLibrary& shaders, bool withBall, gl::GpuProfiler& profiler) {
   ripples::Params p;
@@ -94,12 +106,7 @@ TEST_F(RipplesCompute, TopViewMatchesTheRasterView) {
     const ripples::Ripples& model = *pool;
     RipplesView view(shaders());
     RenderTarget target(200, 120);
-    view.params().renderer = RipplesRenderer::Raster;
-    view.render(model, target, profiler);
-    const std::vector<uint8_t> raster = target.readRgba8();
-    view.params().renderer = RipplesRenderer::Compute;
-    view.render(model, target, profiler);
-    expectClose(withBall ? "ripples-2d-ball" : "ripples-2d", target, raster, target.readRgba8());
+    expectComputeMatchesRaster(withBall ? "ripples-2d-ball" : "ripples-2d", view, model, target, profiler);
   }
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
@@ -149,12 +156,7 @@ TEST_F(RipplesCompute, TankViewMatchesTheRasterView) {
     view.params().lightGrid = 256;
     view.params().causticsSize = 128;
     RenderTarget target(240, 160);
-    view.params().renderer = RipplesRenderer::Raster;
-    view.render(model, target, profiler);
-    const std::vector<uint8_t> raster = target.readRgba8();
-    view.params().renderer = RipplesRenderer::Compute;
-    view.render(model, target, profiler);
-    expectClose(withBall ? "ripples-3d-ball" : "ripples-3d", target, raster, target.readRgba8());
+    expectComputeMatchesRaster(withBall ? "ripples-3d-ball" : "ripples-3d", view, model, target, profiler);
   }
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
@@ -170,12 +172,7 @@ TEST_F(RipplesCompute, TankViewFromOtherAnglesMatchesTheRasterView) {
   for (const auto& a : angles) {
     view.camera().params().yaw = a[0];
     view.camera().params().pitch = a[1];
-    view.params().renderer = RipplesRenderer::Raster;
-    view.render(model, target, profiler);
-    const std::vector<uint8_t> raster = target.readRgba8();
-    view.params().renderer = RipplesRenderer::Compute;
-    view.render(model, target, profiler);
-    expectClose("ripples-3d-yaw" + std::to_string(a[0]) + "-pitch" + std::to_string(a[1]), target, raster,
-                target.readRgba8());
+    expectComputeMatchesRaster("ripples-3d-yaw" + std::to_string(a[0]) + "-pitch" + std::to_string(a[1]), view, model,
+                               target, profiler);
   }
 }
