@@ -2,9 +2,13 @@
 // Reorder pass of the uniform grid (src/grid/grid.h): particle i moves to slot
 // cellStart[cell] + indexInCell[i], for ARRAYS (0..GRID_REORDER_MAX_ARRAYS) arrays at once
 // (src -> dst, double-buffered: no copy back) of the layout's elements (grid/positions.glsl).
-// With WRITE_PERMUTATION, permutation[slot] = i.
+// With WRITE_PERMUTATION, permutation[slot] = i; with ARRAYS = 0 that is the first pass of the
+// gather reorder (grid_gather.comp reads the permutation).
 // The cell is recomputed from the positions rather than stored by the count pass: the positions
-// are usually one of the arrays being moved, so that read is served by the cache.
+// are usually one of the arrays being moved, so that read is served by the cache. In the gather's
+// permutation pass they are not (16 bytes read per particle where a stored cell would cost 4
+// written by the count pass and 4 read here), a coalesced read beside the pass's random 4-byte
+// cellStart read and permutation write.
 layout(local_size_x = 256) in;
 #include "common/index.glsl"
 #include "common/grid.glsl"

@@ -181,4 +181,17 @@ std::vector<std::size_t> parseSizes(const std::string& text) {
   return out;
 }
 
+std::vector<grid::ReorderMode> parseReorderModes(const std::string& text) {
+  std::vector<grid::ReorderMode> out;
+  std::stringstream ss(text);
+  for (std::string token; std::getline(ss, token, ',');) {
+    const auto& names = grid::kReorderModeNames;
+    const auto it = std::find(names.begin(), names.end(), token);
+    if (it == names.end()) throw Error("--reorder '" + token + "' is not scatter or gather");
+    out.push_back(grid::ReorderMode(it - names.begin()));
+  }
+  if (out.empty()) throw Error("--reorder: no modes given (scatter, gather or scatter,gather)");
+  return out;
+}
+
 }  // namespace tidepool::bench

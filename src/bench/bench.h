@@ -13,6 +13,7 @@
 #include "gl/context.h"
 #include "gl/gpu_profiler.h"
 #include "gl/shader_library.h"
+#include "grid/reorder_mode.h"
 
 namespace tidepool::bench {
 
@@ -86,5 +87,7 @@ std::string timingCaveat(const std::string& device);
 std::string fixed(double value, int decimals);
 // "65536,1M,16M", "2^16..2^24" or "512..4096" (doubling) -> sizes; throws Error naming the bad token.
 std::vector<std::size_t> parseSizes(const std::string& text);
+// "scatter,gather" -> grid reorder modes in that order; throws Error naming the bad token.
+std::vector<grid::ReorderMode> parseReorderModes(const std::string& text);
 
 }  // namespace tidepool::bench

@@ -2,12 +2,15 @@
 // about 1 and about 8 particles per cell: count (clear + atomicAdd pass), scan of the cell
 // counts, reorder of positions + velocities, and the whole build + reorder as one timed span:
 // total_ms from random order, sorted_ms from the last build's cell order (a running simulation).
+// --reorder scatter,gather gives one row per reorder mode (grid/reorder_mode.h), measured one
+// after the other on the same positions, each with its own grid made at the start of the row.
 // Beside it, in the same run: the scan of exactly N uint32, the naive Hillis-Steele scan of the
 // same, and a compute-shader copy (gl::BufferOps) of the same N * 4 bytes as the bandwidth reference
 // (glCopyBufferSubData runs far slower on some drivers: `tidepool bench memory`).
 // GB/s = (bytes read + bytes written) / time:
 //   scan     4 N read + 4 (N + 1) written (the minimum; the kernels move about 3 N words, see prefix_scan.h)
-//   reorder  per particle: 16 position (cell) + 4 indexInCell + 4 cellStart read, 16 per array read and written
+//   reorder  per particle: 16 position (cell) + 4 indexInCell + 4 cellStart read, 16 per array read and written;
+//            gather: + 4 permutation written, and read again by each batch of 2 arrays
 //   copy     4 N read + 4 N written
 // Each row's results are compared with the CPU after timing (note column; --no-check skips it).
 // --scan-shapes 256x4,512x8,... adds a table of the N-uint32 scan per work-group shape.
@@ -36,6 +39,7 @@ struct GridOptions {
   std::string perCell = "1,8";       // target particles per cell
   int arrays = 2;                    // vec4 arrays reordered (positions, velocities, ...)
   std::string scanShapes = "256x4";  // PrefixScan work-group shapes; the first one is the grid's
+  std::string reorder = "scatter";   // reorder modes, one row each
   bool noCheck = false;              // skip comparing every row's results with the CPU
 };
 
@@ -195,10 +199,10 @@ std::string checkGrid(const gl::BufferOps& ops, const grid::UniformGrid& grid, c
 }
 
 // The main table's columns; a row that was not measured is N, ppc and a note, the rest blank.
-const char* const kColumns[] = {
-    "N",          "cells",        "ppc",      "count_ms", "scan_ms",   "reorder_ms",   "total_ms",
-    "sorted_ms",  "scanN_ms",     "naive_ms", "copy_ms",  "scan_GBps", "reorder_GBps", "copy_GBps",
-    "scan/copy%", "naive/scan_x", "grid_MiB", "note"};
+const char* const kColumns[] = {"N",          "cells",        "ppc",       "reorder",      "count_ms",
+                                "scan_ms",    "reorder_ms",   "total_ms",  "sorted_ms",    "scanN_ms",
+                                "naive_ms",   "copy_ms",      "scan_GBps", "reorder_GBps", "copy_GBps",
+                                "scan/copy%", "naive/scan_x", "grid_MiB",  "note"};
 
 std::vector<std::string> noteRow(std::size_t n, const std::string& ppc, const std::string& note) {
   std::vector<std::string> row(std::size(kColumns));
@@ -208,14 +212,16 @@ std::vector<std::string> noteRow(std::size_t n, const std::string& ppc, const st
   return row;
 }
 
-std::vector<std::string> runRow(Env& env, const GridOptions& opt, WordScans& words, bool wallClock, std::size_t n,
-                                double perCell) {
+std::vector<std::vector<std::string>> runRows(Env& env, const GridOptions& opt,
+                                              const std::vector<grid::ReorderMode>& modes, WordScans& words,
+                                              bool wallClock, std::size_t n, double perCell) {
   const std::size_t limit = grid::maxStorageBlockBytes();
   const std::string nText = std::to_string(n);
   if (n * sizeof(glm::vec4) > limit)
-    return noteRow(n, "",
-                   "skipped: " + std::to_string(n * sizeof(glm::vec4) >> 20) +
-                       " MiB of positions exceed this driver's SSBO limit of " + std::to_string(limit >> 20) + " MiB");
+    return {noteRow(n, "",
+                    "skipped: " + std::to_string(n * sizeof(glm::vec4) >> 20) +
+                        " MiB of positions exceed this driver's SSBO limit of " + std::to_string(limit >> 20) +
+                        " MiB")};
   // The scan target is stated for N uint32: scan, naive scan and copy of exactly those bytes,
   // timed first, in the buffers allocated at the start (WordScans).
   std::mt19937 scanRng(uint32_t(n) * 7u + 1u);
@@ -236,11 +242,16 @@ std::vector<std::string> runRow(Env& env, const GridOptions& opt, WordScans& wor
   if (!opt.noCheck && ops.readBack<uint32_t>(out, n + 1) != want) scanNote += "WRONG naive scan; ";
   const double copyMs = medianMs(env.common, wallClock, [&] { ops.copy(in, copy, n * 4); });
 
-  // A cube of side s cells of size 1 holding about perCell particles per cell.
+  // A cube of side s cells of size 1 holding about perCell particles per cell; one grid per mode.
   const uint32_t side = std::max<uint32_t>(1, uint32_t(std::lround(std::cbrt(double(n) / perCell))));
-  grid::UniformGrid grid(env.shaders,
-                         {.domainMin = glm::vec3(0.0f), .domainMax = glm::vec3(float(side)), .cellSize = 1.0f}, n);
-  const std::size_t cells = grid.cells();
+  std::vector<std::unique_ptr<grid::UniformGrid>> grids;
+  for (grid::ReorderMode mode : modes)
+    grids.push_back(std::make_unique<grid::UniformGrid>(
+        env.shaders,
+        grid::GridParams{
+            .domainMin = glm::vec3(0.0f), .domainMax = glm::vec3(float(side)), .cellSize = 1.0f, .reorder = mode},
+        n));
+  const std::size_t cells = grids[0]->cells();
 
   std::mt19937 rng(uint32_t(n) ^ uint32_t(perCell * 1000));
   std::uniform_real_distribution<float> u(0.0f, float(side));
@@ -248,61 +259,61 @@ std::vector<std::string> runRow(Env& env, const GridOptions& opt, WordScans& wor
   for (std::size_t i = 0; i < n; ++i) pos[i] = glm::vec4(u(rng), u(rng), u(rng), float(i));
   std::vector<gl::Buffer> src, dst;
   for (int a = 0; a < opt.arrays; ++a) {
-    src.emplace_back(n * sizeof(glm::vec4), pos.data());
+    src.emplace_back(n * sizeof(glm::vec4));
     dst.emplace_back(n * sizeof(glm::vec4));
   }
-  std::vector<grid::ReorderArray> arrays;
-  for (int a = 0; a < opt.arrays; ++a) arrays.push_back({&src[a], &dst[a]});
+  std::vector<grid::ReorderArray> arrays, back;
+  for (int a = 0; a < opt.arrays; ++a) {
+    arrays.push_back({&src[a], &dst[a]});
+    back.push_back({&dst[a], &src[a]});  // from cell order
+  }
   const gl::Buffer& positions = src[0];
 
-  wakeGpu(env.shaders);  // the CPU has been filling positions
-  const double countMs = medianMs(env.common, wallClock, [&] { grid.countParticles(positions, n); });
-  const double scanMs = medianMs(env.common, wallClock, [&] { grid.scanCells(); });
-  const double reorderMs = medianMs(env.common, wallClock, [&] { grid.reorder(positions, arrays); });
-  const double totalMs = medianMs(env.common, wallClock, [&] {
-    grid.build(positions, n);
-    grid.reorder(positions, arrays);
-  });
-  std::string note = (opt.noCheck ? "" : checkGrid(ops, grid, pos, dst[0])) + scanNote;
-  if (note.empty() && !opt.noCheck) note = "checked";
-  // A running simulation rebuilds from last step's cell order, barely changed: the same build
-  // with the arrays already sorted (dst) as input, moving them back into src.
-  std::vector<grid::ReorderArray> back;
-  for (int a = 0; a < opt.arrays; ++a) back.push_back({&dst[a], &src[a]});
-  wakeGpu(env.shaders);  // after the check
-  const double sortedMs = medianMs(env.common, wallClock, [&] {
-    grid.build(dst[0], n);
-    grid.reorder(dst[0], back);
-  });
-
   const double scanBytes = 4.0 * n + 4.0 * (n + 1);
-  const double reorderBytes = double(n) * (16 + 4 + 4 + 32.0 * opt.arrays);
   const double copyBytes = 8.0 * n;
   const double scanGbps = gbps(scanBytes, uscanMs), copyGbps = gbps(copyBytes, copyMs);
-  return {nText,
-          std::to_string(cells),
-          fixed(double(n) / double(cells), 2),
-          fixed(countMs, 4),
-          fixed(scanMs, 4),
-          fixed(reorderMs, 4),
-          fixed(totalMs, 4),
-          fixed(sortedMs, 4),
-          fixed(uscanMs, 4),
-          fixed(naiveMs, 4),
-          fixed(copyMs, 4),
-          fixed(scanGbps, 1),
-          fixed(gbps(reorderBytes, reorderMs), 1),
-          fixed(copyGbps, 1),
-          fixed(copyGbps > 0 ? 100.0 * scanGbps / copyGbps : 0, 1),
-          fixed(uscanMs > 0 ? naiveMs / uscanMs : 0, 1),
-          fixed(double(grid.memoryBytes()) / double(1 << 20), 2),
-          note};
+  std::vector<std::vector<std::string>> rows;
+  for (std::size_t m = 0; m < modes.size(); ++m) {
+    grid::UniformGrid& grid = *grids[m];
+    // Random order again: the last mode's sorted runs left the sources in cell order.
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);  // those shader writes land before the uploads
+    for (gl::Buffer& b : src) b.upload(pos.data(), n * sizeof(glm::vec4));
+    wakeGpu(env.shaders);  // the CPU has been filling positions (or checking)
+    const double countMs = medianMs(env.common, wallClock, [&] { grid.countParticles(positions, n); });
+    const double scanMs = medianMs(env.common, wallClock, [&] { grid.scanCells(); });
+    const double reorderMs = medianMs(env.common, wallClock, [&] { grid.reorder(positions, arrays); });
+    const double totalMs = medianMs(env.common, wallClock, [&] {
+      grid.build(positions, n);
+      grid.reorder(positions, arrays);
+    });
+    std::string note = (opt.noCheck ? "" : checkGrid(ops, grid, pos, dst[0])) + scanNote;
+    if (note.empty() && !opt.noCheck) note = "checked";
+    // A running simulation rebuilds from last step's cell order, barely changed: the same build
+    // with the arrays already sorted (dst) as input, moving them back into src.
+    wakeGpu(env.shaders);  // after the check
+    const double sortedMs = medianMs(env.common, wallClock, [&] {
+      grid.build(dst[0], n);
+      grid.reorder(dst[0], back);
+    });
+    const double batches = std::ceil(double(opt.arrays) / GRID_REORDER_MAX_ARRAYS);
+    const double reorderBytes = double(n) * (16 + 4 + 4 + 32.0 * opt.arrays +
+                                             (modes[m] == grid::ReorderMode::Gather ? 4.0 + 4.0 * batches : 0.0));
+    rows.push_back({nText, std::to_string(cells), fixed(double(n) / double(cells), 2),
+                    grid::kReorderModeNames[std::size_t(modes[m])], fixed(countMs, 4), fixed(scanMs, 4),
+                    fixed(reorderMs, 4), fixed(totalMs, 4), fixed(sortedMs, 4), fixed(uscanMs, 4), fixed(naiveMs, 4),
+                    fixed(copyMs, 4), fixed(scanGbps, 1), fixed(gbps(reorderBytes, reorderMs), 1), fixed(copyGbps, 1),
+                    fixed(copyGbps > 0 ? 100.0 * scanGbps / copyGbps : 0, 1),
+                    fixed(uscanMs > 0 ? naiveMs / uscanMs : 0, 1),
+                    fixed(double(grid.memoryBytes()) / double(1 << 20), 2), note});
+  }
+  return rows;
 }
 
 int runGridBench(Env& env, const GridOptions& opt) {
   const std::vector<std::size_t> sizes = parseSizes(opt.sizes);
   const std::vector<double> perCell = parsePerCell(opt.perCell);
   const std::vector<grid::ScanConfig> shapes = parseShapes(opt.scanShapes);
+  const std::vector<grid::ReorderMode> modes = parseReorderModes(opt.reorder);
   std::printf("device: %s\n", env.device.c_str());
   const bool wallClock = timerQueriesAreBroken();
   std::printf("grid: %d vec4 arrays reordered; scanN/naive/copy on N uint32; medians of %d repeats (ms, GB/s); %s\n",
@@ -320,7 +331,8 @@ int runGridBench(Env& env, const GridOptions& opt) {
   for (std::size_t n : sizes) {
     for (double ppc : perCell) {
       try {
-        table.add(runRow(env, opt, words, wallClock, n, ppc));
+        for (std::vector<std::string>& row : runRows(env, opt, modes, words, wallClock, n, ppc))
+          table.add(std::move(row));
       } catch (const Error& e) {  // e.g. out of GPU memory: report the row, keep going
         table.add(noteRow(n, fixed(ppc, 2), std::string("error: ") + e.what()));
       }
@@ -349,6 +361,10 @@ Benchmark addGridBench(CLI::App& bench) {
   sub->add_option("--scan-shapes", opt->scanShapes,
                   "scan work-group shapes, e.g. 256x4,512x4,256x8,256x4p (p: scan-then-propagate; the first "
                   "is used in the main table, several add a table comparing them)")
+      ->capture_default_str();
+  sub->add_option("--reorder", opt->reorder,
+                  "reorder modes, one row each, e.g. scatter,gather (scatter: one pass writing random slots; "
+                  "gather: a permutation pass, then coalesced writes)")
       ->capture_default_str();
   sub->add_flag("--no-check", opt->noCheck, "skip comparing each row's grid and scans with the CPU");
   return {sub, [opt](Env& env) { return runGridBench(env, *opt); }};

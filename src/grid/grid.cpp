@@ -66,6 +66,7 @@ UniformGrid::UniformGrid(gl::ShaderLibrary& shaders, const GridParams& params, s
   m_cellStart = gl::Buffer(startBytes);
   m_scan.reserve(cells());
   if (particleCapacity) m_indexInCell = gl::Buffer(particleCapacity * kWord);
+  if (particleCapacity && params.reorder == ReorderMode::Gather) m_permutation = gl::Buffer(particleCapacity * kWord);
 }
 
 void UniformGrid::setUniforms(const gl::Program& program) const {
@@ -118,33 +119,70 @@ void UniformGrid::reorder(const gl::Buffer& positions, std::span<const ReorderAr
   positions.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_POSITIONS);
   m_indexInCell.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_INDEX_IN_CELL);
   m_cellStart.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_CELL_START);
+  if (m_params.reorder == ReorderMode::Gather && !arrays.empty())
+    gather(arrays, permutation);
+  else
+    scatter(arrays, permutation);  // a permutation alone is the gather's first pass anyway
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+gl::Program& UniformGrid::reorderPass(std::size_t arrays, bool writePermutation) {
+  gl::Program*& program = m_reorderPass[arrays][writePermutation];
+  if (!program)
+    program = &m_shaders->program({"grid/grid_reorder.comp"}, {{"ARRAYS", std::to_string(arrays)},
+                                                               {"WRITE_PERMUTATION", writePermutation ? "1" : "0"},
+                                                               {"HALF_POSITIONS", halfDefine(m_params)}});
+  program->use();
+  setUniforms(*program);
+  program->set("uCount", uint32_t(m_count));
+  return *program;
+}
+
+// Batches of GRID_REORDER_MAX_ARRAYS arrays; the first batch also writes the permutation.
+void UniformGrid::scatter(std::span<const ReorderArray> arrays, gl::Buffer* permutation) {
   if (permutation) permutation->bindBase(GL_SHADER_STORAGE_BUFFER, GRID_PERMUTATION);
-  // Batches of GRID_REORDER_MAX_ARRAYS arrays; the first batch also writes the permutation.
   std::size_t first = 0;
   bool writePermutation = permutation != nullptr;
   do {
     const std::size_t batch = std::min<std::size_t>(GRID_REORDER_MAX_ARRAYS, arrays.size() - first);
-    gl::Program*& program = m_reorderPass[batch][writePermutation];
-    if (!program)
-      program = &m_shaders->program({"grid/grid_reorder.comp"}, {{"ARRAYS", std::to_string(batch)},
-                                                                 {"WRITE_PERMUTATION", writePermutation ? "1" : "0"},
-                                                                 {"HALF_POSITIONS", halfDefine(m_params)}});
     for (std::size_t a = 0; a < batch; ++a) {
       arrays[first + a].src->bindBase(GL_SHADER_STORAGE_BUFFER, GLuint(GRID_REORDER_SRC + a));
       arrays[first + a].dst->bindBase(GL_SHADER_STORAGE_BUFFER, GLuint(GRID_REORDER_DST + a));
     }
-    program->use();
-    setUniforms(*program);
-    program->set("uCount", uint32_t(n));
-    program->dispatchThreads(n);
+    reorderPass(batch, writePermutation).dispatchThreads(m_count);
     first += batch;
     writePermutation = false;
   } while (first < arrays.size());
+}
+
+// The permutation pass (the scatter without arrays), then batches of GRID_REORDER_MAX_ARRAYS
+// arrays gathered in slot order.
+void UniformGrid::gather(std::span<const ReorderArray> arrays, gl::Buffer* permutation) {
+  if (!permutation) {
+    if (m_permutation.size() < m_count * kWord) m_permutation = gl::Buffer(m_count * kWord);
+    permutation = &m_permutation;
+  }
+  permutation->bindBase(GL_SHADER_STORAGE_BUFFER, GRID_PERMUTATION);
+  reorderPass(0, true).dispatchThreads(m_count);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  for (std::size_t first = 0; first < arrays.size(); first += GRID_REORDER_MAX_ARRAYS) {
+    const std::size_t batch = std::min<std::size_t>(GRID_REORDER_MAX_ARRAYS, arrays.size() - first);
+    for (std::size_t a = 0; a < batch; ++a) {
+      arrays[first + a].src->bindBase(GL_SHADER_STORAGE_BUFFER, GLuint(GRID_REORDER_SRC + a));
+      arrays[first + a].dst->bindBase(GL_SHADER_STORAGE_BUFFER, GLuint(GRID_REORDER_DST + a));
+    }
+    gl::Program*& program = m_gatherPass[batch];
+    if (!program)
+      program = &m_shaders->program({"grid/grid_gather.comp"},
+                                    {{"ARRAYS", std::to_string(batch)}, {"HALF_POSITIONS", halfDefine(m_params)}});
+    program->use();
+    program->set("uCount", uint32_t(m_count));
+    program->dispatchThreads(m_count);
+  }
 }
 
 std::size_t UniformGrid::memoryBytes() const {
-  return m_cellCount.size() + m_cellStart.size() + m_indexInCell.size() + m_scan.memoryBytes();
+  return m_cellCount.size() + m_cellStart.size() + m_indexInCell.size() + m_permutation.size() + m_scan.memoryBytes();
 }
 
 }  // namespace tidepool::grid

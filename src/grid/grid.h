@@ -9,6 +9,13 @@
 //            dst         = {p1, p5, p0, p2, p4, p3}   cell c is dst[cellStart[c] .. cellStart[c + 1])
 //            permutation = {1, 5, 0, 2, 4, 3}        permutation[slot] = original index (optional)
 //
+// The reorder runs one of two ways (GridParams::reorder, setReorderMode(); grid/reorder_mode.h):
+//   scatter  one pass, particle i writes dst[slot] = src[i]: coalesced reads, random writes
+//   gather   permutation pass (the scatter of a 4-byte word per particle), then one pass per
+//            batch of arrays in slot order, dst[slot] = src[permutation[slot]]: random reads,
+//            coalesced writes. Without a caller's permutation buffer the grid keeps its own.
+// Both place particle i at the same slot, so they give identical arrays and permutations.
+//
 // Determinism: cellCount and cellStart are the same on every run; the order of particles inside
 // a cell (indexInCell, hence the reordered arrays and the permutation) follows the atomicAdd
 // order and may differ between runs and drivers.
@@ -38,6 +45,7 @@
 #include "grid/bindings.glsl"
 #include "grid/grid_reference.h"
 #include "grid/prefix_scan.h"
+#include "grid/reorder_mode.h"
 
 namespace tidepool::grid {
 
@@ -52,6 +60,7 @@ struct GridParams {
   glm::vec3 domainMax{1.0f};  // world units; z equal to domainMin.z makes a 2D grid (one layer)
   float cellSize = 0.1f;      // world units; at least the model's interaction radius
   Layout layout = Layout::Vec4;
+  ReorderMode reorder = ReorderMode::Scatter;  // how reorder() moves the arrays (see above)
 };
 
 // One array to move by reorder(): src is read in particle order, dst written in cell order.
@@ -79,7 +88,9 @@ class UniformGrid {
     reorder(positions, std::span<const ReorderArray>(arrays.begin(), arrays.size()), permutation);
   }
 
-  void setUniforms(const gl::Program& program) const;  // uGridOrigin, uGridInvCellSize, uGridDims
+  void setUniforms(const gl::Program& program) const;                 // uGridOrigin, uGridInvCellSize, uGridDims
+  void setReorderMode(ReorderMode mode) { m_params.reorder = mode; }  // for the next reorder()
+  ReorderMode reorderMode() const { return m_params.reorder; }
 
   const GridParams& params() const { return m_params; }
   const reference::GridShape& shape() const { return m_shape; }
@@ -90,7 +101,7 @@ class UniformGrid {
   const gl::Buffer& cellCount() const { return m_cellCount; }      // uint per cell
   const gl::Buffer& cellStart() const { return m_cellStart; }      // uint per cell + 1 (total)
   const gl::Buffer& indexInCell() const { return m_indexInCell; }  // uint per particle
-  std::size_t memoryBytes() const;  // all GPU buffers the grid owns, scan levels included (bytes)
+  std::size_t memoryBytes() const;  // all GPU buffers the grid owns, scan levels and gather permutation included
   std::size_t elementBytes() const { return m_params.layout == Layout::Half2 ? 8 : 16; }  // of positions and arrays
 
  private:
@@ -101,8 +112,14 @@ class UniformGrid {
   gl::BufferOps m_ops;          // the cellCount clear
   gl::Program* m_countPass;
   gl::Program* m_reorderPass[GRID_REORDER_MAX_ARRAYS + 1][2] = {};  // [arrays][writes permutation], made on use
+  gl::Program* m_gatherPass[GRID_REORDER_MAX_ARRAYS + 1] = {};      // [arrays], made on use
   PrefixScan m_scan;
   gl::Buffer m_cellCount, m_cellStart, m_indexInCell;
+  gl::Buffer m_permutation;  // gather mode without a caller's permutation: uint per particle
+
+  gl::Program& reorderPass(std::size_t arrays, bool writePermutation);
+  void scatter(std::span<const ReorderArray> arrays, gl::Buffer* permutation);
+  void gather(std::span<const ReorderArray> arrays, gl::Buffer* permutation);
   std::size_t m_count = 0;
 };
 

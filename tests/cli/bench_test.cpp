@@ -51,3 +51,37 @@ TEST(Bench, RenderPrintsMsPerPassInBothModes) {
   ASSERT_EQ(raster.errLines().size(), 1u) << raster.err;
   EXPECT_NE(raster.err.find("--raster 'rops' is not compute, fragment or both"), std::string::npos) << raster.err;
 }
+
+TEST(Bench, GridGivesOneCheckedRowPerReorderMode) {
+  test::TempDir dir;
+  auto r = runTidepool({"bench", "grid", "--n", "4096", "--ppc", "4", "--reorder", "scatter,gather", "--repeats", "2",
+                        "--warmup", "0", "--csv", (dir / "grid.csv").string()});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  std::ifstream csvFile(dir / "grid.csv");
+  const std::string csv((std::istreambuf_iterator<char>(csvFile)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(csv.rfind("N,cells,ppc,reorder,count_ms,", 0), 0u) << csv;
+  for (const char* mode : {",scatter,", ",gather,"}) {
+    const std::size_t at = csv.find(mode);
+    ASSERT_NE(at, std::string::npos) << mode << "\n" << csv;
+    EXPECT_NE(csv.substr(at, csv.find('\n', at) - at).find(",checked"), std::string::npos) << csv;
+  }
+  auto bad = runTidepool({"bench", "grid", "--n", "4096", "--reorder", "scatter,sideways"});
+  EXPECT_EQ(bad.exitCode, 1);
+  ASSERT_EQ(bad.errLines().size(), 1u) << bad.err;
+  EXPECT_NE(bad.err.find("--reorder 'sideways' is not scatter or gather"), std::string::npos) << bad.err;
+}
+
+TEST(Bench, BallsRunsEachSizeInEachReorderMode) {
+  test::TempDir dir;
+  auto r = runTidepool({"bench", "balls", "bench-lattice", "--n", "4096", "--steps", "1:3", "--reorder",
+                        "scatter,gather", "--csv", (dir / "balls.csv").string()});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  std::ifstream csvFile(dir / "balls.csv");
+  const std::string csv((std::istreambuf_iterator<char>(csvFile)), std::istreambuf_iterator<char>());
+  for (const char* mode : {",scatter,", ",gather,"})
+    EXPECT_NE(csv.find(mode), std::string::npos) << mode << "\n" << csv;
+  auto wrong = runTidepool({"bench", "balls", "bench-lattice", "--n", "4096", "--reorder", "scatterr"});
+  EXPECT_EQ(wrong.exitCode, 1);
+  ASSERT_EQ(wrong.errLines().size(), 1u) << wrong.err;
+  EXPECT_NE(wrong.err.find("--reorder 'scatterr' is not scatter or gather"), std::string::npos) << wrong.err;
+}

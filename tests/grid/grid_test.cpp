@@ -1,9 +1,12 @@
 // The uniform grid against plain CPU loops: counts are a histogram, cellStart its exclusive scan,
 // the reorder a permutation that makes cells contiguous and in order; 2D and 3D, particles on
-// cell borders and outside the domain; counts and starts are the same on every run.
+// cell borders and outside the domain; counts and starts are the same on every run. The reorder
+// tests run for both reorder modes (scatter and gather), and the gather must give exactly the
+// scatter's arrays and permutation for the same build.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstring>
 #include <fstream>
 #include <glm/gtc/packing.hpp>
 #include <random>
@@ -19,6 +22,14 @@ using namespace tidepool::grid;
 
 namespace {
 class Grid : public test::GlTest {};
+// Tests of the reorder, once per ReorderMode.
+class GridModes : public Grid, public ::testing::WithParamInterface<ReorderMode> {
+ protected:
+  GridParams withMode(GridParams p) const {
+    p.reorder = GetParam();
+    return p;
+  }
+};
 
 gl::Buffer vec4Buffer(const std::vector<glm::vec4>& v) {
   return gl::Buffer(std::max<std::size_t>(v.size(), 1) * sizeof(glm::vec4), v.data());
@@ -96,10 +107,84 @@ void checkGrid(gl::ShaderLibrary& shaders, const GridParams& params, const std::
   for (std::size_t i = 0; i < n; ++i)
     ASSERT_LT(slots[i], counts[reference::cellOf(shape, glm::vec3(pos[i]))]) << "particle " << i;
 }
+
+// Builds once, reorders with the scatter, then with the gather from the same build, and compares
+// the arrays and the permutations word for word. The two modes' destinations start with
+// different fill words, so a slot one mode leaves unwritten cannot compare equal.
+void expectGatherEqualsScatter(gl::ShaderLibrary& shaders, GridParams params, std::size_t n, int arrays,
+                               bool withPermutation, uint32_t seed) {
+  SCOPED_TRACE("n " + std::to_string(n) + ", arrays " + std::to_string(arrays) +
+               (withPermutation ? ", with permutation" : ", no permutation"));
+  params.reorder = ReorderMode::Scatter;
+  UniformGrid grid(shaders, params);
+  const std::size_t words = grid.elementBytes() / 4, size = std::max<std::size_t>(n, 1);
+  const std::vector<glm::vec4> wide = makePositions(params, n, 0.2f, seed);
+  std::vector<uint32_t> pos(size * words, 0u);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (params.layout == Layout::Half2) {
+      pos[2 * i] = glm::packHalf2x16(glm::vec2(wide[i]));
+      pos[2 * i + 1] = uint32_t(i);
+    } else {
+      std::memcpy(&pos[4 * i], &wide[i], 16);
+    }
+  }
+  std::mt19937 rng(seed);
+  std::vector<gl::Buffer> src, scattered, gathered;
+  src.emplace_back(pos.size() * 4, pos.data());  // array 0 (when there is one) is the positions
+  for (int a = 1; a < arrays; ++a) {
+    std::vector<uint32_t> values(size * words);
+    for (uint32_t& v : values) v = rng();  // any bit pattern, NaNs included
+    src.emplace_back(values.size() * 4, values.data());
+  }
+  const std::vector<uint32_t> fillA(size * words, 0xaaaaaaaau), fillB(size * words, 0x55555555u);
+  std::vector<ReorderArray> viaScatter, viaGather;
+  for (int a = 0; a < arrays; ++a) {
+    scattered.emplace_back(fillA.size() * 4, fillA.data());
+    gathered.emplace_back(fillB.size() * 4, fillB.data());
+  }
+  for (int a = 0; a < arrays; ++a) {
+    viaScatter.push_back({&src[a], &scattered[a]});
+    viaGather.push_back({&src[a], &gathered[a]});
+  }
+  gl::Buffer permA(size * 4, fillA.data()), permB(size * 4, fillB.data());
+  grid.build(src[0], n);
+  grid.reorder(src[0], viaScatter, withPermutation ? &permA : nullptr);
+  grid.setReorderMode(ReorderMode::Gather);
+  grid.reorder(src[0], viaGather, withPermutation ? &permB : nullptr);
+
+  if (n == 0) {  // nothing moves
+    for (int a = 0; a < arrays; ++a) {
+      EXPECT_EQ(scattered[a].read<uint32_t>(words), std::vector<uint32_t>(words, 0xaaaaaaaau));
+      EXPECT_EQ(gathered[a].read<uint32_t>(words), std::vector<uint32_t>(words, 0x55555555u));
+    }
+    return;
+  }
+  for (int a = 0; a < arrays; ++a)
+    ASSERT_EQ(scattered[a].read<uint32_t>(n * words), gathered[a].read<uint32_t>(n * words)) << "array " << a;
+  if (withPermutation) {
+    const std::vector<uint32_t> perm = permA.read<uint32_t>(n);
+    ASSERT_EQ(perm, permB.read<uint32_t>(n));
+    std::vector<uint32_t> ids = perm;
+    std::sort(ids.begin(), ids.end());
+    for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(ids[i], i) << "not a permutation";
+  }
+}
+
+// Sizes 0, 1, 2, one and two work groups (256) +-1 and random ones; 0..5 arrays (up to three
+// dispatch batches), with and without the permutation.
+void gatherEqualsScatterSweep(gl::ShaderLibrary& shaders, const GridParams& params, uint32_t seed) {
+  std::vector<std::size_t> sizes = {0, 1, 2, 255, 256, 257, 511, 512, 513};
+  std::mt19937 rng(seed);
+  for (int k = 0; k < 3; ++k) sizes.push_back(1 + rng() % 6000);
+  for (std::size_t n : sizes)
+    for (int arrays : {0, 1, 2, 3, 5})
+      for (bool withPermutation : {false, true})
+        expectGatherEqualsScatter(shaders, params, n, arrays, withPermutation, seed + uint32_t(n));
+}
 }  // namespace
 
-TEST_F(Grid, ExampleFromTheHeader) {
-  UniformGrid grid(shaders(), {.domainMin = {0, 0, 0}, .domainMax = {4, 1, 0}, .cellSize = 1.0f});
+TEST_P(GridModes, ExampleFromTheHeader) {
+  UniformGrid grid(shaders(), withMode({.domainMin = {0, 0, 0}, .domainMax = {4, 1, 0}, .cellSize = 1.0f}));
   ASSERT_EQ(grid.dims(), glm::uvec3(4, 1, 1));
   EXPECT_TRUE(grid.is2D());
   const std::vector<glm::vec4> pos = {{2.5f, 0.5f, 0, 0}, {0.5f, 0.5f, 0, 1}, {2.5f, 0.5f, 0, 2},
@@ -115,26 +200,26 @@ TEST_F(Grid, ExampleFromTheHeader) {
   EXPECT_EQ(p, (std::vector<uint32_t>{1, 5, 0, 2, 4, 3}));
 }
 
-TEST_F(Grid, Random3DWithBordersAndOutsiders) {
-  const GridParams params{.domainMin = {-1, 0, 2}, .domainMax = {3, 2, 3.5f}, .cellSize = 0.25f};
+TEST_P(GridModes, Random3DWithBordersAndOutsiders) {
+  const GridParams params = withMode({.domainMin = {-1, 0, 2}, .domainMax = {3, 2, 3.5f}, .cellSize = 0.25f});
   checkGrid(shaders(), params, makePositions(params, 20000, 0.5f, 1));
 }
 
-TEST_F(Grid, Random2DWithBordersAndOutsiders) {
-  const GridParams params{.domainMin = {0, 0, 0}, .domainMax = {8, 4, 0}, .cellSize = 0.5f};
+TEST_P(GridModes, Random2DWithBordersAndOutsiders) {
+  const GridParams params = withMode({.domainMin = {0, 0, 0}, .domainMax = {8, 4, 0}, .cellSize = 0.5f});
   checkGrid(shaders(), params, makePositions(params, 30001, 1.0f, 2));
 }
 
-TEST_F(Grid, ManyParticlesPerCellAndManyCells) {
+TEST_P(GridModes, ManyParticlesPerCellAndManyCells) {
   // ~8 per cell over more cells than one scan block (two-level scan), and a crowded tiny grid.
-  const GridParams wide{.domainMin = {0, 0, 0}, .domainMax = {24, 24, 24}, .cellSize = 1.0f};
+  const GridParams wide = withMode({.domainMin = {0, 0, 0}, .domainMax = {24, 24, 24}, .cellSize = 1.0f});
   checkGrid(shaders(), wide, makePositions(wide, 8 * 24 * 24 * 24, 0.0f, 3));
-  const GridParams tiny{.domainMin = {0, 0, 0}, .domainMax = {1, 1, 1}, .cellSize = 0.5f};
+  const GridParams tiny = withMode({.domainMin = {0, 0, 0}, .domainMax = {1, 1, 1}, .cellSize = 0.5f});
   checkGrid(shaders(), tiny, makePositions(tiny, 5000, 0.1f, 4));
 }
 
-TEST_F(Grid, NonMultipleCellSizeRoundsDimsUp) {
-  UniformGrid grid(shaders(), {.domainMin = {0, 0, 0}, .domainMax = {1, 1, 1}, .cellSize = 0.3f});
+TEST_P(GridModes, NonMultipleCellSizeRoundsDimsUp) {
+  UniformGrid grid(shaders(), withMode({.domainMin = {0, 0, 0}, .domainMax = {1, 1, 1}, .cellSize = 0.3f}));
   EXPECT_EQ(grid.dims(), glm::uvec3(4, 4, 4));
   EXPECT_FALSE(grid.is2D());
   const GridParams params = grid.params();
@@ -143,8 +228,9 @@ TEST_F(Grid, NonMultipleCellSizeRoundsDimsUp) {
 
 // Layout::Half2 (particle life's fp16 state): positions are uvec2 (packHalf2x16(xy), a word) and
 // the reordered arrays have 8-byte elements, moved bit for bit (NaN patterns included).
-TEST_F(Grid, HalfFloatPositionsAndEightByteArrays) {
-  const GridParams params{.domainMin = {-8, -4, 0}, .domainMax = {8, 4, 0}, .cellSize = 0.75f, .layout = Layout::Half2};
+TEST_P(GridModes, HalfFloatPositionsAndEightByteArrays) {
+  const GridParams params =
+      withMode({.domainMin = {-8, -4, 0}, .domainMax = {8, 4, 0}, .cellSize = 0.75f, .layout = Layout::Half2});
   const std::vector<glm::vec4> wide = makePositions(params, 20001, 1.0f, 7);
   const std::size_t n = wide.size();
   std::vector<glm::uvec2> pos(n), other(n);
@@ -179,13 +265,61 @@ TEST_F(Grid, HalfFloatPositionsAndEightByteArrays) {
   EXPECT_THROW(grid.build(posOut, n + 1), Error) << "n + 1 positions need 8 more bytes";
 }
 
-TEST_F(Grid, ZeroParticles) {
-  UniformGrid grid(shaders(), {.domainMin = {0, 0, 0}, .domainMax = {2, 2, 2}, .cellSize = 1.0f});
-  gl::Buffer pos(16), out(16);
+TEST_P(GridModes, ZeroParticles) {
+  UniformGrid grid(shaders(), withMode({.domainMin = {0, 0, 0}, .domainMax = {2, 2, 2}, .cellSize = 1.0f}));
+  const glm::vec4 untouched(7.0f);
+  gl::Buffer pos(16), out(16, &untouched), perm(4);
   grid.build(pos, 0);
   EXPECT_EQ(grid.cellStart().readAll<uint32_t>(), std::vector<uint32_t>(9, 0u));
-  grid.reorder(pos, {{&pos, &out}});
+  grid.reorder(pos, {{&pos, &out}}, &perm);
   EXPECT_EQ(grid.particleCount(), 0u);
+  EXPECT_EQ(out.read<glm::vec4>(1)[0], untouched) << "nothing to move";
+}
+
+INSTANTIATE_TEST_SUITE_P(Modes, GridModes, ::testing::Values(ReorderMode::Scatter, ReorderMode::Gather),
+                         [](const ::testing::TestParamInfo<ReorderMode>& info) {
+                           return std::string(kReorderModeNames[std::size_t(info.param)]);
+                         });
+
+TEST_F(Grid, GatherEqualsScatter3D) {
+  gatherEqualsScatterSweep(shaders(), {.domainMin = {-1, 0, 2}, .domainMax = {3, 2, 3.5f}, .cellSize = 0.25f}, 11);
+}
+
+TEST_F(Grid, GatherEqualsScatter2D) {
+  gatherEqualsScatterSweep(shaders(), {.domainMin = {0, 0, 0}, .domainMax = {8, 4, 0}, .cellSize = 0.5f}, 12);
+}
+
+TEST_F(Grid, GatherEqualsScatterHalfFloat) {
+  gatherEqualsScatterSweep(
+      shaders(), {.domainMin = {-8, -4, 0}, .domainMax = {8, 4, 0}, .cellSize = 0.75f, .layout = Layout::Half2}, 13);
+}
+
+// Switching modes between reorders of one build, and a gather reorder of the balls' kind (positions
+// and velocities, no permutation) repeated from its own output (last step's cell order).
+TEST_F(Grid, GatherFromCellOrderKeepsTheOrder) {
+  const GridParams params{
+      .domainMin = {0, 0, 0}, .domainMax = {6, 6, 6}, .cellSize = 0.5f, .reorder = ReorderMode::Gather};
+  const std::vector<glm::vec4> pos = makePositions(params, 7000, 0.1f, 14);
+  UniformGrid grid(shaders(), params);
+  gl::Buffer a = vec4Buffer(pos), b(a.size()), c(a.size());
+  grid.build(a, pos.size());
+  grid.reorder(a, {{&a, &b}});
+  grid.build(b, pos.size());
+  grid.reorder(b, {{&b, &c}});
+  // Sorted input: every cell's particles are already together, so the rebuild keeps the cells;
+  // inside a cell the atomicAdd order may shuffle them.
+  const std::vector<glm::vec4> first = b.read<glm::vec4>(pos.size()), second = c.read<glm::vec4>(pos.size());
+  const std::vector<uint32_t> starts = grid.cellStart().read<uint32_t>(grid.cells() + 1);
+  for (std::size_t cell = 0; cell < grid.cells(); ++cell) {
+    std::vector<float> x, y;
+    for (uint32_t j = starts[cell]; j < starts[cell + 1]; ++j) {
+      x.push_back(first[j].w);
+      y.push_back(second[j].w);
+    }
+    std::sort(x.begin(), x.end());
+    std::sort(y.begin(), y.end());
+    ASSERT_EQ(x, y) << "cell " << cell;
+  }
 }
 
 TEST_F(Grid, CountsAndStartsAreDeterministic) {
@@ -213,9 +347,14 @@ TEST_F(Grid, MemoryIsReported) {
   // counts + starts + indexInCell + scan levels (64 + 1 block sums)
   EXPECT_EQ(grid.memoryBytes(),
             cells * 4 + (cells + 1) * 4 + 1000 * 4 + (cells / PrefixScan::Config{}.block() + 1) * 4);
+  // The gather keeps its own permutation (uint per particle) when the caller gives none.
+  UniformGrid gather(
+      shaders(), {.domainMin = {0, 0, 0}, .domainMax = {64, 64, 64}, .cellSize = 1.0f, .reorder = ReorderMode::Gather},
+      1000);
+  EXPECT_EQ(gather.memoryBytes(), grid.memoryBytes() + 1000 * 4);
 }
 
-TEST_F(Grid, BadInputThrowsOneLineErrors) {
+TEST_P(GridModes, BadInputThrowsOneLineErrors) {
   auto make = [&](GridParams p) { UniformGrid grid(shaders(), p); };
   const glm::vec3 zero(0.0f), one(1.0f);
   for (float cell : {0.0f, -1.0f, std::nanf("")})
@@ -230,13 +369,15 @@ TEST_F(Grid, BadInputThrowsOneLineErrors) {
     EXPECT_NE(std::string(e.what()).find("larger cell size"), std::string::npos) << e.what();
     EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos);
   }
-  UniformGrid grid(shaders(), {.domainMin = zero, .domainMax = one, .cellSize = 0.5f});
+  UniformGrid grid(shaders(), withMode({.domainMin = zero, .domainMax = one, .cellSize = 0.5f}));
   gl::Buffer small(16);
   EXPECT_THROW(grid.build(small, 2), Error);  // 2 positions need 32 bytes
   gl::Buffer pos(32), out(32);
   grid.build(pos, 2);
   EXPECT_THROW(grid.reorder(pos, {{&pos, &small}}), Error);
   EXPECT_THROW(grid.reorder(pos, {{&pos, &pos}}), Error);
+  gl::Buffer shortPermutation(4);
+  EXPECT_THROW(grid.reorder(pos, {{&pos, &out}}, &shortPermutation), Error);  // 2 particles need 8 bytes
 }
 
 TEST(GridBindings, HeaderHoldsOnlyDefinesSharedWithCpp) {

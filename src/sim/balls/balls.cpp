@@ -79,7 +79,8 @@ void Balls::reset() {
   m_posIndex = m_velIndex = 0;
   m_time = 0;
   m_accValid = false;
-  grid::GridParams gp{p.domainMin, p.domainMax, 2.0f * m_radius};
+  grid::GridParams gp{
+      .domainMin = p.domainMin, .domainMax = p.domainMax, .cellSize = 2.0f * m_radius, .reorder = p.gridReorder};
   m_grid = std::make_unique<grid::UniformGrid>(m_shaders, gp, m_capacity);
   m_obstacleError.clear();
   updateWalls();
@@ -196,6 +197,7 @@ void Balls::gridAndCollide(gl::GpuProfiler* profiler, bool verlet, float kick) {
   }
   {
     auto s = scope("balls.reorder");
+    m_grid->setReorderMode(m_params.gridReorder);  // may change while running
     m_grid->reorder(m_pos[p], {{&m_pos[p], &m_pos[1 - p]}, {&m_vel[v], &m_vel[1 - v]}},
                     m_trackOrder ? &m_permutation : nullptr);
   }

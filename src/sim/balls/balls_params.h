@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "balls/bindings.glsl"
+#include "grid/reorder_mode.h"
 #include "scene/param.h"
 
 namespace tidepool::balls {
@@ -69,10 +70,11 @@ struct Params {
   // Engine
   Contact contact = Contact::SpringDashpot;
   Integrator integrator = Integrator::SymplecticEuler;
-  float dt = 5e-4f;                       // s per step
-  int substeps = 8;                       // steps per frame
-  glm::vec3 gravity{0.0f, 0.0f, -9.81f};  // m/s^2 in the unrotated domain
-  float damping = 0.0f;                   // 1/s: v *= exp(-damping dt)
+  float dt = 5e-4f;                                            // s per step
+  int substeps = 8;                                            // steps per frame
+  glm::vec3 gravity{0.0f, 0.0f, -9.81f};                       // m/s^2 in the unrotated domain
+  float damping = 0.0f;                                        // 1/s: v *= exp(-damping dt)
+  grid::ReorderMode gridReorder = grid::ReorderMode::Scatter;  // how each step's grid moves the balls
   // spring-dashpot: k and gamma from the contact duration and restitution (per unit effective mass)
   float contactTime = 0.01f;  // t_c, s
   float restitution = 0.5f;   // e

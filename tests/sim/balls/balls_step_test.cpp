@@ -42,37 +42,40 @@ void jumbled(std::vector<glm::vec4>& pos, std::vector<glm::vec4>& vel, const Par
 
 TEST_F(BallsStep, GpuStepEqualsCpuReferenceForEveryContactLaw) {
   for (Contact contact : {Contact::SpringDashpot, Contact::Penalty, Contact::CudaSample})
-    for (Integrator integrator : {Integrator::SymplecticEuler, Integrator::ExplicitEuler}) {
-      SCOPED_TRACE(std::string(kContactNames[int(contact)]) + " / " + kIntegratorNames[int(integrator)]);
-      Params p = emptyBox();
-      p.contact = contact;
-      p.integrator = integrator;
-      p.friction = contact == Contact::SpringDashpot ? 0.3f : 0.0f;
-      p.damping = 0.5f;
-      std::vector<glm::vec4> pos, vel;
-      jumbled(pos, vel, p, 600);
-      Balls gpu(shaders(), p);
-      gpu.upload(pos, vel);
-      gpu.trackOrder(true);
-      reference::State cpu;
-      for (std::size_t i = 0; i < pos.size(); ++i) {
-        cpu.x.emplace_back(glm::vec3(pos[i]));
-        cpu.v.emplace_back(glm::vec3(vel[i]));
+    for (Integrator integrator : {Integrator::SymplecticEuler, Integrator::ExplicitEuler})
+      for (grid::ReorderMode reorder : {grid::ReorderMode::Scatter, grid::ReorderMode::Gather}) {
+        SCOPED_TRACE(std::string(kContactNames[int(contact)]) + " / " + kIntegratorNames[int(integrator)] + " / " +
+                     grid::kReorderModeNames[int(reorder)] + " reorder");
+        Params p = emptyBox();
+        p.contact = contact;
+        p.integrator = integrator;
+        p.gridReorder = reorder;
+        p.friction = contact == Contact::SpringDashpot ? 0.3f : 0.0f;
+        p.damping = 0.5f;
+        std::vector<glm::vec4> pos, vel;
+        jumbled(pos, vel, p, 600);
+        Balls gpu(shaders(), p);
+        gpu.upload(pos, vel);
+        gpu.trackOrder(true);
+        reference::State cpu;
+        for (std::size_t i = 0; i < pos.size(); ++i) {
+          cpu.x.emplace_back(glm::vec3(pos[i]));
+          cpu.v.emplace_back(glm::vec3(vel[i]));
+        }
+        gpu.stepOnce();
+        reference::step(cpu, p);
+        const std::vector<glm::vec4> gx = gpu.downloadPositions(), gv = gpu.downloadVelocities();
+        const std::vector<GLuint> order = gpu.lastOrder();
+        double worstX = 0, worstV = 0, scaleV = 0;
+        for (std::size_t k = 0; k < gx.size(); ++k) {
+          const std::size_t i = order[k];
+          worstX = std::max(worstX, glm::length(glm::dvec3(glm::vec3(gx[k])) - cpu.x[i]));
+          worstV = std::max(worstV, glm::length(glm::dvec3(glm::vec3(gv[k])) - cpu.v[i]));
+          scaleV = std::max(scaleV, glm::length(cpu.v[i]));
+        }
+        EXPECT_LT(worstX, 1e-5 * 0.5) << "positions (relative to the 0.5 m domain)";
+        EXPECT_LT(worstV / scaleV, 1e-5) << "velocities, relative";
       }
-      gpu.stepOnce();
-      reference::step(cpu, p);
-      const std::vector<glm::vec4> gx = gpu.downloadPositions(), gv = gpu.downloadVelocities();
-      const std::vector<GLuint> order = gpu.lastOrder();
-      double worstX = 0, worstV = 0, scaleV = 0;
-      for (std::size_t k = 0; k < gx.size(); ++k) {
-        const std::size_t i = order[k];
-        worstX = std::max(worstX, glm::length(glm::dvec3(glm::vec3(gx[k])) - cpu.x[i]));
-        worstV = std::max(worstV, glm::length(glm::dvec3(glm::vec3(gv[k])) - cpu.v[i]));
-        scaleV = std::max(scaleV, glm::length(cpu.v[i]));
-      }
-      EXPECT_LT(worstX, 1e-5 * 0.5) << "positions (relative to the 0.5 m domain)";
-      EXPECT_LT(worstV / scaleV, 1e-5) << "velocities, relative";
-    }
 }
 
 TEST_F(BallsStep, NothingIsLostOrEscapesAndNothingIsNaN) {
