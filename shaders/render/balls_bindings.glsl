@@ -10,7 +10,8 @@
 #define BALLS_VIEW_GBUFFER 0         // compose: G-buffer (RG normal xy, B thickness m, A view depth m)
 #define BALLS_VIEW_FOAM 1            // compose: foam of the nearest ball (R16F)
 #define BALLS_VIEW_DEPTH 2           // compose: the balls' own window depth (DEPTH32F or R32F)
-#define BALLS_VIEW_SCENE_DEPTH 3     // compute raster: sampler unit of the scene's DEPTH32F
+#define BALLS_VIEW_SCENE_DEPTH 3     // compute raster and compose: sampler unit of the scene's DEPTH32F
+#define BALLS_VIEW_COMPOSE_TARGET 0  // compose: image unit of the target's colour (RGBA8, read and written)
 #define BALLS_VIEW_SPLAT_SURFACE 0   // compute raster resolve: image unit of the G-buffer surface
 #define BALLS_VIEW_SPLAT_FOAM 1      // compute raster resolve: image unit of the foam (R16F)
 #define BALLS_VIEW_SPLAT_DEPTH 2     // compute raster resolve: image unit of the window depth (R32F)

@@ -1,6 +1,6 @@
 #version 430 core
 // Compute raster, pass 1 (see render/balls_splat.glsl): every pixel a ball covers gets the ball's
-// window depth by atomicMin into keys[] and, with THICKNESS on, in front of the scene's meshes,
+// window depth by atomicMin into keys[] and, with uThickness on, in front of the scene's meshes,
 // the ball's chord added to thickness[] in fixed point (the fragment path's additive thickness
 // pass, depth-tested against the scene). BIG 0: one thread per ball, which hands balls of more
 // than SMALL_PIXELS pixels to the big list; BIG 1: one work group per listed ball.
@@ -18,6 +18,7 @@ layout(local_size_x = 128) in;
 layout(std430, binding = BALLS_VIEW_SPLAT_THICKNESS) buffer Thickness { uint thickness[]; };
 layout(binding = BALLS_VIEW_SCENE_DEPTH) uniform sampler2D uSceneDepth;  // window depth of the meshes
 uniform int uThickness;         // 0: depth only
+uniform int uScene;             // 0: no meshes (uSceneDepth is not read)
 uniform float uThicknessUnit;   // m per unit of thickness[]
 
 void splatPixel(ivec2 px, vec3 centre) {
@@ -26,7 +27,7 @@ void splatPixel(ivec2 px, vec3 centre) {
   const uint i = pixelIndex(px);
   const uint key = floatBitsToUint(hit.window);
   if (key < keys[i]) atomicMin(keys[i], key);  // a stale read only costs a needless atomic
-  if (uThickness != 0 && hit.window < texelFetch(uSceneDepth, px, 0).r)
+  if (uThickness != 0 && (uScene == 0 || hit.window < texelFetch(uSceneDepth, px, 0).r))
     atomicAdd(thickness[i], uint(hit.chord / uThicknessUnit + 0.5));
 }
 

@@ -1,8 +1,10 @@
 // `tidepool bench render [scene] --n 1M --size 1920x1080 [--raster compute|fragment|both]`: median
-// GPU ms per pass of the balls renderer in both modes, simulation excluded: scene, the sphere
-// impostors (fragment raster: gbuffer, thickness; compute raster: depth splat with the thickness,
-// id, resolve), blur, compose. The balls are the scene's (--n sets the count of lattice scenes),
-// settled for a few steps first so they are not a perfect lattice, and seen from the scene's camera.
+// GPU ms per pass of the balls renderer in both modes, simulation excluded: scene (the raster
+// pass drawing the obstacles; `-` when the scene has none, as the lattice), the sphere impostors
+// (fragment raster: gbuffer, thickness; compute raster: depth splat with the thickness, id,
+// resolve), blur, compose (a compute pass, with the box). The balls are the scene's (--n sets the
+// count of lattice scenes), settled for a few steps first so they are not a perfect lattice, and
+// seen from the scene's camera.
 #include <cstdio>
 #include <regex>
 

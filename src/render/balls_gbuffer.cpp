@@ -35,7 +35,7 @@ std::vector<float> BallsGBuffer::readDepth() const {
   return out;
 }
 
-void BallsGBuffer::draw(const SphereBatch& balls, const BallsCamera& camera, const gl::Texture2D& sceneDepth,
+void BallsGBuffer::draw(const SphereBatch& balls, const BallsCamera& camera, const gl::Texture2D* sceneDepth,
                         bool thickness, BallsRaster raster, gl::GpuProfiler& profiler) {
   resize(camera.width, camera.height);
   m_compute = raster == BallsRaster::Compute;
@@ -45,7 +45,7 @@ void BallsGBuffer::draw(const SphereBatch& balls, const BallsCamera& camera, con
     drawFragments(balls, camera, sceneDepth, thickness, profiler);
 }
 
-void BallsGBuffer::drawFragments(const SphereBatch& balls, const BallsCamera& camera, const gl::Texture2D& sceneDepth,
+void BallsGBuffer::drawFragments(const SphereBatch& balls, const BallsCamera& camera, const gl::Texture2D* sceneDepth,
                                  bool thickness, gl::GpuProfiler& profiler) {
   m_vao.bind();
   glDisable(GL_BLEND);
@@ -68,12 +68,13 @@ void BallsGBuffer::drawFragments(const SphereBatch& balls, const BallsCamera& ca
   }
   if (thickness && balls.count > 0) {
     auto scope = profiler.scope("balls.thickness");
-    if (m_thicknessDepthId != sceneDepth.id()) {
-      m_thicknessFbo = gl::Framebuffer({&m_surface}, &sceneDepth);
-      m_thicknessDepthId = sceneDepth.id();
+    const GLuint depthId = sceneDepth ? sceneDepth->id() : 0;
+    if (!m_thicknessFbo.id() || m_thicknessDepthId != depthId) {
+      m_thicknessFbo = gl::Framebuffer({&m_surface}, sceneDepth);
+      m_thicknessDepthId = depthId;
     }
     m_thicknessFbo.bind();
-    glEnable(GL_DEPTH_TEST);
+    if (sceneDepth) glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_FALSE);
     glColorMaski(0, GL_FALSE, GL_FALSE, GL_TRUE, GL_FALSE);

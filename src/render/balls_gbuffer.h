@@ -27,8 +27,8 @@ class BallsGBuffer {
   explicit BallsGBuffer(gl::ShaderLibrary& shaders);
   void resize(int width, int height);  // no-op when unchanged
   // Clears, then draws the impostor pass and, when `thickness`, the thickness pass against
-  // `sceneDepth` (the opaque meshes' DEPTH32F, same size).
-  void draw(const SphereBatch& balls, const BallsCamera& camera, const gl::Texture2D& sceneDepth, bool thickness,
+  // `sceneDepth` (the opaque meshes' DEPTH32F, same size; null: nothing opaque).
+  void draw(const SphereBatch& balls, const BallsCamera& camera, const gl::Texture2D* sceneDepth, bool thickness,
             BallsRaster raster, gl::GpuProfiler& profiler);
 
   const gl::Texture2D& surface() const { return m_surface; }
@@ -38,14 +38,14 @@ class BallsGBuffer {
 
  private:
   void drawSpheres(gl::Program& program, const SphereBatch& balls, const BallsCamera& camera);
-  void drawFragments(const SphereBatch& balls, const BallsCamera& camera, const gl::Texture2D& sceneDepth,
+  void drawFragments(const SphereBatch& balls, const BallsCamera& camera, const gl::Texture2D* sceneDepth,
                      bool thickness, gl::GpuProfiler& profiler);
   gl::ShaderLibrary& m_shaders;
   BallsSplat m_splat;
   gl::Texture2D m_surface, m_foam, m_depth, m_depthImage;  // m_depthImage: R32F, the compute raster's
   bool m_compute = false;                                  // the last frame used the compute raster
   gl::Framebuffer m_impostorFbo, m_thicknessFbo;
-  GLuint m_thicknessDepthId = 0;  // the scene depth m_thicknessFbo was built with
+  GLuint m_thicknessDepthId = 0;  // the scene depth m_thicknessFbo was built with (0: none)
   gl::VertexArray m_vao = gl::VertexArray::create();
 };
 

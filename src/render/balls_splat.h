@@ -26,8 +26,9 @@ class BallsSplat {
 
   explicit BallsSplat(gl::ShaderLibrary& shaders);
   // surface RGBA32F, foam R16F and depth R32F of the camera's size receive the frame; thickness
-  // is accumulated against sceneDepth (DEPTH32F, same size) when `thickness`.
-  void draw(const SphereBatch& balls, const BallsCamera& camera, const gl::Texture2D& sceneDepth, bool thickness,
+  // is accumulated when `thickness`, in front of sceneDepth (DEPTH32F, same size; null: nothing
+  // opaque).
+  void draw(const SphereBatch& balls, const BallsCamera& camera, const gl::Texture2D* sceneDepth, bool thickness,
             const gl::Texture2D& surface, const gl::Texture2D& foam, const gl::Texture2D& depth,
             gl::GpuProfiler& profiler);
 
@@ -41,6 +42,7 @@ class BallsSplat {
   gl::Buffer m_keys, m_thickness, m_big;  // uint per pixel, uint per pixel, header + list
   unsigned m_bigCapacity = 0;
   bool m_thicknessOn = false;  // this frame's
+  bool m_sceneOn = false;      // this frame's: a scene depth to test the thickness against
 };
 
 }  // namespace tidepool

@@ -133,15 +133,6 @@ void BallsView::drawScene(const BallsScene& scene, const BallsCamera& camera, Re
       glDrawArrays(GL_TRIANGLES, 0, GLsizei(batch.count));
     }
   }
-  if (m_params.showBox) {
-    gl::Program& lines = m_shaders.program({"render/box_lines.vert", "render/flat_color.frag"});
-    lines.use();
-    lines.set("uMin", scene.boxMin);
-    lines.set("uMax", scene.boxMax);
-    lines.set("uViewProjModel", camera.proj * camera.view * scene.boxModel);
-    lines.set("uColor", glm::vec4(0.7f, 0.72f, 0.75f, 1.0f));
-    glDrawArrays(GL_LINES, 0, 24);
-  }
   glDisable(GL_DEPTH_TEST);
   glBindVertexArray(0);
 }
@@ -149,14 +140,19 @@ void BallsView::drawScene(const BallsScene& scene, const BallsCamera& camera, Re
 void BallsView::render(const BallsScene& scene, const BallsCamera& camera, RenderTarget& target,
                        gl::GpuProfiler& profiler) {
   const bool water = m_params.mode == BallsMode::Water;
-  {
+  // The raster runs only for obstacles: without them the compose writes the background itself,
+  // and no pass clears the target (raster clears are slow on compute-first GPUs).
+  const bool opaque = scene.obstacle.count > 0 || !scene.obstacleMeshes.empty();
+  if (opaque) {
     auto scope = profiler.scope("balls.scene");
     drawScene(scene, camera, target);
   }
-  if (scene.water.count == 0) return;
-  const bool thickness = water || m_params.debug == BallsDebug::Thickness;
-  m_gbuffer.draw(scene.water, camera, target.depth(), thickness, m_params.raster, profiler);
-  m_blurred = water && m_params.blurRadius > 0.0f;
+  const bool balls = scene.water.count > 0;
+  if (balls) {
+    const bool thickness = water || m_params.debug == BallsDebug::Thickness;
+    m_gbuffer.draw(scene.water, camera, opaque ? &target.depth() : nullptr, thickness, m_params.raster, profiler);
+  }
+  m_blurred = balls && water && m_params.blurRadius > 0.0f;
   if (m_blurred) {
     auto scope = profiler.scope("balls.blur");
     // Kernel radius in px of a ball 1 m away: scale x r x focal length in px.
@@ -166,8 +162,10 @@ void BallsView::render(const BallsScene& scene, const BallsCamera& camera, Rende
   }
   auto scope = profiler.scope("balls.compose");
   const bool raw = m_params.debug != BallsDebug::Final && m_params.debugUnblurred;
-  m_compose.draw(raw ? m_gbuffer.surface() : composedSurface(), m_gbuffer, m_params, camera, scene.water.radius,
-                 target);
+  const ComposeScene composed{opaque, m_params.showBox, scene.boxMin, scene.boxMax, scene.boxModel};
+  const gl::Texture2D* surface = nullptr;  // no balls: the compose reads no G-buffer
+  if (balls) surface = raw ? &m_gbuffer.surface() : &composedSurface();
+  m_compose.draw(surface, m_gbuffer, m_params, camera, scene.water.radius, composed, target);
 }
 
 }  // namespace tidepool

@@ -2,7 +2,7 @@
 // its shortcuts. It only reads the model's SSBOs. One frame:
 //   1. scene:     each obstacle as a mesh placed by its pose (a mesh obstacle's own triangles,
 //                 flat-shaded; any other shape the surface of its balls), their balls too on
-//                 request, and the domain box into the target
+//                 request, into the target (raster; skipped when there is no obstacle to draw)
 //   2. gbuffer:   ray-traced sphere impostors -> normal xy, view depth, foam, exact depth
 //   3. thickness: the same spheres, additive into B, depth-tested against the scene
 //                 (water mode, and the thickness debug view)
@@ -10,7 +10,10 @@
 //                 as compute kernels with atomics (src/render/balls_splat.h), same G-buffer
 //   4. blur:      water mode only, depth-aware separable Gaussian (row and column compute
 //                 passes, two rounds by default)
-//   5. compose:   shading (balls or water) or a debug view, with depth, into the target
+//   5. compose:   a compute pass: the scene (or the background when step 1 was skipped) and the
+//                 domain box's lines, and over them, where the balls are nearer, their shading
+//                 (balls or water) or a debug view, into the target's colour. The target's depth
+//                 stays the obstacles' (stale when step 1 was skipped): nothing draws after it.
 #pragma once
 
 #include "gl/gpu_profiler.h"

@@ -1,5 +1,0 @@
-#version 430 core
-uniform vec4 uColor;
-out vec4 fragColor;
-
-void main() { fragColor = uColor; }
