@@ -112,7 +112,9 @@ Study ballsSettleStudy();       // balls_settle_study.cpp
 Study ballsDambreakStudy();     // balls_dambreak_study.cpp
 Study swarmOrbitStudy();        // swarm_studies.cpp
 Study swarmPrecisionStudy();
-Study lifePrecisionStudy();  // life_studies.cpp
+Study lifePrecisionStudy();   // life_studies.cpp
+Study swarmStabilityStudy();  // stability_studies.cpp
+Study lifeStabilityStudy();
 
 const std::vector<Study>& studies() {
   static const std::vector<Study> table = {
@@ -122,6 +124,8 @@ const std::vector<Study>& studies() {
       swarmOrbitStudy(),
       swarmPrecisionStudy(),
       lifePrecisionStudy(),
+      swarmStabilityStudy(),
+      lifeStabilityStudy(),
       {"ripples-dispersion", "phase-speed error vs cost per Courant number (wave rule)", dispersion},
       {"ripples-stability", "noise growth and phase error vs Courant number, with the 1/sqrt(2) limit", stability},
   };
