@@ -11,5 +11,6 @@
 #define SCAN_OUT_VEC 2  // scan output as uvec4
 #define SCAN_OUT_WORD 3  // the same buffer as uint (partial block, the total, block sums)
 #define SCAN_BLOCK_SUMS 4  // block sums of this level (scanned in place, they are the block offsets)
+#define SCAN_BLOCK_SUMS_VEC 5  // the same block sums as uvec4 (fused levels sum them in scan_block)
 #define SCAN_NAIVE_IN 0  // Hillis-Steele pass input
 #define SCAN_NAIVE_OUT 1  // Hillis-Steele pass output

@@ -13,9 +13,11 @@
 //            gather: + 4 permutation written, and read again by each batch of 2 arrays
 //   copy     4 N read + 4 N written
 // Each row's results are compared with the CPU after timing (note column; --no-check skips it).
-// --scan-shapes 256x4,512x8,... adds a table of the N-uint32 scan per work-group shape.
+// --scan-shapes 256x4,512x8,256x4f0,... adds a table of the N-uint32 scan per work-group shape
+// (f<B>: ScanConfig::fuseMaxBlocks, so 256x4f0,256x4f4096 compares 3 against 2 dispatches up to 16M).
 // Every number is the median of --repeats GL_TIME_ELAPSED queries after --warmup untimed runs.
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <iterator>
@@ -99,26 +101,42 @@ std::vector<double> parsePerCell(const std::string& text) {
   return out;
 }
 
-// "256x4,512x8,256x4p" -> scan shapes (invocations x uvec4 per invocation; p: scan-then-propagate).
+// "256x4,512x8,256x4p,256x4f0" -> scan shapes (invocations x uvec4 per invocation; p: scan-then-propagate;
+// f<B>: fuse the offsets into the block scan for levels of up to B blocks, f0 never; default ScanConfig's).
 std::vector<grid::ScanConfig> parseShapes(const std::string& text) {
   std::vector<grid::ScanConfig> out;
   std::stringstream ss(text);
   for (std::string token; std::getline(ss, token, ',');) {
-    unsigned g = 0, v = 0;
-    char x = 0, p = 0, rest = 0;
-    const int got = std::sscanf(token.c_str(), "%u%c%u%c%c", &g, &x, &v, &p, &rest);
-    if (!((got == 3 && x == 'x') || (got == 4 && x == 'x' && p == 'p')))
+    unsigned g = 0, v = 0, fuse = 0;
+    int end = 0, fuseEnd = 0;
+    grid::ScanConfig config;
+    bool ok =
+        std::sscanf(token.c_str(), "%ux%u%n", &g, &v, &end) == 2 && std::isdigit(static_cast<unsigned char>(token[0]));
+    const std::string suffix = ok ? token.substr(std::size_t(end)) : "";
+    if (suffix == "p") {
+      config.propagate = true;
+    } else if (!suffix.empty()) {
+      ok = suffix[0] == 'f' && suffix.size() > 1 && std::isdigit(static_cast<unsigned char>(suffix[1])) &&
+           std::sscanf(suffix.c_str(), "f%u%n", &fuse, &fuseEnd) == 1 && std::size_t(fuseEnd) == suffix.size();
+      config.fuseMaxBlocks = fuse;
+    }
+    if (!ok)
       throw Error("--scan-shapes '" + token +
-                  "' is not like 256x4 or 256x4p (invocations x uvec4 per invocation, "
-                  "p: scan-then-propagate)");
-    out.push_back({g, v, got == 4});
+                  "' is not like 256x4, 256x4p or 256x4f4096 (invocations x uvec4 per invocation, "
+                  "p: scan-then-propagate, f<B>: sum the block offsets in the block scan up to B blocks)");
+    config.groupSize = g;
+    config.vecsPerThread = v;
+    out.push_back(config);
   }
   if (out.empty()) throw Error("--scan-shapes: no shapes given");
   return out;
 }
 
 std::string shapeText(const grid::ScanConfig& c) {
-  return std::to_string(c.groupSize) + "x" + std::to_string(c.vecsPerThread) + (c.propagate ? "p" : "");
+  std::string text = std::to_string(c.groupSize) + "x" + std::to_string(c.vecsPerThread);
+  if (c.propagate) return text + "p";
+  if (c.fuseMaxBlocks != grid::ScanConfig{}.fuseMaxBlocks) text += "f" + std::to_string(c.fuseMaxBlocks);
+  return text;
 }
 
 // The scans of N uint32 (one per work-group shape, and the naive one) with their buffers and
@@ -342,7 +360,9 @@ int runGridBench(Env& env, const GridOptions& opt) {
   if (!env.common.csv.empty()) table.writeCsv(env.common.csv);
   if (shapes.size() > 1) {
     std::printf(
-        "\nscan of N uint32 by work-group shape (invocations x uvec4 per invocation; p: scan-then-propagate)\n");
+        "\nscan of N uint32 by work-group shape (invocations x uvec4 per invocation; p: scan-then-propagate; "
+        "f<B>: offsets summed in the block scan up to B blocks, default %zu, f0 never)\n",
+        grid::ScanConfig{}.fuseMaxBlocks);
     Table byShape({"N", "shape", "dispatches", "scan_ms", "scan_GBps", "copy_GBps", "scan/copy%", "note"});
     for (std::size_t n : sizes) addShapeRows(env, byShape, words, wallClock, n, shapes);
     byShape.print();
@@ -359,8 +379,9 @@ Benchmark addGridBench(CLI::App& bench) {
   sub->add_option("--ppc", opt->perCell, "target particles per cell, comma separated")->capture_default_str();
   sub->add_option("--arrays", opt->arrays, "vec4 arrays to reorder")->check(CLI::Range(1, 8))->capture_default_str();
   sub->add_option("--scan-shapes", opt->scanShapes,
-                  "scan work-group shapes, e.g. 256x4,512x4,256x8,256x4p (p: scan-then-propagate; the first "
-                  "is used in the main table, several add a table comparing them)")
+                  "scan work-group shapes, e.g. 256x4,512x4,256x8,256x4p,256x4f0 (p: scan-then-propagate; f<B>: "
+                  "the block scan sums its offset itself, 2 dispatches, for up to B blocks, f0 never; the first "
+                  "is used in the main table's scanN, several add a table comparing them)")
       ->capture_default_str();
   sub->add_option("--reorder", opt->reorder,
                   "reorder modes, one row each, e.g. scatter,gather (scatter: one pass writing random slots; "

@@ -73,9 +73,12 @@ std::size_t PrefixScan::memoryBytes() const {
 }
 
 std::size_t PrefixScan::dispatchesFor(std::size_t n) const {
-  std::size_t dispatches = 1;
-  for (; n > m_config.block(); n = blocksOf(n)) dispatches += 2;
-  return dispatches;
+  std::size_t dispatches = 0;
+  for (; n > m_config.block(); n = blocksOf(n)) {
+    dispatches += 2;  // scan_reduce + scan_block (propagate: scan_block + scan_add)
+    if (m_config.fuses(blocksOf(n))) return dispatches;
+  }
+  return dispatches + 1;  // the top: one work group
 }
 
 void PrefixScan::run(const gl::Buffer& in, gl::Buffer& out, std::size_t n) {
@@ -88,6 +91,7 @@ void PrefixScan::scanLevel(const gl::Buffer& in, gl::Buffer& out, std::size_t n,
   const std::size_t blocks = blocksOf(n);
   gl::Buffer* sums = blocks > 1 ? &m_sums[level] : nullptr;
   const bool reduceFirst = sums && !m_config.propagate;
+  const bool fused = m_config.fuses(blocks);  // scan_block sums blockSums[0..b) itself: no level above
   const bool propagateAfter = sums && m_config.propagate;
   auto bind = [&](const gl::Buffer& src, const gl::Buffer& dst) {
     src.bindBase(GL_SHADER_STORAGE_BUFFER, SCAN_IN_VEC);
@@ -95,6 +99,7 @@ void PrefixScan::scanLevel(const gl::Buffer& in, gl::Buffer& out, std::size_t n,
     dst.bindBase(GL_SHADER_STORAGE_BUFFER, SCAN_OUT_VEC);
     dst.bindBase(GL_SHADER_STORAGE_BUFFER, SCAN_OUT_WORD);
     (sums ? *sums : dst).bindBase(GL_SHADER_STORAGE_BUFFER, SCAN_BLOCK_SUMS);  // unused at the top
+    (sums ? *sums : dst).bindBase(GL_SHADER_STORAGE_BUFFER, SCAN_BLOCK_SUMS_VEC);
   };
   auto dispatch = [&](gl::Program& program) {
     program.use();
@@ -105,10 +110,10 @@ void PrefixScan::scanLevel(const gl::Buffer& in, gl::Buffer& out, std::size_t n,
   if (reduceFirst) {
     bind(in, out);
     dispatch(*m_reduce);
-    scanLevel(*sums, *sums, blocks, level + 1);  // block sums -> block offsets, in place
+    if (!fused) scanLevel(*sums, *sums, blocks, level + 1);  // block sums -> block offsets, in place
   }
   bind(in, out);  // again: the recursion rebinds the same points
-  m_block->set("uHasOffsets", reduceFirst ? 1u : 0u);
+  m_block->set("uOffsets", fused ? 2u : reduceFirst ? 1u : 0u);
   m_block->set("uWriteSums", propagateAfter ? 1u : 0u);
   dispatch(*m_block);
   if (propagateAfter) {

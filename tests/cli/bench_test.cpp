@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <sstream>
 
 #include "support/gl_test.h"
 #include "support/run_process.h"
@@ -69,6 +70,32 @@ TEST(Bench, GridGivesOneCheckedRowPerReorderMode) {
   EXPECT_EQ(bad.exitCode, 1);
   ASSERT_EQ(bad.errLines().size(), 1u) << bad.err;
   EXPECT_NE(bad.err.find("--reorder 'sideways' is not scatter or gather"), std::string::npos) << bad.err;
+}
+
+// The by-shape scan table names each shape with its fuse suffix and its dispatch count.
+TEST(Bench, GridScanShapesCompareFusedAndScannedOffsets) {
+  auto r = runTidepool({"bench", "grid", "--n", "65536", "--ppc", "4", "--scan-shapes", "256x4f0,256x4f4096,256x4p",
+                        "--repeats", "2", "--warmup", "0"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.out.find("WRONG"), std::string::npos) << r.out;
+  auto dispatchesOf = [&](const std::string& shape) {  // row "N shape dispatches ..." of the by-shape table
+    std::istringstream lines(r.out);
+    for (std::string line; std::getline(lines, line);) {
+      std::istringstream words(line);
+      std::string n, name, dispatches;
+      if (words >> n >> name >> dispatches && n == "65536" && name == shape) return dispatches;
+    }
+    return std::string("no row");
+  };
+  EXPECT_EQ(dispatchesOf("256x4f0"), "3") << r.out;  // 16 blocks: reduce, top, scan
+  EXPECT_EQ(dispatchesOf("256x4f4096"), "2") << r.out;
+  EXPECT_EQ(dispatchesOf("256x4p"), "3") << r.out;
+  for (const char* shape : {"256x4q", "256x4f", "256x4f1x", "x4"}) {
+    auto bad = runTidepool({"bench", "grid", "--n", "4096", "--scan-shapes", shape});
+    EXPECT_EQ(bad.exitCode, 1) << shape;
+    ASSERT_EQ(bad.errLines().size(), 1u) << bad.err;
+    EXPECT_NE(bad.err.find("--scan-shapes '" + std::string(shape) + "' is not like"), std::string::npos) << bad.err;
+  }
 }
 
 TEST(Bench, BallsRunsEachSizeInEachReorderMode) {

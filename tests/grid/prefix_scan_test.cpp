@@ -1,5 +1,7 @@
 // The work-efficient multi-level scan and the naive Hillis-Steele scan against the CPU reference,
 // over the sizes where blocking goes wrong: 0, 1, 2, work-group and block edges, 2^k +- 1, random.
+// The reduce-then-scan tests run twice: never fused (3 dispatches per level) and always fused
+// where a level's block sums fit one block (scan_block sums its own offset, 2 dispatches).
 #include <gtest/gtest.h>
 
 #include <random>
@@ -15,6 +17,15 @@ using namespace tidepool::grid;
 
 namespace {
 class Scan : public test::GlTest {};
+
+enum class Offsets { Scanned, Fused };  // ScanConfig::fuseMaxBlocks = 0 or the largest that can fuse
+class ScanPaths : public test::GlTest, public ::testing::WithParamInterface<Offsets> {
+ protected:
+  PrefixScan::Config withPath(PrefixScan::Config config) {
+    config.fuseMaxBlocks = GetParam() == Offsets::Fused ? config.block() : 0;
+    return config;
+  }
+};
 
 // Runs of zeros, small counts and occasional large ones (the sum may wrap, like the CPU's).
 std::vector<uint32_t> randomCounts(std::size_t n, uint32_t seed) {
@@ -71,8 +82,8 @@ TEST_F(Scan, ExampleFromTheHeader) {
   EXPECT_EQ(out.readAll<uint32_t>(), (std::vector<uint32_t>{0, 2, 2, 5, 6}));
 }
 
-TEST_F(Scan, MatchesCpuAtEdgeSizesUpTo2Pow22) {
-  PrefixScan scan(shaders());
+TEST_P(ScanPaths, MatchesCpuAtEdgeSizesUpTo2Pow22) {
+  PrefixScan scan(shaders(), withPath({}));
   uint32_t seed = 1;
   for (std::size_t n : edgeSizes(22)) {
     expectScanMatches(scan, n, seed++);
@@ -80,8 +91,8 @@ TEST_F(Scan, MatchesCpuAtEdgeSizesUpTo2Pow22) {
   }
 }
 
-TEST_F(Scan, MatchesCpuAtRandomSizes) {
-  PrefixScan scan(shaders());
+TEST_P(ScanPaths, MatchesCpuAtRandomSizes) {
+  PrefixScan scan(shaders(), withPath({}));
   std::mt19937 rng(7);
   for (int i = 0; i < 24; ++i) {
     const std::size_t n = rng() % (1u << (4 + i % 17));
@@ -90,20 +101,21 @@ TEST_F(Scan, MatchesCpuAtRandomSizes) {
   }
 }
 
-TEST_F(Scan, ThreeLevelsBeyondBlockSquared) {
-  PrefixScan scan(shaders());
+TEST_P(ScanPaths, ThreeLevelsBeyondBlockSquared) {
+  PrefixScan scan(shaders(), withPath({}));
   const std::size_t block = scan.config().block();
   const std::size_t n = block * block + block + 3;  // 16M + 4099: reduce, reduce, top, scan, scan
-  EXPECT_EQ(scan.dispatchesFor(n), 5u);
+  // Fused, level 1 (4098 sums in 2 blocks) sums its own offsets: reduce, reduce, scan, scan.
+  EXPECT_EQ(scan.dispatchesFor(n), GetParam() == Offsets::Fused ? 4u : 5u);
   expectScanMatches(scan, n, 42);
 }
 
-TEST_F(Scan, OtherWorkGroupShapesAndScanThenPropagate) {
+TEST_P(ScanPaths, OtherWorkGroupShapesAndScanThenPropagate) {
   // Shapes smaller and larger than any subgroup: the scan must not depend on the warp size.
   for (PrefixScan::Config config :
        {PrefixScan::Config{32, 1}, PrefixScan::Config{64, 3}, PrefixScan::Config{512, 2}, PrefixScan::Config{1024, 4},
         PrefixScan::Config{64, 1, true}, PrefixScan::Config{256, 4, true}}) {
-    PrefixScan scan(shaders(), config);
+    PrefixScan scan(shaders(), withPath(config));
     uint32_t seed = 900;
     for (std::size_t n : edgeSizes(12, config)) {
       expectScanMatches(scan, n, seed++);
@@ -118,8 +130,8 @@ TEST_F(Scan, OtherWorkGroupShapesAndScanThenPropagate) {
   EXPECT_THROW(PrefixScan(shaders(), {1024, 16}), Error);  // 68 KiB of shared memory
 }
 
-TEST_F(Scan, InPlaceAndZeroSize) {
-  PrefixScan scan(shaders()), propagate(shaders(), {.propagate = true});
+TEST_P(ScanPaths, InPlaceAndZeroSize) {
+  PrefixScan scan(shaders(), withPath({})), propagate(shaders(), {.propagate = true});
   for (PrefixScan* s : {&scan, &propagate}) {
     for (std::size_t n : {std::size_t(0), std::size_t(1), std::size_t(5000), std::size_t(70000)}) {
       const std::vector<uint32_t> in = randomCounts(n, uint32_t(n));
@@ -134,6 +146,58 @@ TEST_F(Scan, InPlaceAndZeroSize) {
   }
 }
 
+TEST_P(ScanPaths, DeterministicAcrossRuns) {
+  PrefixScan scan(shaders(), withPath({}));
+  const std::size_t n = 300000;
+  const std::vector<uint32_t> in = randomCounts(n, 9);
+  gl::Buffer inBuf{std::span<const uint32_t>(in)}, outBuf((n + 1) * 4);
+  scan.run(inBuf, outBuf, n);
+  const std::vector<uint32_t> first = outBuf.readAll<uint32_t>();
+  for (int r = 0; r < 3; ++r) {
+    outBuf.fillZero();
+    scan.run(inBuf, outBuf, n);
+    EXPECT_EQ(outBuf.readAll<uint32_t>(), first);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(NeverAndAlwaysFused, ScanPaths, ::testing::Values(Offsets::Scanned, Offsets::Fused),
+                         [](const auto& info) {
+                           return std::string(info.param == Offsets::Fused ? "fused" : "scanned");
+                         });
+
+TEST_F(Scan, DispatchesForEachPath) {
+  const PrefixScan::Config defaults;
+  const std::size_t block = defaults.block(), limit = defaults.fuseMaxBlocks;
+  ASSERT_GT(limit, 1u);
+  PrefixScan scan(shaders()), never(shaders(), {.fuseMaxBlocks = 0}), always(shaders(), {.fuseMaxBlocks = block}),
+      propagate(shaders(), {.propagate = true});
+  for (std::size_t n : {std::size_t(0), std::size_t(1), block})
+    for (PrefixScan* s : {&scan, &never, &always, &propagate}) EXPECT_EQ(s->dispatchesFor(n), 1u) << "n = " << n;
+  for (std::size_t n : {block + 1, 2 * block, limit * block - 1, limit * block}) {  // (block, limit * block]
+    EXPECT_EQ(scan.dispatchesFor(n), 2u) << "n = " << n;
+    EXPECT_EQ(never.dispatchesFor(n), 3u) << "n = " << n;
+    EXPECT_EQ(propagate.dispatchesFor(n), 3u) << "n = " << n;
+  }
+  EXPECT_EQ(scan.dispatchesFor(limit * block + 1), 3u);
+  EXPECT_EQ(always.dispatchesFor(block * block), 2u);
+  EXPECT_EQ(always.dispatchesFor(block * block + 1), 4u);  // level 0 of 4097 blocks, level 1 of 2 fused
+  EXPECT_EQ(never.dispatchesFor(block * block + 1), 5u);
+  EXPECT_EQ(propagate.dispatchesFor(block * block + 1), 5u);
+}
+
+// Fused offsets over every tail of the block sums (blocks % 4 words after the uvec4 loads) and
+// over several uvec4 per invocation (up to 512 blocks / 4 / 32 invocations = 4).
+TEST_F(Scan, FusedOffsetsAtEveryTailOfTheBlockSums) {
+  PrefixScan scan(shaders(), {.groupSize = 32, .vecsPerThread = 4, .fuseMaxBlocks = 512});  // blocks of 512
+  ASSERT_EQ(scan.dispatchesFor(512 * 512), 2u);
+  uint32_t seed = 300;
+  for (std::size_t blocks : {2, 3, 4, 5, 6, 7, 8, 9, 129, 130, 131, 132, 510, 511, 512})
+    for (std::size_t n : {512 * blocks - 1, 512 * blocks}) {
+      expectScanMatches(scan, n, seed++);
+      if (HasFatalFailure()) return;
+    }
+}
+
 TEST_F(Scan, NaiveScanMatchesCpu) {
   NaiveScan naive(shaders());
   EXPECT_EQ(NaiveScan::passesFor(0), 1u);
@@ -145,20 +209,6 @@ TEST_F(Scan, NaiveScanMatchesCpu) {
     if (HasFatalFailure()) return;
   }
   expectScanMatches(naive, (std::size_t(1) << 20) + 1, 3);
-}
-
-TEST_F(Scan, DeterministicAcrossRuns) {
-  PrefixScan scan(shaders());
-  const std::size_t n = 300000;
-  const std::vector<uint32_t> in = randomCounts(n, 9);
-  gl::Buffer inBuf{std::span<const uint32_t>(in)}, outBuf((n + 1) * 4);
-  scan.run(inBuf, outBuf, n);
-  const std::vector<uint32_t> first = outBuf.readAll<uint32_t>();
-  for (int r = 0; r < 3; ++r) {
-    outBuf.fillZero();
-    scan.run(inBuf, outBuf, n);
-    EXPECT_EQ(outBuf.readAll<uint32_t>(), first);
-  }
 }
 
 TEST_F(Scan, BadSizesThrowOneLineErrors) {
