@@ -21,14 +21,16 @@
 //     scan_add      out[i] += blockSums[b]  (the uniform add)             reads n_L, writes n_L
 //   A level of at most one block is a single work group with no offsets: the top.
 // Reduce-then-scan moves 3 N words at level 0 against 4 N, which is what lets the scan approach
-// copy bandwidth; its uniform add is fused into scan_block's store. 16M elements take three
-// dispatches: reduce (4096 groups), one group over the 4096 sums, scan (4096 groups). 1M elements
-// (256 blocks, under the default fuseMaxBlocks of 1024) take two: reduce, then scan, each of the
-// 256 groups summing the block sums before its own (at most 255 words, from L2). A dispatch costs
-// microseconds of launch and drain, the middle one more than its tiny work; the fused sums grow
-// as B^2 / 2 words, 32 MB of L2 reads at 4096 blocks, hence the threshold (whether 16M should fuse
-// is measured by `tidepool bench grid --scan-shapes 256x4f0,256x4f4096`). Any level may fuse: past
-// 16M, level 1 (the sums, in a few blocks) does, so 16M + 1 elements take four dispatches, not five.
+// copy bandwidth; its uniform add is fused into scan_block's store. Unfused, 16M elements take
+// three dispatches: reduce (4096 groups), one group over the 4096 sums, scan (4096 groups). Fused
+// (the default fuseMaxBlocks of 4096 fuses every level up to 16M), 1M elements (256 blocks) take
+// two: reduce, then scan, each of the 256 groups summing the block sums before its own (at most
+// 255 words, from L2). A dispatch costs microseconds of launch and drain, the middle one more than
+// its tiny work; the fused sums grow as B^2 / 2 words, 32 MB of L2 reads at 4096 blocks, hence the
+// threshold. Measured on the H100 (`tidepool bench grid --scan-shapes 256x4f0,256x4f4096`,
+// docs/PERFORMANCE.md §3), fusing wins at every size up to 16M: 1M 0.024 -> 0.018 ms, 16M
+// 53.5% -> 57.1% of a copy. Any level may fuse: past 16M, level 1 (the sums, in a few blocks)
+// does, so 16M + 1 elements take four dispatches, not five.
 // Inside a block (default shape): 16 elements per invocation as 4 coalesced uvec4 loads, a scan
 // of the 1024 chunk sums, and a Blelloch up-sweep/down-sweep of the 256 invocation totals in
 // padded shared memory (shaders/grid/scan_group.glsl). No warp or subgroup size is assumed.
@@ -55,7 +57,7 @@ struct ScanConfig {
   std::size_t groupSize = 256;       // invocations per work group: a power of two, 32..1024
   std::size_t vecsPerThread = 4;     // uvec4 loads per invocation: 1..16
   bool propagate = false;            // scan-then-propagate (4 N words moved) instead of reduce-then-scan (3 N)
-  std::size_t fuseMaxBlocks = 1024;  // levels of 2..min(this, block()) blocks: 2 dispatches, not 3 (0: never)
+  std::size_t fuseMaxBlocks = 4096;  // levels of 2..min(this, block()) blocks: 2 dispatches, not 3 (0: never)
   std::size_t block() const { return groupSize * vecsPerThread * 4; }  // elements per work group
   bool fuses(std::size_t blocks) const {  // does a level of `blocks` blocks sum its own offsets?
     return !propagate && blocks > 1 && blocks <= fuseMaxBlocks && blocks <= block();

@@ -74,7 +74,7 @@ TEST(Bench, GridGivesOneCheckedRowPerReorderMode) {
 
 // The by-shape scan table names each shape with its fuse suffix and its dispatch count.
 TEST(Bench, GridScanShapesCompareFusedAndScannedOffsets) {
-  auto r = runTidepool({"bench", "grid", "--n", "65536", "--ppc", "4", "--scan-shapes", "256x4f0,256x4f4096,256x4p",
+  auto r = runTidepool({"bench", "grid", "--n", "65536", "--ppc", "4", "--scan-shapes", "256x4f0,256x4f8,256x4,256x4p",
                         "--repeats", "2", "--warmup", "0"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_EQ(r.out.find("WRONG"), std::string::npos) << r.out;
@@ -88,7 +88,8 @@ TEST(Bench, GridScanShapesCompareFusedAndScannedOffsets) {
     return std::string("no row");
   };
   EXPECT_EQ(dispatchesOf("256x4f0"), "3") << r.out;  // 16 blocks: reduce, top, scan
-  EXPECT_EQ(dispatchesOf("256x4f4096"), "2") << r.out;
+  EXPECT_EQ(dispatchesOf("256x4f8"), "3") << r.out;  // 16 blocks: more than it fuses
+  EXPECT_EQ(dispatchesOf("256x4"), "2") << r.out;    // the default fuses them
   EXPECT_EQ(dispatchesOf("256x4p"), "3") << r.out;
   for (const char* shape : {"256x4q", "256x4f", "256x4f1x", "x4"}) {
     auto bad = runTidepool({"bench", "grid", "--n", "4096", "--scan-shapes", shape});
