@@ -78,7 +78,7 @@ Result lifeStability(Env& env) {
   const double a = double(damped.rules.friction) / damped.omega;
   char label[32];
   std::snprintf(label, sizeof label, "%.3f", life::eulerStableLimit(a));
-  Result r = chartFrame("life", "life-stability: a bound pair's oscillation growth against omega dt (friction 10/s)",
+  Result r = chartFrame("life", "life-stability: a bound pair's oscillation growth against omega dt",
                         life::eulerStableLimit(a), label);
   const double tolerance = env.quick ? 0.05 : 0.01;
   struct Curve {
