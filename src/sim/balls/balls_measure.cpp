@@ -89,9 +89,7 @@ double contactGrowthRatio(gl::ShaderLibrary& shaders, Integrator integrator, dou
 
 double stableStepLimit(gl::ShaderLibrary& shaders, Integrator integrator, double tolerance) {
   auto stable = [&](double dtOverTc) { return contactGrowthRatio(shaders, integrator, dtOverTc, 12) < 1.5; };
-  constexpr double kSmallest = 0.05;
-  if (!stable(kSmallest)) return 0.0;
-  return bisectLimit(kSmallest, 2.0, tolerance, stable);
+  return largestStable(0.05, 2.0, tolerance, stable);
 }
 
 ColumnScales columnScales(const Params& p) {

@@ -56,9 +56,7 @@ double pairStableLimit(gl::ShaderLibrary& shaders, const PairOscillator& pair, I
   auto stable = [&](double omegaDt) {
     return pairGrowth(shaders, pair, integrator, omegaDt, kPairPeriods) < kPairGrowthBound;
   };
-  constexpr double kSmallest = 1.0, kLargest = 4.0;
-  if (!stable(kSmallest)) return 0.0;
-  return bisectLimit(kSmallest, kLargest, tolerance, stable);
+  return largestStable(1.0, 4.0, tolerance, stable);
 }
 
 double eulerStableLimit(double frictionOverOmega) {
@@ -70,11 +68,7 @@ double eulerStableLimit(double frictionOverOmega) {
   double lo = 2.0, hi = 2.0;
   for (; g(hi) <= 0; lo = hi, hi += 0.01)
     if (hi > 2.0 / a && hi * hi * std::exp(-a * hi) < 2.0) return INFINITY;
-  for (int i = 0; i < 60; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (g(mid) <= 0 ? lo : hi) = mid;
-  }
-  return 0.5 * (lo + hi);
+  return bisectLimit(lo, hi, 1e-12, [&](double h) { return g(h) <= 0; });
 }
 
 }  // namespace tidepool::life

@@ -97,9 +97,7 @@ double oscillatorStableLimit(gl::ShaderLibrary& shaders, Integrator integrator, 
   auto stable = [&](double omegaDt) {
     return oscillatorGrowth(shaders, integrator, omegaDt, kOscillatorPeriods) < kOscillatorGrowthBound;
   };
-  constexpr double kSmallest = 0.5, kLargest = 4.0;
-  if (!stable(kSmallest)) return 0.0;
-  return bisectLimit(kSmallest, kLargest, tolerance, stable);
+  return largestStable(0.5, 4.0, tolerance, stable);
 }
 
 }  // namespace tidepool::sim
