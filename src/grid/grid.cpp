@@ -138,17 +138,23 @@ gl::Program& UniformGrid::reorderPass(std::size_t arrays, bool writePermutation)
   return *program;
 }
 
+// Binds the batch of up to GRID_REORDER_MAX_ARRAYS arrays starting at `first`; returns its size.
+std::size_t UniformGrid::bindBatch(std::span<const ReorderArray> arrays, std::size_t first) {
+  const std::size_t batch = std::min<std::size_t>(GRID_REORDER_MAX_ARRAYS, arrays.size() - first);
+  for (std::size_t a = 0; a < batch; ++a) {
+    arrays[first + a].src->bindBase(GL_SHADER_STORAGE_BUFFER, GLuint(GRID_REORDER_SRC + a));
+    arrays[first + a].dst->bindBase(GL_SHADER_STORAGE_BUFFER, GLuint(GRID_REORDER_DST + a));
+  }
+  return batch;
+}
+
 // Batches of GRID_REORDER_MAX_ARRAYS arrays; the first batch also writes the permutation.
 void UniformGrid::scatter(std::span<const ReorderArray> arrays, gl::Buffer* permutation) {
   if (permutation) permutation->bindBase(GL_SHADER_STORAGE_BUFFER, GRID_PERMUTATION);
   std::size_t first = 0;
   bool writePermutation = permutation != nullptr;
   do {
-    const std::size_t batch = std::min<std::size_t>(GRID_REORDER_MAX_ARRAYS, arrays.size() - first);
-    for (std::size_t a = 0; a < batch; ++a) {
-      arrays[first + a].src->bindBase(GL_SHADER_STORAGE_BUFFER, GLuint(GRID_REORDER_SRC + a));
-      arrays[first + a].dst->bindBase(GL_SHADER_STORAGE_BUFFER, GLuint(GRID_REORDER_DST + a));
-    }
+    const std::size_t batch = bindBatch(arrays, first);
     reorderPass(batch, writePermutation).dispatchThreads(m_count);
     first += batch;
     writePermutation = false;
@@ -166,11 +172,7 @@ void UniformGrid::gather(std::span<const ReorderArray> arrays, gl::Buffer* permu
   reorderPass(0, true).dispatchThreads(m_count);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   for (std::size_t first = 0; first < arrays.size(); first += GRID_REORDER_MAX_ARRAYS) {
-    const std::size_t batch = std::min<std::size_t>(GRID_REORDER_MAX_ARRAYS, arrays.size() - first);
-    for (std::size_t a = 0; a < batch; ++a) {
-      arrays[first + a].src->bindBase(GL_SHADER_STORAGE_BUFFER, GLuint(GRID_REORDER_SRC + a));
-      arrays[first + a].dst->bindBase(GL_SHADER_STORAGE_BUFFER, GLuint(GRID_REORDER_DST + a));
-    }
+    const std::size_t batch = bindBatch(arrays, first);
     gl::Program*& program = m_gatherPass[batch];
     if (!program)
       program = &m_shaders->program({"grid/grid_gather.comp"},

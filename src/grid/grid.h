@@ -118,6 +118,7 @@ class UniformGrid {
   gl::Buffer m_permutation;  // gather mode without a caller's permutation: uint per particle
 
   gl::Program& reorderPass(std::size_t arrays, bool writePermutation);
+  static std::size_t bindBatch(std::span<const ReorderArray> arrays, std::size_t first);
   void scatter(std::span<const ReorderArray> arrays, gl::Buffer* permutation);
   void gather(std::span<const ReorderArray> arrays, gl::Buffer* permutation);
   std::size_t m_count = 0;
