@@ -22,6 +22,7 @@
 #include "render/balls_view.h"
 #include "sim/balls/balls_init.h"
 #include "support/gl_test.h"
+#include "support/image_diff.h"
 
 using namespace tidepool;
 
@@ -34,26 +35,12 @@ constexpr int kRounding = 2;               // channel levels
 constexpr double kMaxOffFraction = 0.001;  // pixels differing by more than kRounding
 constexpr double kMaxMean = 0.15;          // mean over all pixels and channels, levels
 
-struct Difference {
-  double mean = 0, offFraction = 0;
+struct Difference : test::PixelDifference {
   bool within() const { return mean <= kMaxMean && offFraction <= kMaxOffFraction; }
 };
 
 Difference compare(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b) {
-  Difference d;
-  std::size_t off = 0;
-  for (std::size_t i = 0; i < a.size(); i += 4) {
-    int worst = 0;
-    for (int c = 0; c < 3; ++c) {
-      const int diff = std::abs(int(a[i + c]) - int(b[i + c]));
-      d.mean += diff;
-      worst = std::max(worst, diff);
-    }
-    off += worst > kRounding;
-  }
-  d.mean /= double(a.size() / 4 * 3);
-  d.offFraction = double(off) / double(a.size() / 4);
-  return d;
+  return {test::pixelDifference(a, b, kRounding)};
 }
 
 std::ostream& operator<<(std::ostream& os, const Difference& d) {

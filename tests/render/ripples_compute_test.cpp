@@ -13,36 +13,13 @@
 #include "render/ripples_view.h"
 #include "render/ripples_view3d.h"
 #include "support/gl_test.h"
+#include "support/image_diff.h"
 
 using namespace tidepool;
 
 namespace {
 
 class RipplesCompute : public test::GlTest {};
-
-struct ImageDiff {
-  double meanAbs = 0;  // mean |a - b| over the RGB channels, in 1/255
-  double farOff = 0;   // fraction of pixels where some channel differs by more than 16/255
-  int maxAbs = 0;      // in 1/255
-};
-
-ImageDiff compare(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b) {
-  ImageDiff d;
-  std::size_t far = 0;
-  for (std::size_t i = 0; i < a.size(); i += 4) {
-    int worst = 0;
-    for (std::size_t c = 0; c < 3; ++c) {
-      const int e = std::abs(int(a[i + c]) - int(b[i + c]));
-      d.meanAbs += e;
-      worst = std::max(worst, e);
-    }
-    far += worst > 16;
-    d.maxAbs = std::max(d.maxAbs, worst);
-  }
-  d.meanAbs /= 3.0 * double(a.size() / 4);
-  d.farOff = double(far) / double(a.size() / 4);
-  return d;
-}
 
 void keep(const std::string& name, const RenderTarget& target, const std::vector<uint8_t>& rgba) {
   if (const char* dir = std::getenv("TIDEPOOL_TEST_IMAGES"))
@@ -57,11 +34,11 @@ void expectClose(const std::string& name, const RenderTarget& target, const std:
   for (std::size_t i = 0; i < diff.size(); ++i)
     if (i % 4 != 3) diff[i] = uint8_t(std::min(255, 4 * std::abs(int(raster[i]) - int(compute[i]))));
   keep(name + "-diff", target, diff);
-  const ImageDiff d = compare(raster, compute);
-  std::cout << name << ": mean |diff| " << d.meanAbs << "/255, " << 100.0 * d.farOff
+  const test::PixelDifference d = test::pixelDifference(raster, compute, 16);
+  std::cout << name << ": mean |diff| " << d.mean << "/255, " << 100.0 * d.offFraction
             << "% of pixels off by > 16/255, max " << d.maxAbs << "/255\n";
-  EXPECT_LE(d.meanAbs, 2.0) << name;
-  EXPECT_LE(d.farOff, 0.01) << name;
+  EXPECT_LE(d.mean, 2.0) << name;
+  EXPECT_LE(d.offFraction, 0.01) << name;
 }
 
 // Draws the model with the view's raster renderer, then its compute renderer, and compares.
