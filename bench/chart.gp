@@ -10,7 +10,8 @@ if (ARG6[2:2] eq "1") { set logscale y; set format y "10^{%T}" }
 methods = int(ARG7)
 set grid xtics ytics mxtics mytics lc rgb "#dddddd"
 set key below box opaque
-set bmargin 7
+entries = methods + (ARG6[3:3] eq "1" ? 1 : 0)
+set bmargin (entries > 4 ? 4 + (entries + 1) / 2 : 7)  # the key's rows, two or more entries a row
 set border lc rgb "#555555"
 set style line 100 lc rgb "#222222" lw 2 dt 2 pt 6 ps 2.2
 colors = "#1b9e77 #d95f02 #7570b3 #e7298a #66a61e #e6ab02 #a6761d #666666"

@@ -20,7 +20,7 @@ layout(std430, binding = BALLS_POS_OUT) writeonly buffer PosOut { vec4 posOut[];
 #include "balls/contact.glsl"
 
 vec3 gAccel;
-vec3 gVelocity;
+vec3 gVelocity = vec3(0.0);  // set in main(); initialised so that no compiler warns of its use in onContact()
 void onContact(vec3 n, float overlap, vec3 otherVelocity, float massRatio, float share) {
   gAccel += contactAccel(n, overlap, gVelocity - otherVelocity, massRatio, share);
 }

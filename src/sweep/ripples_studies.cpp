@@ -115,6 +115,7 @@ Study swarmPrecisionStudy();
 Study lifePrecisionStudy();   // life_studies.cpp
 Study swarmStabilityStudy();  // stability_studies.cpp
 Study lifeStabilityStudy();
+Study ballsStabilityStudy();
 
 const std::vector<Study>& studies() {
   static const std::vector<Study> table = {
@@ -126,6 +127,7 @@ const std::vector<Study>& studies() {
       lifePrecisionStudy(),
       swarmStabilityStudy(),
       lifeStabilityStudy(),
+      ballsStabilityStudy(),
       {"ripples-dispersion", "phase-speed error vs cost per Courant number (wave rule)", dispersion},
       {"ripples-stability", "noise growth and phase error vs Courant number, with the 1/sqrt(2) limit", stability},
   };

@@ -28,8 +28,9 @@ TEST(Sweep, ParetoFrontKeepsOnlyUndominatedStableRows) {
 
 TEST(Sweep, StudiesWriteCsvAndCharts) {
   test::TempDir dir;
-  for (const std::string study : {"ripples-stability", "ripples-dispersion", "balls-restitution", "swarm-orbit",
-                                  "swarm-precision", "life-precision", "swarm-stability", "life-stability"}) {
+  for (const std::string study :
+       {"ripples-stability", "ripples-dispersion", "balls-restitution", "swarm-orbit", "swarm-precision",
+        "life-precision", "swarm-stability", "life-stability", "balls-stability"}) {
     auto r = test::runTidepool(
         {"sweep", study, "--quick", "--csv-dir", dir.path().string(), "--chart-dir", dir.path().string()});
     ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
