@@ -65,8 +65,8 @@ Params restingContact(Contact law, Integrator integrator, double omegaDt) {
 RestingRun restingRun(gl::ShaderLibrary& shaders, Contact law, Integrator integrator, double omegaDt, int steps) {
   const Params p = restingContact(law, integrator, omegaDt);
   Balls b(shaders, p);
-  if (b.obstacleCount() != 1) throw Error("resting contact: the fixed body has " +
-                                          std::to_string(b.obstacleCount()) + " particles, not 1");
+  if (b.obstacleCount() != 1)
+    throw Error("resting contact: the fixed body has " + std::to_string(b.obstacleCount()) + " particles, not 1");
   const glm::vec3 fixed = kCentre + glm::vec3(b.obstacles().body(0).particles[0]);
   const double rest = 2.0 * p.radius - kEquilibrium;  // centre distance at equilibrium
   b.upload({glm::vec4(fixed.x, fixed.y, float(fixed.z + rest - kPush), 1.0f)}, {glm::vec4(0.0f)});
@@ -84,8 +84,7 @@ RestingRun restingRun(gl::ShaderLibrary& shaders, Contact law, Integrator integr
   return {late / std::max(first, 1e-30), largest / kPush};
 }
 
-double restingStableLimit(gl::ShaderLibrary& shaders, Contact law, Integrator integrator, double tolerance,
-                          int steps) {
+double restingStableLimit(gl::ShaderLibrary& shaders, Contact law, Integrator integrator, double tolerance, int steps) {
   return largestStable(0.05, 4.0, tolerance, [&](double h) {
     return restingRun(shaders, law, integrator, h, steps).growth < kRestingGrowthBound;
   });

@@ -35,8 +35,7 @@ Params restingContact(Contact law, Integrator integrator, double omegaDt);
 struct RestingRun {
   double growth = 0, largest = 0;
 };
-RestingRun restingRun(gl::ShaderLibrary& shaders, Contact law, Integrator integrator, double omegaDt,
-                      int steps = 2000);
+RestingRun restingRun(gl::ShaderLibrary& shaders, Contact law, Integrator integrator, double omegaDt, int steps = 2000);
 
 inline constexpr double kRestingBlowUp = 100;
 inline constexpr double kRestingGrowthBound = 1.2;  // growth at or beyond this: unstable

@@ -76,8 +76,7 @@ class ContactStability : public test::GlTest {};
 
 TEST(ContactStabilityTheory, LimitIsWhereTheModelsUpdateReachesSpectralRadiusOne) {
   for (Contact law : {Contact::SpringDashpot, Contact::Penalty, Contact::CudaSample})
-    for (Integrator integrator :
-         {Integrator::ExplicitEuler, Integrator::SymplecticEuler, Integrator::VelocityVerlet}) {
+    for (Integrator integrator : {Integrator::ExplicitEuler, Integrator::SymplecticEuler, Integrator::VelocityVerlet}) {
       SCOPED_TRACE(std::string(kContactNames[int(law)]) + ", " + kIntegratorNames[int(integrator)]);
       const double f = restingVelocityFactor(law), limit = restingTheoryLimit(law, integrator);
       if (limit == 0.0) {
@@ -91,8 +90,7 @@ TEST(ContactStabilityTheory, LimitIsWhereTheModelsUpdateReachesSpectralRadiusOne
 
 TEST_F(ContactStability, PenaltyAndCudaSampleLimitsMatchTheDerivation) {
   for (Contact law : {Contact::Penalty, Contact::CudaSample})
-    for (Integrator integrator :
-         {Integrator::ExplicitEuler, Integrator::SymplecticEuler, Integrator::VelocityVerlet}) {
+    for (Integrator integrator : {Integrator::ExplicitEuler, Integrator::SymplecticEuler, Integrator::VelocityVerlet}) {
       const double theory = restingTheoryLimit(law, integrator);
       const double measured = restingStableLimit(shaders(), law, integrator, 0.02);
       std::printf("%s, %s: largest stable omega dt = %.4f (theory %.4f), dt = %.4g\n", kContactNames[int(law)],
@@ -100,8 +98,8 @@ TEST_F(ContactStability, PenaltyAndCudaSampleLimitsMatchTheDerivation) {
       if (theory == 0.0)
         EXPECT_EQ(measured, 0.0) << kContactNames[int(law)] << ": grows at every step";
       else
-        EXPECT_NEAR(measured / theory, 1.0, 0.10) << kContactNames[int(law)] << ", "
-                                                  << kIntegratorNames[int(integrator)];
+        EXPECT_NEAR(measured / theory, 1.0, 0.10)
+            << kContactNames[int(law)] << ", " << kIntegratorNames[int(integrator)];
     }
 }
 
