@@ -1,9 +1,9 @@
 #version 430 core
 // Compose pass, one thread per pixel (a compute pass: on compute-first GPUs such as the H100 the
 // raster path's full-screen passes and clears are several times slower). Each pixel's scene is
-// the colour and depth of the obstacles the raster drew into the target (uScene 1), or the
-// background at the far plane when there were none (uScene 0: the target is neither cleared nor
-// read), with the domain box's lines over it (the nearest of the line fragments GL would draw,
+// the colour and depth of the obstacles the raster drew into the target (uScene 1; the raster
+// clears depth only, so a pixel still at the far plane takes the background), or the background
+// at the far plane when there were none (uScene 0: the target is neither cleared nor read), with the domain box's lines over it (the nearest of the line fragments GL would draw,
 // within their depth). Where the nearest ball is in front of that scene the G-buffer is shaded
 // and written over it; water lets the scene through per channel (Beer–Lambert over the
 // thickness), which is how an obstacle shows through thin water:
@@ -132,8 +132,9 @@ void main() {
   vec3 scene = uBackground;
   float sceneDepth = 1.0;
   if (uScene != 0) {
-    scene = imageLoad(uTarget, px).rgb;
+    // The scene pass clears depth only: where it drew nothing the colour is last frame's.
     sceneDepth = texelFetch(uSceneDepth, px, 0).r;
+    if (sceneDepth < 1.0) scene = imageLoad(uTarget, px).rgb;
   }
   const float line = lineDepth(px, sceneDepth);
   if (line < sceneDepth) {

@@ -182,8 +182,9 @@ struct Layout {
   }
 };
 
+// `stale`: what the target's colour holds before the frame (a frame drawn before it).
 std::vector<std::uint8_t> renderLayout(gl::ShaderLibrary& shaders, const Layout& l, BallsMode mode, bool water,
-                                       bool front, bool back) {
+                                       bool front, bool back, glm::vec4 stale = glm::vec4(0.0f)) {
   const gl::Buffer balls{std::span<const glm::vec4>(l.sheet)}, mesh{std::span<const MeshVertex>(l.sphere)};
   BallsScene scene;
   scene.water = {&balls, nullptr, water ? l.sheet.size() : 0, 0.05f, glm::mat4(1.0f)};
@@ -196,6 +197,9 @@ std::vector<std::uint8_t> renderLayout(gl::ShaderLibrary& shaders, const Layout&
   view.params().showBox = false;
   view.params().blurRadius = 0.0f;  // a flat sheet: its balls' own normals
   RenderTarget target(kSize, kSize);
+  target.bind();
+  glClearColor(stale.r, stale.g, stale.b, stale.a);
+  glClear(GL_COLOR_BUFFER_BIT);
   gl::GpuProfiler profiler;
   view.render(scene, BallsCamera::perspective(glm::mat4(1.0f), glm::radians(30.0f), kSize, kSize, 0.5f, 10.0f), target,
               profiler);
@@ -231,6 +235,18 @@ TEST_F(BallsComposeTest, MeshesInFrontOfTheWaterHideItAndMeshesBehindShowThrough
       EXPECT_GT(through, 20) << "the mesh behind shows through the thin water";
       EXPECT_GT(largest(pixel(all, back) - pixel(meshes, back)), 20) << "tinted by it";
     }
+  }
+}
+
+// The scene pass clears depth only; the compose must take the background wherever no mesh was
+// drawn, whatever the target's colour held before.
+TEST_F(BallsComposeTest, LastFramesColourNeverShowsThroughTheBackground) {
+  const Layout l;
+  for (BallsMode mode : {BallsMode::Balls, BallsMode::Water}) {
+    SCOPED_TRACE(kBallsModeNames[int(mode)]);
+    const auto fresh = renderLayout(shaders(), l, mode, true, true, true);
+    const auto stale = renderLayout(shaders(), l, mode, true, true, true, glm::vec4(1.0f, 0.0f, 1.0f, 1.0f));
+    EXPECT_EQ(fresh, stale);
   }
 }
 
