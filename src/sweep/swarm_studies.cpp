@@ -21,57 +21,55 @@ double msPerStep(gl::ShaderLibrary& shaders, int n, sim::Integrator integrator, 
   return bench::gpuMedianMs(timing, [&] { swarm.step(1.0 / 120.0); });
 }
 
-Row orbitRow(Env& env, sim::Integrator integrator, sim::Storage storage, int stepsPerOrbit, double stepMs,
-             const std::string& method) {
-  const double error = sim::orbitEnergyError(env.shaders, integrator, storage, stepsPerOrbit);
-  Row row;
-  row.method = method;
-  row.dt = sim::orbitPeriod() / stepsPerOrbit;
-  row.resolution = std::to_string(stepsPerOrbit) + " steps/orbit";
-  row.costMsPerSimS = stepMs / row.dt;
-  row.stable = std::isfinite(error);
-  row.metrics = {double(stepsPerOrbit), error};
-  row.x = row.costMsPerSimS;
-  row.y = error;
-  return row;
+// One curve: a row per steps-per-orbit, the cost of one step of n particles timed once.
+void addOrbitCurve(Env& env, Result& r, int n, sim::Integrator integrator, sim::Storage storage,
+                   const std::vector<int>& stepsPerOrbit, const std::string& method) {
+  const double stepMs = msPerStep(env.shaders, n, integrator, storage);
+  for (int steps : stepsPerOrbit) {
+    const double error = sim::orbitEnergyError(env.shaders, integrator, storage, steps);
+    Row row;
+    row.method = method;
+    row.dt = sim::orbitPeriod() / steps;
+    row.resolution = std::to_string(steps) + " steps/orbit";
+    row.costMsPerSimS = stepMs / row.dt;
+    row.stable = std::isfinite(error);
+    row.metrics = {double(steps), error};
+    row.x = row.costMsPerSimS;
+    row.y = error;
+    r.rows.push_back(row);
+  }
 }
 
-Result orbit(Env& env) {
+// Both studies chart the orbit's energy error against the cost of 1M particles (16k when quick).
+Result orbitFrame(const std::string& title) {
   Result r;
   r.model = "swarm";
   r.metrics = {"steps_per_orbit", "energy_error"};
-  r.chart.title = "swarm-orbit: energy error after 10 orbits against cost, per integrator (fp32)";
+  r.chart.title = title;
   r.chart.xLabel = "GPU ms per simulated second (1M particles)";
   r.chart.yLabel = "max |{/Symbol D}E| / s over 10 orbits";
+  return r;
+}
+
+Result orbit(Env& env) {
+  Result r = orbitFrame("swarm-orbit: energy error after 10 orbits against cost, per integrator (fp32)");
   const int n = env.quick ? 1 << 14 : 1 << 20;
   const std::vector<int> steps = env.quick ? std::vector<int>{50, 200} : std::vector<int>{25, 50, 100, 200, 400, 800};
   for (sim::Integrator integrator : {sim::Integrator::ExplicitEuler, sim::Integrator::SymplecticEuler,
-                                     sim::Integrator::Verlet, sim::Integrator::Rk4}) {
-    const double stepMs = msPerStep(env.shaders, n, integrator, sim::Storage::Fp32);
-    for (int s : steps)
-      r.rows.push_back(
-          orbitRow(env, integrator, sim::Storage::Fp32, s, stepMs, sim::kIntegratorNames[int(integrator)]));
-  }
+                                     sim::Integrator::Verlet, sim::Integrator::Rk4})
+    addOrbitCurve(env, r, n, integrator, sim::Storage::Fp32, steps, sim::kIntegratorNames[int(integrator)]);
   markPareto(r.rows);
   return r;
 }
 
 Result precision(Env& env) {
-  Result r;
-  r.model = "swarm";
-  r.metrics = {"steps_per_orbit", "energy_error"};
-  r.chart.title = "swarm-precision: fp16 against fp32 state (velocity Verlet and RK4 on the orbit)";
-  r.chart.xLabel = "GPU ms per simulated second (1M particles)";
-  r.chart.yLabel = "max |{/Symbol D}E| / s over 10 orbits";
+  Result r = orbitFrame("swarm-precision: fp16 against fp32 state (velocity Verlet and RK4 on the orbit)");
   const int n = env.quick ? 1 << 14 : 1 << 20;
   const std::vector<int> steps = env.quick ? std::vector<int>{100} : std::vector<int>{50, 100, 200, 400};
   for (sim::Integrator integrator : {sim::Integrator::Verlet, sim::Integrator::Rk4})
-    for (sim::Storage storage : {sim::Storage::Fp32, sim::Storage::Fp16}) {
-      const double stepMs = msPerStep(env.shaders, n, integrator, storage);
-      const std::string method =
-          std::string(sim::kIntegratorNames[int(integrator)]) + " " + sim::kStorageNames[int(storage)];
-      for (int s : steps) r.rows.push_back(orbitRow(env, integrator, storage, s, stepMs, method));
-    }
+    for (sim::Storage storage : {sim::Storage::Fp32, sim::Storage::Fp16})
+      addOrbitCurve(env, r, n, integrator, storage, steps,
+                    std::string(sim::kIntegratorNames[int(integrator)]) + " " + sim::kStorageNames[int(storage)]);
   markPareto(r.rows);
   return r;
 }
