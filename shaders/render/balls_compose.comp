@@ -20,6 +20,7 @@ layout(binding = BALLS_VIEW_GBUFFER) uniform sampler2D uGBuffer;  // RG normal x
 layout(binding = BALLS_VIEW_FOAM) uniform sampler2D uFoam;
 layout(binding = BALLS_VIEW_DEPTH) uniform sampler2D uDepth;            // window depth of the nearest ball
 layout(binding = BALLS_VIEW_SCENE_DEPTH) uniform sampler2D uSceneDepth;  // the target's, uScene 1
+#include "render/scene_rect.glsl"
 layout(binding = BALLS_VIEW_COMPOSE_TARGET, rgba8) uniform image2D uTarget;
 
 uniform ivec2 uSize;        // px
@@ -131,7 +132,7 @@ void main() {
   if (any(greaterThanEqual(px, uSize))) return;
   vec3 scene = uBackground;
   float sceneDepth = 1.0;
-  if (uScene != 0) {
+  if (uScene != 0 && inSceneRect(px)) {
     // The scene pass clears depth only: where it drew nothing the colour is last frame's.
     sceneDepth = texelFetch(uSceneDepth, px, 0).r;
     if (sceneDepth < 1.0) scene = imageLoad(uTarget, px).rgb;

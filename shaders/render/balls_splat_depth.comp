@@ -19,6 +19,7 @@ layout(std430, binding = BALLS_VIEW_SPLAT_THICKNESS) buffer Thickness { uint thi
 layout(binding = BALLS_VIEW_SCENE_DEPTH) uniform sampler2D uSceneDepth;  // window depth of the meshes
 uniform int uThickness;         // 0: depth only
 uniform int uScene;             // 0: no meshes (uSceneDepth is not read)
+#include "render/scene_rect.glsl"
 uniform float uThicknessUnit;   // m per unit of thickness[]
 
 void splatPixel(ivec2 px, vec3 centre) {
@@ -27,7 +28,7 @@ void splatPixel(ivec2 px, vec3 centre) {
   const uint i = pixelIndex(px);
   const uint key = floatBitsToUint(hit.window);
   if (key < keys[i]) atomicMin(keys[i], key);  // a stale read only costs a needless atomic
-  if (uThickness != 0 && (uScene == 0 || hit.window < texelFetch(uSceneDepth, px, 0).r))
+  if (uThickness != 0 && (uScene == 0 || !inSceneRect(px) || hit.window < texelFetch(uSceneDepth, px, 0).r))
     atomicAdd(thickness[i], uint(hit.chord / uThicknessUnit + 0.5));
 }
 

@@ -60,6 +60,8 @@ void BallsCompose::draw(const gl::Texture2D* surface, const BallsGBuffer& gbuffe
   program.set("uSize", glm::ivec2(camera.width, camera.height));
   program.set("uBalls", surface ? 1 : 0);
   program.set("uScene", scene.drawn ? 1 : 0);
+  program.set("uSceneMin", scene.rect.min);
+  program.set("uSceneMax", scene.rect.max);
   program.set("uInvView", glm::inverse(camera.view));
   program.set("uInvFocal", glm::vec2(1.0f / camera.proj[0][0], 1.0f / camera.proj[1][1]));
   program.set("uDepthRange", glm::vec2(camera.near, camera.far));

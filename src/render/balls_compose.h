@@ -20,6 +20,7 @@ struct ComposeScene {
   bool box = false;    // draw the domain box's edges
   glm::vec3 boxMin{0.0f}, boxMax{1.0f};
   glm::mat4 boxModel{1.0f};
+  WindowRect rect;  // where the raster drew them (drawn): the scene is at the far plane elsewhere
 };
 
 class BallsCompose {

@@ -35,14 +35,14 @@ std::vector<float> BallsGBuffer::readDepth() const {
   return out;
 }
 
-void BallsGBuffer::draw(const SphereBatch& balls, const BallsCamera& camera, const gl::Texture2D* sceneDepth,
-                        bool thickness, BallsRaster raster, gl::GpuProfiler& profiler) {
+void BallsGBuffer::draw(const SphereBatch& balls, const BallsCamera& camera, const SceneDepth& scene, bool thickness,
+                        BallsRaster raster, gl::GpuProfiler& profiler) {
   resize(camera.width, camera.height);
   m_compute = raster == BallsRaster::Compute;
   if (m_compute)
-    m_splat.draw(balls, camera, sceneDepth, thickness, m_surface, m_foam, m_depthImage, profiler);
+    m_splat.draw(balls, camera, scene, thickness, m_surface, m_foam, m_depthImage, profiler);
   else
-    drawFragments(balls, camera, sceneDepth, thickness, profiler);
+    drawFragments(balls, camera, scene.texture, thickness, profiler);
 }
 
 void BallsGBuffer::drawFragments(const SphereBatch& balls, const BallsCamera& camera, const gl::Texture2D* sceneDepth,

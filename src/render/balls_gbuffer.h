@@ -27,8 +27,9 @@ class BallsGBuffer {
   explicit BallsGBuffer(gl::ShaderLibrary& shaders);
   void resize(int width, int height);  // no-op when unchanged
   // Clears, then draws the impostor pass and, when `thickness`, the thickness pass against
-  // `sceneDepth` (the opaque meshes' DEPTH32F, same size; null: nothing opaque).
-  void draw(const SphereBatch& balls, const BallsCamera& camera, const gl::Texture2D* sceneDepth, bool thickness,
+  // `scene` (the opaque meshes' DEPTH32F, same size, and where it holds them; no texture: nothing
+  // opaque). The fragment raster tests the whole texture: its rectangle must be the window.
+  void draw(const SphereBatch& balls, const BallsCamera& camera, const SceneDepth& scene, bool thickness,
             BallsRaster raster, gl::GpuProfiler& profiler);
 
   const gl::Texture2D& surface() const { return m_surface; }

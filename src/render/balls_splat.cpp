@@ -41,6 +41,8 @@ void BallsSplat::setCommon(gl::Program& program, const SphereBatch& balls, const
   program.set("uThicknessUnit", balls.radius / kThicknessSteps);
   program.set("uThickness", m_thicknessOn ? 1 : 0);  // the depth pass's
   program.set("uScene", m_sceneOn ? 1 : 0);
+  program.set("uSceneMin", m_sceneRect.min);
+  program.set("uSceneMax", m_sceneRect.max);
 }
 
 void BallsSplat::perBall(const char* kernel, const SphereBatch& balls, const BallsCamera& camera) {
@@ -58,12 +60,13 @@ void BallsSplat::perBall(const char* kernel, const SphereBatch& balls, const Bal
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
-void BallsSplat::draw(const SphereBatch& balls, const BallsCamera& camera, const gl::Texture2D* sceneDepth,
-                      bool thickness, const gl::Texture2D& surface, const gl::Texture2D& foam,
-                      const gl::Texture2D& depth, gl::GpuProfiler& profiler) {
+void BallsSplat::draw(const SphereBatch& balls, const BallsCamera& camera, const SceneDepth& scene, bool thickness,
+                      const gl::Texture2D& surface, const gl::Texture2D& foam, const gl::Texture2D& depth,
+                      gl::GpuProfiler& profiler) {
   resize(camera, balls.count);
   m_thicknessOn = thickness;
-  m_sceneOn = sceneDepth != nullptr;
+  m_sceneOn = scene.texture != nullptr;
+  m_sceneRect = scene.rect;
   balls.positions->bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VIEW_POSITIONS);
   if (balls.velocities) balls.velocities->bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VIEW_VELOCITIES);
   m_keys.bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VIEW_SPLAT_KEYS);
@@ -74,7 +77,7 @@ void BallsSplat::draw(const SphereBatch& balls, const BallsCamera& camera, const
     // The last frame's kernels wrote the header: make that visible before overwriting it.
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     m_big.upload(kBigHeader, kBigHeaderBytes);
-    if (sceneDepth) sceneDepth->bind(BALLS_VIEW_SCENE_DEPTH);
+    if (scene.texture) scene.texture->bind(BALLS_VIEW_SCENE_DEPTH);
     perBall("balls_splat_depth", balls, camera);
   }
   {

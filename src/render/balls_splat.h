@@ -26,9 +26,9 @@ class BallsSplat {
 
   explicit BallsSplat(gl::ShaderLibrary& shaders);
   // surface RGBA32F, foam R16F and depth R32F of the camera's size receive the frame; thickness
-  // is accumulated when `thickness`, in front of sceneDepth (DEPTH32F, same size; null: nothing
-  // opaque).
-  void draw(const SphereBatch& balls, const BallsCamera& camera, const gl::Texture2D* sceneDepth, bool thickness,
+  // is accumulated when `thickness`, in front of the scene's depth (DEPTH32F, same size, inside
+  // its rectangle; no texture: nothing opaque).
+  void draw(const SphereBatch& balls, const BallsCamera& camera, const SceneDepth& scene, bool thickness,
             const gl::Texture2D& surface, const gl::Texture2D& foam, const gl::Texture2D& depth,
             gl::GpuProfiler& profiler);
 
@@ -43,6 +43,7 @@ class BallsSplat {
   unsigned m_bigCapacity = 0;
   bool m_thicknessOn = false;  // this frame's
   bool m_sceneOn = false;      // this frame's: a scene depth to test the thickness against
+  WindowRect m_sceneRect;      // and where it holds the meshes
 };
 
 }  // namespace tidepool

@@ -28,6 +28,12 @@
 
 namespace tidepool {
 
+// The scene pass's rectangle: the window pixels the scene's obstacle meshes can cover, a pixel
+// wider on each side (the projected corners of each mesh's bounds), clamped to the window; empty
+// when there is nothing to draw; the whole window when the obstacles' balls are drawn, a mesh's
+// bounds are unknown, or a mesh reaches the near plane.
+WindowRect meshesWindowRect(const BallsScene& scene, const BallsCamera& camera);
+
 class BallsView {
  public:
   explicit BallsView(gl::ShaderLibrary& shaders);
@@ -45,7 +51,9 @@ class BallsView {
   const ObstacleMeshes& obstacleMeshes() const { return m_meshes; }
 
  private:
-  void drawScene(const BallsScene& scene, const BallsCamera& camera, RenderTarget& target);
+  // Clears the target's depth and draws the obstacles inside the returned rectangle only (the
+  // whole window for the fragment raster, whose passes test against the depth attachment).
+  WindowRect drawScene(const BallsScene& scene, const BallsCamera& camera, RenderTarget& target);
   BallsScene sceneOf(const balls::Balls& model);  // builds the meshes of new or reshaped obstacles
   gl::ShaderLibrary& m_shaders;
   BallsViewParams m_params;

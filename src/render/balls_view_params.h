@@ -10,6 +10,10 @@
 #include "gl/buffer.h"
 #include "scene/param.h"
 
+namespace tidepool::gl {
+class Texture2D;
+}
+
 namespace tidepool {
 
 enum class BallsMode { Balls, Water };
@@ -67,6 +71,21 @@ struct MeshBatch {
   const gl::Buffer* vertices = nullptr;
   std::size_t count = 0;  // vertices, three per triangle
   glm::mat4 model{1.0f};  // rigid
+  // The vertices' bounds in the mesh's own frame; empty (min > max): unknown, the whole window.
+  glm::vec3 boundsMin{1.0f}, boundsMax{-1.0f};
+};
+
+// Window pixels from the bottom left, max exclusive.
+struct WindowRect {
+  glm::ivec2 min{0}, max{0};
+};
+
+// The obstacles' depth for the passes after the scene pass: the target's DEPTH32F, cleared and
+// drawn inside `rect` only (balls_view.h, meshesWindowRect); outside it the scene is at the far
+// plane whatever the texture holds.
+struct SceneDepth {
+  const gl::Texture2D* texture = nullptr;  // null: nothing opaque was drawn
+  WindowRect rect;
 };
 
 // Everything in a frame: the water balls, the obstacles (as balls and/or meshes) and the domain box.

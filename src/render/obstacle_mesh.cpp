@@ -222,6 +222,11 @@ void ObstacleMeshes::update(const balls::Obstacles& obstacles, float radius) {
     const std::vector<MeshVertex> mesh = body.mesh ? fileMesh(*body.mesh) : ballUnionMesh(body.particles, radius);
     next[k].id = body.id;
     next[k].count = mesh.size();
+    if (!mesh.empty()) next[k].lo = next[k].hi = glm::vec3(mesh.front().position);
+    for (const MeshVertex& v : mesh) {
+      next[k].lo = glm::min(next[k].lo, glm::vec3(v.position));
+      next[k].hi = glm::max(next[k].hi, glm::vec3(v.position));
+    }
     if (!mesh.empty()) next[k].vertices = gl::Buffer(std::span<const MeshVertex>(mesh), GL_STATIC_DRAW);
     ++m_builds;
   }

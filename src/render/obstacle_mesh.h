@@ -42,6 +42,8 @@ class ObstacleMeshes {
   std::size_t size() const { return m_meshes.size(); }
   const gl::Buffer& vertices(std::size_t k) const { return m_meshes[k].vertices; }  // of obstacles.body(k)
   std::size_t count(std::size_t k) const { return m_meshes[k].count; }              // vertices
+  glm::vec3 boundsMin(std::size_t k) const { return m_meshes[k].lo; }               // own frame; empty mesh: min > max
+  glm::vec3 boundsMax(std::size_t k) const { return m_meshes[k].hi; }
   std::size_t builds() const { return m_builds; }  // meshes built so far (tests: none per frame)
 
  private:
@@ -49,6 +51,7 @@ class ObstacleMeshes {
     unsigned id = 0;  // ObstacleBody::id
     gl::Buffer vertices;
     std::size_t count = 0;
+    glm::vec3 lo{1.0f}, hi{-1.0f};  // the vertices' bounds
   };
   std::vector<Entry> m_meshes;
   std::size_t m_builds = 0;

@@ -176,22 +176,30 @@ constexpr int kSize = 65;
 struct Layout {
   std::vector<glm::vec4> sheet;
   std::vector<MeshVertex> sphere = sphereMesh(0.1f);
+  glm::vec3 lo{INFINITY}, hi{-INFINITY};  // the sphere's bounds: the scene pass covers their rectangle only
   Layout() {
     for (int y = -5; y <= 5; ++y)
       for (int x = -5; x <= 5; ++x) sheet.emplace_back(0.06f * x, 0.06f * y, -2.0f, 1.0f);
+    for (const MeshVertex& v : sphere) {
+      lo = glm::min(lo, glm::vec3(v.position));
+      hi = glm::max(hi, glm::vec3(v.position));
+    }
   }
 };
 
-// `stale`: what the target's colour holds before the frame (a frame drawn before it).
+// `stale`: what the target's colour holds before the frame (a frame drawn before it), and its
+// depth, 1 (far) when the colour is black, else 0.
 std::vector<std::uint8_t> renderLayout(gl::ShaderLibrary& shaders, const Layout& l, BallsMode mode, bool water,
                                        bool front, bool back, glm::vec4 stale = glm::vec4(0.0f)) {
   const gl::Buffer balls{std::span<const glm::vec4>(l.sheet)}, mesh{std::span<const MeshVertex>(l.sphere)};
   BallsScene scene;
   scene.water = {&balls, nullptr, water ? l.sheet.size() : 0, 0.05f, glm::mat4(1.0f)};
   if (front)
-    scene.obstacleMeshes.push_back({&mesh, l.sphere.size(), glm::translate(glm::mat4(1.0f), {-0.15f, 0, -1.5f})});
+    scene.obstacleMeshes.push_back(
+        {&mesh, l.sphere.size(), glm::translate(glm::mat4(1.0f), {-0.15f, 0, -1.5f}), l.lo, l.hi});
   if (back)
-    scene.obstacleMeshes.push_back({&mesh, l.sphere.size(), glm::translate(glm::mat4(1.0f), {0.15f, 0, -2.5f})});
+    scene.obstacleMeshes.push_back(
+        {&mesh, l.sphere.size(), glm::translate(glm::mat4(1.0f), {0.15f, 0, -2.5f}), l.lo, l.hi});
   BallsView view(shaders);
   view.params().mode = mode;
   view.params().showBox = false;
@@ -199,7 +207,8 @@ std::vector<std::uint8_t> renderLayout(gl::ShaderLibrary& shaders, const Layout&
   RenderTarget target(kSize, kSize);
   target.bind();
   glClearColor(stale.r, stale.g, stale.b, stale.a);
-  glClear(GL_COLOR_BUFFER_BIT);
+  glClearDepth(stale == glm::vec4(0.0f) ? 1.0 : 0.0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   gl::GpuProfiler profiler;
   view.render(scene, BallsCamera::perspective(glm::mat4(1.0f), glm::radians(30.0f), kSize, kSize, 0.5f, 10.0f), target,
               profiler);
@@ -238,9 +247,9 @@ TEST_F(BallsComposeTest, MeshesInFrontOfTheWaterHideItAndMeshesBehindShowThrough
   }
 }
 
-// The scene pass clears depth only; the compose must take the background wherever no mesh was
-// drawn, whatever the target's colour held before.
-TEST_F(BallsComposeTest, LastFramesColourNeverShowsThroughTheBackground) {
+// The scene pass clears depth only, and only in the meshes' window rectangle; the compose must
+// take the background wherever no mesh was drawn, whatever the target's colour and depth held.
+TEST_F(BallsComposeTest, LastFramesColourAndDepthNeverShow) {
   const Layout l;
   for (BallsMode mode : {BallsMode::Balls, BallsMode::Water}) {
     SCOPED_TRACE(kBallsModeNames[int(mode)]);
@@ -248,6 +257,40 @@ TEST_F(BallsComposeTest, LastFramesColourNeverShowsThroughTheBackground) {
     const auto stale = renderLayout(shaders(), l, mode, true, true, true, glm::vec4(1.0f, 0.0f, 1.0f, 1.0f));
     EXPECT_EQ(fresh, stale);
   }
+}
+
+TEST(MeshesWindowRect, HoldsEveryMeshAndFallsBackToTheWindow) {
+  const BallsCamera camera = BallsCamera::perspective(glm::mat4(1.0f), glm::radians(30.0f), 200, 100, 0.5f, 10.0f);
+  const std::vector<MeshVertex> sphere = sphereMesh(0.1f);
+  BallsScene scene;
+  EXPECT_EQ(meshesWindowRect(scene, camera).max, glm::ivec2(0)) << "nothing to draw: an empty rectangle";
+  MeshBatch mesh{nullptr, sphere.size(), glm::translate(glm::mat4(1.0f), {0.2f, -0.1f, -2.0f}), glm::vec3(-0.1f),
+                 glm::vec3(0.1f)};
+  scene.obstacleMeshes = {mesh};
+  const WindowRect r = meshesWindowRect(scene, camera);
+  for (const MeshVertex& v : sphere) {  // every vertex projects inside, a pixel in from the edge
+    const glm::vec4 clip = camera.proj * mesh.model * v.position;
+    const glm::vec2 px = (0.5f * glm::vec2(clip) / clip.w + 0.5f) * glm::vec2(200, 100);
+    EXPECT_GE(px.x, float(r.min.x + 1));
+    EXPECT_GE(px.y, float(r.min.y + 1));
+    EXPECT_LE(px.x, float(r.max.x - 1));
+    EXPECT_LE(px.y, float(r.max.y - 1));
+  }
+  EXPECT_LT((r.max.x - r.min.x) * (r.max.y - r.min.y), 200 * 100 / 8) << "a small mesh: a small rectangle";
+  const auto whole = [&](const BallsScene& s) {
+    const WindowRect w = meshesWindowRect(s, camera);
+    return w.min == glm::ivec2(0) && w.max == glm::ivec2(200, 100);
+  };
+  BallsScene near = scene;
+  near.obstacleMeshes[0].model = glm::translate(glm::mat4(1.0f), {0.0f, 0.0f, -0.55f});
+  EXPECT_TRUE(whole(near)) << "a mesh through the near plane";
+  BallsScene unknown = scene;
+  unknown.obstacleMeshes[0].boundsMin = glm::vec3(1.0f);
+  unknown.obstacleMeshes[0].boundsMax = glm::vec3(-1.0f);
+  EXPECT_TRUE(whole(unknown)) << "unknown bounds";
+  BallsScene withBalls = scene;
+  withBalls.obstacle.count = 10;
+  EXPECT_TRUE(whole(withBalls)) << "the obstacles' balls are drawn";
 }
 
 TEST(BoxEdges, ProjectToTheWindowAndClipToTheDepthRange) {
