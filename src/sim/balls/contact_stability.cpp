@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "base/error.h"
 #include "sim/balls/balls.h"
@@ -25,21 +26,8 @@ double stiffness(const Params& p) {
   return springPerMass(p);
 }
 
-}  // namespace
-
-double restingStep(Contact law, double omegaDt) {
-  const Params p;
-  switch (law) {
-    case Contact::Penalty: return omegaDt * omegaDt / p.penaltyFactor;
-    case Contact::CudaSample: return omegaDt * omegaDt / p.cudaSpring;
-    case Contact::SpringDashpot: break;
-  }
-  return omegaDt * 0.01 / std::numbers::pi;  // ω = π/t_c at e = 1, t_c = 10 ms
-}
-
-double restingVelocityFactor(Contact law) { return law == Contact::CudaSample ? 1.0 - Params().cudaDamping : 1.0; }
-
-Params restingContact(Contact law, Integrator integrator, double omegaDt) {
+// The resting contact's box and law, without its step, gravity and fixed body.
+Params restingBase(Contact law, Integrator integrator) {
   Params p;
   p.fill = Fill::None;
   p.radius = kRadius;
@@ -51,6 +39,32 @@ Params restingContact(Contact law, Integrator integrator, double omegaDt) {
   p.damping = 0.0f;
   p.restitution = 1.0f;
   p.contactTime = 0.01f;
+  return p;
+}
+
+// Where the one fixed particle of a resting-contact model is (world, m).
+glm::vec3 fixedParticle(const Balls& b) {
+  if (b.obstacleCount() != 1)
+    throw Error("resting contact: the fixed body has " + std::to_string(b.obstacleCount()) + " particles, not 1");
+  return kCentre + glm::vec3(b.obstacles().body(0).particles[0]);
+}
+
+}  // namespace
+
+double restingStep(Contact law, double omegaDt) {
+  const Params p = restingBase(law, Integrator::SymplecticEuler);
+  switch (law) {
+    case Contact::Penalty: return omegaDt * omegaDt / p.penaltyFactor;
+    case Contact::CudaSample: return omegaDt * omegaDt / p.cudaSpring;
+    case Contact::SpringDashpot: break;
+  }
+  return omegaDt / std::sqrt(double(springPerMass(p)));  // ω = π/t_c at e = 1
+}
+
+double restingVelocityFactor(Contact law) { return law == Contact::CudaSample ? 1.0 - Params().cudaDamping : 1.0; }
+
+Params restingContact(Contact law, Integrator integrator, double omegaDt) {
+  Params p = restingBase(law, integrator);
   p.dt = float(restingStep(law, omegaDt));
   p.gravity = glm::vec3(0.0f, 0.0f, float(-kEquilibrium * stiffness(p)));
   // A sphere of radius r holds exactly one lattice particle, near its centre.
@@ -65,9 +79,7 @@ Params restingContact(Contact law, Integrator integrator, double omegaDt) {
 RestingRun restingRun(gl::ShaderLibrary& shaders, Contact law, Integrator integrator, double omegaDt, int steps) {
   const Params p = restingContact(law, integrator, omegaDt);
   Balls b(shaders, p);
-  if (b.obstacleCount() != 1)
-    throw Error("resting contact: the fixed body has " + std::to_string(b.obstacleCount()) + " particles, not 1");
-  const glm::vec3 fixed = kCentre + glm::vec3(b.obstacles().body(0).particles[0]);
+  const glm::vec3 fixed = fixedParticle(b);
   const double rest = 2.0 * p.radius - kEquilibrium;  // centre distance at equilibrium
   b.upload({glm::vec4(fixed.x, fixed.y, float(fixed.z + rest - kPush), 1.0f)}, {glm::vec4(0.0f)});
   const int window = steps / 4;
@@ -99,7 +111,7 @@ double releaseOverlap(gl::ShaderLibrary& shaders, Contact law, double dt) {
   p.dt = float(dt);
   p.gravity = glm::vec3(0.0f, 0.0f, -9.81f);
   Balls b(shaders, p);
-  const glm::vec3 fixed = kCentre + glm::vec3(b.obstacles().body(0).particles[0]);
+  const glm::vec3 fixed = fixedParticle(b);
   b.upload({glm::vec4(fixed.x, fixed.y, fixed.z + 2.0f * p.radius, 1.0f)}, {glm::vec4(0.0f)});
   const int steps = int(std::ceil(2.0 * std::numbers::pi / std::sqrt(stiffness(p) * dt * dt)));
   double worst = 0;
