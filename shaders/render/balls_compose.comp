@@ -2,9 +2,10 @@
 // Compose pass, one thread per pixel (a compute pass: on compute-first GPUs such as the H100 the
 // raster path's full-screen passes and clears are several times slower). Each pixel's scene is
 // the colour and depth of the obstacles the raster drew into the target (uScene 1; the raster
-// clears depth only, so a pixel still at the far plane takes the background), or the background
-// at the far plane when there were none (uScene 0: the target is neither cleared nor read), with the domain box's lines over it (the nearest of the line fragments GL would draw,
-// within their depth). Where the nearest ball is in front of that scene the G-buffer is shaded
+// clears depth only, and only in their rectangle, so a pixel outside it or still at the far plane
+// takes the background), or the background at the far plane when there were none (uScene 0: the
+// target is neither cleared nor read), with the domain box's lines over it (the nearest of the
+// line fragments GL would draw, within their depth). Where the nearest ball is in front of that scene the G-buffer is shaded
 // and written over it; water lets the scene through per channel (Beer–Lambert over the
 // thickness), which is how an obstacle shows through thin water:
 //   out = clamp(colour) + clamp(transmit) * scene

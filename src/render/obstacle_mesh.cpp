@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <span>
+#include <tuple>
 
 namespace tidepool {
 namespace {
@@ -210,6 +211,16 @@ std::vector<MeshVertex> ballUnionMesh(const std::vector<glm::vec4>& balls, float
   return out;
 }
 
+std::pair<glm::vec3, glm::vec3> meshBounds(const std::vector<MeshVertex>& mesh) {
+  if (mesh.empty()) return {glm::vec3(1.0f), glm::vec3(-1.0f)};
+  glm::vec3 lo(mesh.front().position), hi = lo;
+  for (const MeshVertex& v : mesh) {
+    lo = glm::min(lo, glm::vec3(v.position));
+    hi = glm::max(hi, glm::vec3(v.position));
+  }
+  return {lo, hi};
+}
+
 void ObstacleMeshes::update(const balls::Obstacles& obstacles, float radius) {
   std::vector<Entry> next(obstacles.size());
   for (std::size_t k = 0; k < obstacles.size(); ++k) {
@@ -222,11 +233,7 @@ void ObstacleMeshes::update(const balls::Obstacles& obstacles, float radius) {
     const std::vector<MeshVertex> mesh = body.mesh ? fileMesh(*body.mesh) : ballUnionMesh(body.particles, radius);
     next[k].id = body.id;
     next[k].count = mesh.size();
-    if (!mesh.empty()) next[k].lo = next[k].hi = glm::vec3(mesh.front().position);
-    for (const MeshVertex& v : mesh) {
-      next[k].lo = glm::min(next[k].lo, glm::vec3(v.position));
-      next[k].hi = glm::max(next[k].hi, glm::vec3(v.position));
-    }
+    std::tie(next[k].lo, next[k].hi) = meshBounds(mesh);
     if (!mesh.empty()) next[k].vertices = gl::Buffer(std::span<const MeshVertex>(mesh), GL_STATIC_DRAW);
     ++m_builds;
   }

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <glm/glm.hpp>
+#include <utility>
 #include <vector>
 
 #include "gl/buffer.h"
@@ -31,6 +32,9 @@ std::vector<MeshVertex> ballUnionMesh(const std::vector<glm::vec4>& balls, float
 // A mesh file's triangles with their face normals (in the file's winding; the shader turns them
 // toward the eye), for mesh obstacles: the renderer draws the shape itself, flat-shaded.
 std::vector<MeshVertex> fileMesh(const io::TriangleMesh& mesh);
+
+// The vertices' bounds (min, max); empty (min > max) for no vertices.
+std::pair<glm::vec3, glm::vec3> meshBounds(const std::vector<MeshVertex>& mesh);
 
 // A balls model's obstacles as meshes on the GPU, one per obstacle in its own frame (its pose
 // places it, every frame, without rebuilding): a mesh obstacle's file triangles, any other shape

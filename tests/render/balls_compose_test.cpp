@@ -176,14 +176,10 @@ constexpr int kSize = 65;
 struct Layout {
   std::vector<glm::vec4> sheet;
   std::vector<MeshVertex> sphere = sphereMesh(0.1f);
-  glm::vec3 lo{INFINITY}, hi{-INFINITY};  // the sphere's bounds: the scene pass covers their rectangle only
+  std::pair<glm::vec3, glm::vec3> bounds = meshBounds(sphere);  // the scene pass covers their rectangle only
   Layout() {
     for (int y = -5; y <= 5; ++y)
       for (int x = -5; x <= 5; ++x) sheet.emplace_back(0.06f * x, 0.06f * y, -2.0f, 1.0f);
-    for (const MeshVertex& v : sphere) {
-      lo = glm::min(lo, glm::vec3(v.position));
-      hi = glm::max(hi, glm::vec3(v.position));
-    }
   }
 };
 
@@ -196,10 +192,10 @@ std::vector<std::uint8_t> renderLayout(gl::ShaderLibrary& shaders, const Layout&
   scene.water = {&balls, nullptr, water ? l.sheet.size() : 0, 0.05f, glm::mat4(1.0f)};
   if (front)
     scene.obstacleMeshes.push_back(
-        {&mesh, l.sphere.size(), glm::translate(glm::mat4(1.0f), {-0.15f, 0, -1.5f}), l.lo, l.hi});
+        {&mesh, l.sphere.size(), glm::translate(glm::mat4(1.0f), {-0.15f, 0, -1.5f}), l.bounds.first, l.bounds.second});
   if (back)
     scene.obstacleMeshes.push_back(
-        {&mesh, l.sphere.size(), glm::translate(glm::mat4(1.0f), {0.15f, 0, -2.5f}), l.lo, l.hi});
+        {&mesh, l.sphere.size(), glm::translate(glm::mat4(1.0f), {0.15f, 0, -2.5f}), l.bounds.first, l.bounds.second});
   BallsView view(shaders);
   view.params().mode = mode;
   view.params().showBox = false;
