@@ -2,9 +2,9 @@
 // their harmonic setups (sim/swarm/swarm_measure.h: the core of a softened attractor;
 // sim/life/life_measure.h: two particles bound by the collision force;
 // sim/balls/contact_stability.h: a ball resting on a fixed particle): the amplitude's growth
-// against ω·dt, one curve per method, blow-ups drawn at the growth bound. Each method's largest stable ω·dt
-// (bisection) and its theoretical limit are printed and written into its rows: the lines of the
-// stability table in docs/ACCURACY.md.
+// against ω·dt, one curve per method, blow-ups drawn at the growth bound. Each method's largest
+// stable ω·dt (bisection) and its theoretical limit are printed and written into its rows: the
+// lines of the stability table in docs/ACCURACY.md.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
