@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "scene/param.h"
+#include "base/param.h"
 
 namespace tidepool {
 

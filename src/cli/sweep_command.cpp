@@ -1,6 +1,7 @@
 #include <algorithm>
 
 #include "base/error.h"
+#include "base/source_dir.h"
 #include "cli/commands.h"
 #include "gl/context.h"
 #include "gl/info.h"
@@ -12,8 +13,8 @@ namespace tidepool::cli {
 Command addSweep(CLI::App& app) {
   auto* sub = app.add_subcommand("sweep", "speed-against-accuracy studies: CSV rows and gnuplot charts");
   struct Opts {
-    std::string backend = "auto", csvDir = std::string(TIDEPOOL_SOURCE_DIR) + "/bench/results",
-                chartDir = std::string(TIDEPOOL_SOURCE_DIR) + "/docs/charts";
+    std::string backend = "auto", csvDir = (sourceDir() / "bench/results").string(),
+                chartDir = (sourceDir() / "docs/charts").string();
     bool quick = false, noChart = false, fromCsv = false, ship = false;
   };
   auto o = std::make_shared<Opts>();

@@ -7,6 +7,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "base/source_dir.h"
+
 namespace tidepool::gl {
 namespace fs = std::filesystem;
 
@@ -65,8 +67,7 @@ fs::path ShaderLibrary::findRoot() {
     return dir;
   }
   const fs::path exeDir = executableDir();
-  for (const fs::path& candidate :
-       {exeDir / "shaders", exeDir / ".." / "shaders", fs::path(TIDEPOOL_SOURCE_DIR) / "shaders"}) {
+  for (const fs::path& candidate : {exeDir / "shaders", exeDir / ".." / "shaders", sourceDir() / "shaders"}) {
     std::error_code ec;
     if (fs::is_regular_file(candidate / "common" / "index.glsl", ec)) return fs::weakly_canonical(candidate);
   }

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "base/error.h"
+#include "base/source_dir.h"
 
 namespace tidepool::io {
 namespace fs = std::filesystem;
@@ -17,7 +18,7 @@ fs::path findAssetDir() {
   }
   std::error_code ec;
   const fs::path exeDir = fs::read_symlink("/proc/self/exe", ec).parent_path();
-  for (const fs::path& c : {exeDir / "assets", exeDir / ".." / "assets", fs::path(TIDEPOOL_SOURCE_DIR) / "assets"})
+  for (const fs::path& c : {exeDir / "assets", exeDir / ".." / "assets", sourceDir() / "assets"})
     if (fs::is_directory(c / "scenes", ec)) return fs::weakly_canonical(c);
   throw Error("asset directory not found next to the executable or in the source tree; set TIDEPOOL_ASSET_DIR");
 }

@@ -7,8 +7,8 @@
 #include <glm/glm.hpp>
 #include <vector>
 
+#include "base/param.h"
 #include "gl/buffer.h"
-#include "scene/param.h"
 
 namespace tidepool::gl {
 class Texture2D;

@@ -6,12 +6,12 @@
 // 8 bits. Reads the model's buffers; writes only its HDR image and the target.
 #pragma once
 
+#include "base/param.h"
 #include "gl/framebuffer.h"
 #include "gl/gpu_profiler.h"
 #include "gl/shader_library.h"
 #include "gl/texture.h"
 #include "render/target.h"
-#include "scene/param.h"
 #include "sim/life/life.h"
 
 namespace tidepool {

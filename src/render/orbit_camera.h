@@ -5,8 +5,8 @@
 
 #include <glm/glm.hpp>
 
-#include "scene/input.h"
-#include "scene/param.h"
+#include "base/input.h"
+#include "base/param.h"
 
 namespace tidepool {
 

@@ -6,12 +6,12 @@
 
 #include <array>
 
+#include "base/param.h"
 #include "gl/framebuffer.h"
 #include "gl/gpu_profiler.h"
 #include "gl/shader_library.h"
 #include "gl/texture.h"
 #include "render/target.h"
-#include "scene/param.h"
 #include "sim/ripples/ripples.h"
 
 namespace tidepool {

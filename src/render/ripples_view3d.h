@@ -11,6 +11,7 @@
 // (ripples_view3d_raster.cpp). Both shade with the same shaders/render/ripples_shading.glsl.
 #pragma once
 
+#include "base/param.h"
 #include "gl/buffer.h"
 #include "gl/buffer_ops.h"
 #include "gl/framebuffer.h"
@@ -20,7 +21,6 @@
 #include "render/orbit_camera.h"
 #include "render/ripples_view.h"
 #include "render/target.h"
-#include "scene/param.h"
 #include "sim/ripples/ripples.h"
 
 namespace tidepool {

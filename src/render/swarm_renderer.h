@@ -15,6 +15,7 @@
 #include <span>
 #include <string>
 
+#include "base/param.h"
 #include "gl/buffer.h"
 #include "gl/buffer_ops.h"
 #include "gl/framebuffer.h"
@@ -22,7 +23,6 @@
 #include "gl/shader_library.h"
 #include "io/png.h"
 #include "render/target.h"
-#include "scene/param.h"
 #include "sim/swarm/swarm.h"
 
 namespace tidepool {

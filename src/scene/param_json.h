@@ -8,8 +8,8 @@
 #include <functional>
 #include <string>
 
+#include "base/param.h"
 #include "io/json.h"
-#include "scene/param.h"
 
 namespace tidepool {
 

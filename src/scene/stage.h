@@ -10,12 +10,12 @@
 #include <string>
 #include <vector>
 
+#include "base/input.h"
+#include "base/param.h"
 #include "gl/gpu_profiler.h"
 #include "gl/shader_library.h"
 #include "io/json.h"
 #include "render/target.h"
-#include "scene/input.h"
-#include "scene/param.h"
 #include "sim/divergence.h"
 
 namespace tidepool {

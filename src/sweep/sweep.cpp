@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "base/error.h"
+#include "base/source_dir.h"
 #include "io/csv.h"
 #include "io/json.h"
 #include "io/video.h"
@@ -173,7 +174,7 @@ void drawChart(const Result& result, const std::string& device, const fs::path& 
   const ChartSpec& c = result.chart;
   const std::string title =
       c.title + "\n{/*0.8 " + device + (software ? " (software renderer: development figures)" : "") + "}";
-  const fs::path script = fs::path(TIDEPOOL_SOURCE_DIR) / "bench" / "chart.gp";
+  const fs::path script = sourceDir() / "bench" / "chart.gp";
   const std::string cmd = "gnuplot -c " + quoted(script.string()) + " " + quoted(dat.string()) + " " +
                           quoted(base.string()) + " " + quoted(title) + " " + quoted(c.xLabel) + " " +
                           quoted(c.yLabel) + " " + (c.logX ? "1" : "0") + (c.logY ? "1" : "0") +

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "balls/bindings.glsl"
+#include "base/param.h"
 #include "grid/reorder_mode.h"
-#include "scene/param.h"
 
 namespace tidepool::balls {
 

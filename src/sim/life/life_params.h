@@ -3,7 +3,7 @@
 
 #include <array>
 
-#include "scene/param.h"
+#include "base/param.h"
 
 namespace tidepool::life {
 

@@ -4,7 +4,7 @@
 #include <array>
 #include <glm/glm.hpp>
 
-#include "scene/param.h"
+#include "base/param.h"
 
 namespace tidepool::ripples {
 

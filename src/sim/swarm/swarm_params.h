@@ -9,7 +9,7 @@
 #include <array>
 #include <cmath>
 
-#include "scene/param.h"
+#include "base/param.h"
 
 namespace tidepool::sim {
 
