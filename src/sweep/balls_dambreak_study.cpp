@@ -16,7 +16,7 @@
 #include "scene/balls_stage.h"
 #include "scene/scene.h"
 #include "sim/balls/balls.h"
-#include "sim/balls/balls_measure.h"
+#include "sim/balls/measure/balls_measure.h"
 #include "sweep/sweep.h"
 
 namespace tidepool::sweep {

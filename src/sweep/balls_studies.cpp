@@ -5,7 +5,7 @@
 
 #include "bench/bench.h"
 #include "sim/balls/balls.h"
-#include "sim/balls/balls_measure.h"
+#include "sim/balls/measure/balls_measure.h"
 #include "sweep/sweep.h"
 
 namespace tidepool::sweep {

@@ -1,13 +1,13 @@
 // Study of particle life's storage precision: fp16 (packHalf2x16) against fp32 state. Both
 // start from the same settled state and run T simulated seconds beside a double-precision CPU
-// run (sim/life/life_cpu.h); the error is the RMS distance between the GPU and CPU positions of
+// run (sim/life/measure/life_cpu.h); the error is the RMS distance between the GPU and CPU positions of
 // each particle (minimum image on the torus), the cost the GPU time of a step divided by dt.
 #include <cmath>
 #include <cstdio>
 
 #include "bench/bench.h"
 #include "sim/life/life.h"
-#include "sim/life/life_cpu.h"
+#include "sim/life/measure/life_cpu.h"
 #include "sweep/sweep.h"
 
 namespace tidepool::sweep {

@@ -5,8 +5,8 @@
 #include <numbers>
 
 #include "bench/bench.h"
+#include "sim/ripples/measure/ripples_measure.h"
 #include "sim/ripples/ripples.h"
-#include "sim/ripples/ripples_measure.h"
 #include "sweep/sweep.h"
 
 namespace tidepool::sweep {

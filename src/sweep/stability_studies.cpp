@@ -1,7 +1,7 @@
 // Where the integrators of the swarm, of particle life and of the balls' contact laws fail, on
-// their harmonic setups (sim/swarm/swarm_measure.h: the core of a softened attractor;
-// sim/life/life_measure.h: two particles bound by the collision force;
-// sim/balls/contact_stability.h: a ball resting on a fixed particle): the amplitude's growth
+// their harmonic setups (sim/swarm/measure/swarm_measure.h: the core of a softened attractor;
+// sim/life/measure/life_measure.h: two particles bound by the collision force;
+// sim/balls/measure/contact_stability.h: a ball resting on a fixed particle): the amplitude's growth
 // against ω·dt, one curve per method, blow-ups drawn at the growth bound. Each method's largest
 // stable ω·dt (bisection) and its theoretical limit are printed and written into its rows: the
 // lines of the stability table in docs/ACCURACY.md.
@@ -10,9 +10,9 @@
 #include <cstdio>
 #include <numbers>
 
-#include "sim/balls/contact_stability.h"
-#include "sim/life/life_measure.h"
-#include "sim/swarm/swarm_measure.h"
+#include "sim/balls/measure/contact_stability.h"
+#include "sim/life/measure/life_measure.h"
+#include "sim/swarm/measure/swarm_measure.h"
 #include "sweep/sweep.h"
 
 namespace tidepool::sweep {
@@ -152,7 +152,7 @@ Result ballsStability(Env& env) {
           return Point{run.growth < balls::kRestingGrowthBound, run.largest};
         });
   }
-  // Their other limit, in dt itself: a loaded contact's overlap past r (sim/balls/contact_stability.h).
+  // Their other limit, in dt itself: a loaded contact's overlap past r (sim/balls/measure/contact_stability.h).
   for (Contact law : {Contact::Penalty, Contact::CudaSample})
     std::printf("%s: overlap past r from dt = %.4g ms (theory %.4g ms)\n", balls::kContactNames[int(law)],
                 1e3 * balls::overlapStepLimit(env.shaders, law, tolerance), 1e3 * balls::overlapStepTheory(law));

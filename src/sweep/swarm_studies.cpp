@@ -3,8 +3,8 @@
 #include <cmath>
 
 #include "bench/bench.h"
+#include "sim/swarm/measure/swarm_measure.h"
 #include "sim/swarm/swarm.h"
-#include "sim/swarm/swarm_measure.h"
 #include "sweep/sweep.h"
 
 namespace tidepool::sweep {

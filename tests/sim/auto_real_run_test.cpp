@@ -11,10 +11,10 @@
 #include "scene/balls_stage.h"
 #include "scene/param_json.h"
 #include "scene/scene.h"
-#include "sim/balls/balls_measure.h"
-#include "sim/ripples/ripples_measure.h"
+#include "sim/balls/measure/balls_measure.h"
+#include "sim/ripples/measure/ripples_measure.h"
+#include "sim/swarm/measure/swarm_measure.h"
 #include "sim/swarm/swarm.h"
-#include "sim/swarm/swarm_measure.h"
 #include "support/gl_test.h"
 #include "sweep/balls_settle_study.h"
 

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "sim/balls/balls.h"
-#include "sim/balls/balls_measure.h"
+#include "sim/balls/measure/balls_measure.h"
 #include "support/gl_test.h"
 
 using namespace tidepool;

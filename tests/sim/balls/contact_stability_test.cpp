@@ -1,4 +1,4 @@
-// Stability limits of the balls' penalty and CUDA-sample contact laws (sim/balls/contact_stability.h):
+// Stability limits of the balls' penalty and CUDA-sample contact laws (sim/balls/measure/contact_stability.h):
 // the derivation checked against the model's one-step update written out on the CPU, then the
 // limits measured on the GPU against it.
 #include <gtest/gtest.h>
@@ -8,7 +8,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "sim/balls/contact_stability.h"
+#include "sim/balls/measure/contact_stability.h"
 #include "support/gl_test.h"
 
 using namespace tidepool;

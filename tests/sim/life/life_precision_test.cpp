@@ -9,8 +9,8 @@
 
 #include "io/png.h"
 #include "sim/life/life.h"
-#include "sim/life/life_cpu.h"
 #include "sim/life/life_reference.h"
+#include "sim/life/measure/life_cpu.h"
 #include "support/gl_test.h"
 #include "support/run_process.h"
 

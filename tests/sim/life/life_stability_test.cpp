@@ -1,5 +1,5 @@
 // Where particle life's integrators fail: two particles bound by the collision force oscillate
-// harmonically about their equilibrium distance (sim/life/life_measure.h). The largest stable
+// harmonically about their equilibrium distance (sim/life/measure/life_measure.h). The largest stable
 // ω·dt, found by bisection on the GPU, is compared with the limit of the model's one-step matrix
 // with friction: euler (the article's symplectic Euler) f·h² < 2(1 + f), f = exp(−γ·dt), which
 // friction raises above 2; verlet h < 2 at any friction.
@@ -9,8 +9,8 @@
 #include <complex>
 #include <cstdio>
 
-#include "sim/life/life_cpu.h"
-#include "sim/life/life_measure.h"
+#include "sim/life/measure/life_cpu.h"
+#include "sim/life/measure/life_measure.h"
 #include "support/gl_test.h"
 
 using namespace tidepool;

@@ -7,8 +7,8 @@
 #include <numbers>
 #include <random>
 
+#include "sim/ripples/measure/ripples_measure.h"
 #include "sim/ripples/ripples.h"
-#include "sim/ripples/ripples_measure.h"
 #include "support/gl_test.h"
 
 using namespace tidepool;

@@ -5,8 +5,8 @@
 
 #include <random>
 
+#include "sim/ripples/measure/ripples_measure.h"
 #include "sim/ripples/ripples.h"
-#include "sim/ripples/ripples_measure.h"
 #include "support/gl_test.h"
 #include "support/run_process.h"
 

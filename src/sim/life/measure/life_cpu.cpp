@@ -1,4 +1,4 @@
-#include "sim/life/life_cpu.h"
+#include "sim/life/measure/life_cpu.h"
 
 #include <algorithm>
 #include <cmath>

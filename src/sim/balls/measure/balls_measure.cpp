@@ -1,9 +1,9 @@
-#include "sim/balls/balls_measure.h"
+#include "sim/balls/measure/balls_measure.h"
 
 #include <cmath>
 
 #include "sim/balls/balls.h"
-#include "sim/bisect.h"
+#include "sim/measure/bisect.h"
 
 namespace tidepool::balls {
 namespace {

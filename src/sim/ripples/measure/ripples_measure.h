@@ -6,7 +6,7 @@
 #include <functional>
 
 #include "gl/shader_library.h"
-#include "sim/bisect.h"
+#include "sim/measure/bisect.h"
 #include "sim/ripples/ripples_params.h"
 
 namespace tidepool::ripples {

@@ -1,4 +1,4 @@
-#include "sim/balls/contact_stability.h"
+#include "sim/balls/measure/contact_stability.h"
 
 #include <cmath>
 #include <numbers>
@@ -6,7 +6,7 @@
 
 #include "base/error.h"
 #include "sim/balls/balls.h"
-#include "sim/bisect.h"
+#include "sim/measure/bisect.h"
 
 namespace tidepool::balls {
 namespace {

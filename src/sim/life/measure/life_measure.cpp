@@ -1,10 +1,10 @@
-#include "sim/life/life_measure.h"
+#include "sim/life/measure/life_measure.h"
 
 #include <cmath>
 #include <numbers>
 
-#include "sim/bisect.h"
 #include "sim/life/life.h"
+#include "sim/measure/bisect.h"
 
 namespace tidepool::life {
 

@@ -1,4 +1,4 @@
-#include "sim/ripples/ripples_measure.h"
+#include "sim/ripples/measure/ripples_measure.h"
 
 #include <algorithm>
 #include <cmath>

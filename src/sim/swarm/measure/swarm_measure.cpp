@@ -1,9 +1,9 @@
-#include "sim/swarm/swarm_measure.h"
+#include "sim/swarm/measure/swarm_measure.h"
 
 #include <cmath>
 #include <numbers>
 
-#include "sim/bisect.h"
+#include "sim/measure/bisect.h"
 #include "sim/swarm/swarm.h"
 
 namespace tidepool::sim {
