@@ -1,5 +1,6 @@
 // Shared fixtures for GPU tests: one headless context per test process (EGL, Mesa llvmpipe in CI)
-// and a shader library rooted at the source tree's shaders/.
+// and a shader library rooted at $TIDEPOOL_SHADER_DIR when it is set, else the source tree's
+// shaders/ (the tidepool executable the CLI tests start reads the same variable).
 #pragma once
 
 #include <gtest/gtest.h>
@@ -15,7 +16,8 @@ namespace tidepool::test {
 class GlTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite();
-  static gl::ShaderLibrary& shaders();  // source-tree shaders/
+  static gl::ShaderLibrary& shaders();       // rooted at shaderDir()
+  static std::filesystem::path shaderDir();  // $TIDEPOOL_SHADER_DIR, else the source tree's shaders/
 };
 
 // A fresh temporary folder removed at the end of the test.
