@@ -152,7 +152,9 @@ TEST(MeshVoxels, IcosphereFillsLikeTheAnalyticSphere) {
   // HCP: one ball per 4√2 r³ of volume.
   const double ideal = 4.0 / 3.0 * 3.14159265 * std::pow(radius, 3) / (4.0 * std::sqrt(2.0) * std::pow(r, 3));
   std::printf("icosphere %zu, analytic sphere %zu, volume / cell %.0f\n", voxels, analytic, ideal);
-  EXPECT_NEAR(double(voxels) / double(analytic), 1.0, 0.03);
+  // The README's "within 0.4%": 2482 points against 2490 (0.32% fewer). The icosphere's flat faces
+  // lie inside its sphere (0.86% less volume); few lattice points fall in the sliver between them.
+  EXPECT_NEAR(double(voxels) / double(analytic), 1.0, 0.004);
   EXPECT_NEAR(double(voxels) / ideal, 1.0, 0.04);
 }
 
