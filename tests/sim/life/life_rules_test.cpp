@@ -29,16 +29,48 @@ io::Json validJson() { return rulesToJson(generateRules({.species = 3, .particle
 
 }  // namespace
 
-TEST(LifeRules, SplitMix32MatchesTheJsReference) {
-  // splitmix32(0) in JS: a = 0x9e3779b9 -> first output 0x92ca2f0e (computed by hand from the
-  // app's code: t = a ^ a>>>16; t = imul(t, 0x21f0aaad); t ^= t>>>15; t = imul(t, 0x735a2d97); t ^= t>>>15).
-  SplitMix32 rng(0);
-  std::uint32_t a = 0x9e3779b9u, t = a ^ (a >> 16);
-  t *= 0x21f0aaadu;
-  t ^= t >> 15;
-  t *= 0x735a2d97u;
-  t ^= t >> 15;
-  EXPECT_EQ(rng.nextU32(), t);
+// The web app's own generator, run under node 20: splitmix32 as written in webgpu/particle-life.html
+// (lisyarus/lisyarus.github.io, commit acc99f3), cut from the file and evaluated unchanged:
+//   node -e "const h = require('fs').readFileSync('particle-life.html', 'utf8');
+//            eval(h.slice(h.indexOf('function splitmix32'), h.indexOf('function randomSeed')));
+//            const r = splitmix32(1234); console.log([r(), r(), r()].map(x => x * 2 ** 32));"
+// Its outputs are u32 / 2^32, so the u32s below are exact (the fractions print as 0.39212514134123921, ...).
+TEST(LifeRules, SplitMix32MatchesTheWebAppsGenerator) {
+  struct Stream {
+    std::uint32_t seed, outputs[3];
+  };
+  for (const Stream& s :
+       {Stream{0, {1684164658u, 3653269916u, 2939563536u}}, Stream{1, {1580013426u, 350525680u, 3524174333u}},
+        Stream{1234, {3112186583u, 2648076444u, 428646200u}},
+        Stream{4294967295u, {3950124170u, 4293442868u, 1302505678u}}}) {
+    SplitMix32 rng(s.seed);
+    for (std::uint32_t want : s.outputs) EXPECT_EQ(rng.nextU32(), want) << "seed " << s.seed;
+  }
+  EXPECT_EQ(SplitMix32(0).next(), 0.39212514134123921) << "the JS number: u32 / 2^32";
+}
+
+// The app's generateSystem for seed 1234 and two species, run as above (the function with
+// splitmix32, maxForceRadius = 32 and maxForceStrength = 100 cut from the file), each value
+// printed through Math.fround to 9 digits: the float tidepool keeps.
+TEST(LifeRules, GenerateRulesMatchesTheWebAppsGenerateSystem) {
+  const Rules r = generateRules({.species = 2, .seed = 1234});
+  ASSERT_EQ(r.speciesCount(), 2);
+  EXPECT_EQ(r.species[0].color, glm::vec3(0.601110399f, 0.474255890f, 0.0842765346f));
+  EXPECT_EQ(r.species[1].color, glm::vec3(0.666062295f, 0.701963246f, 0.121386781f));
+  EXPECT_EQ(r.species[0].spawnWeight, 0.598267734f);
+  EXPECT_EQ(r.species[1].spawnWeight, 0.671472192f);
+  const Force want[2][2] = {
+      {{36.8033180f, 329.837067f, 17.0202160f, 2.86200500f}, {71.6415253f, 374.846649f, 26.2466679f, 12.9944029f}},
+      {{48.8461342f, 326.921234f, 7.57053328f, 3.64583230f}, {43.5474777f, 319.027740f, 3.69282246f, 0.362164468f}}};
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j) {
+      const Force& f = r.species[i].forces[j];
+      SCOPED_TRACE("force " + std::to_string(i) + " <- " + std::to_string(j));
+      EXPECT_EQ(f.strength, want[i][j].strength);
+      EXPECT_EQ(f.collisionStrength, want[i][j].collisionStrength);
+      EXPECT_EQ(f.radius, want[i][j].radius);
+      EXPECT_EQ(f.collisionRadius, want[i][j].collisionRadius);
+    }
 }
 
 TEST(LifeRules, SameSeedSameRulesAndParticles) {
