@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "sim/balls/balls.h"
+#include "sim/balls/balls_reference.h"
 #include "sim/balls/measure/balls_measure.h"
 #include "support/gl_test.h"
 
@@ -17,11 +18,7 @@ namespace {
 class BallsPhysics : public test::GlTest {};
 
 Params oneBallBox() {
-  Params p;
-  p.fill = Fill::None;
-  p.radius = 0.01f;
-  p.domainMin = glm::vec3(0.0f);
-  p.domainMax = glm::vec3(1.0f);
+  Params p = reference::emptyBox(0.01f, glm::vec3(1.0f));
   p.contact = Contact::SpringDashpot;
   p.integrator = Integrator::SymplecticEuler;
   p.substeps = 1;

@@ -1,8 +1,11 @@
 // CPU reference of one balls step: every pair by brute force, double precision, the same laws as
 // shaders/balls/contact.glsl and walls.glsl, and optionally fixed particles that move (obstacles:
-// immovable, mass ratio 1, their own velocity). The oracle for the GPU step.
+// immovable, mass ratio 1, their own velocity). The oracle for the GPU step, with each of the
+// model's integrators: explicit and symplectic Euler (collide.comp) and velocity Verlet as
+// Balls::stepOnce runs it (drift.comp, then collide.comp's force and kick).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <glm/glm.hpp>
 #include <vector>
@@ -16,6 +19,7 @@ using dvec3 = glm::dvec3;
 struct State {
   std::vector<dvec3> x, v;
   std::vector<double> foam;
+  std::vector<dvec3> a;  // Verlet: the acceleration at (x, v) of the last step; empty before the first
 };
 
 struct Fixed {  // an obstacle particle: where it is and how fast it moves
@@ -52,9 +56,47 @@ inline dvec3 wallAccel(const Params& p, dvec3 n, double overlap, dvec3 relVel) {
   return contactAccel(p, n, overlap, relVel, 1.0, 1.0);
 }
 
-// One symplectic- or explicit-Euler step with fixed walls at the domain bounds.
-inline void step(State& s, const Params& p, const std::vector<Fixed>& fixed = {}) {
-  const double r = p.radius, dt = p.dt, reach = 2 * r;
+// The CPU state of balls uploaded to the GPU as (positions, velocities).
+inline State state(const std::vector<glm::vec4>& pos, const std::vector<glm::vec4>& vel) {
+  State s;
+  for (std::size_t i = 0; i < pos.size(); ++i) {
+    s.x.emplace_back(glm::vec3(pos[i]));
+    s.v.emplace_back(glm::vec3(vel[i]));
+  }
+  return s;
+}
+
+// How far the GPU's balls (k, in the GPU's cell order) are from the CPU's (index order[k]).
+struct Gap {
+  double position = 0;  // largest distance, m
+  double velocity = 0;  // largest velocity difference over the largest CPU speed
+};
+inline Gap gap(const State& cpu, const std::vector<glm::vec4>& pos, const std::vector<glm::vec4>& vel,
+               const std::vector<unsigned>& order) {
+  double worstX = 0, worstV = 0, scaleV = 0;
+  for (std::size_t k = 0; k < pos.size(); ++k) {
+    const std::size_t i = order[k];
+    worstX = std::max(worstX, glm::length(glm::dvec3(glm::vec3(pos[k])) - cpu.x[i]));
+    worstV = std::max(worstV, glm::length(glm::dvec3(glm::vec3(vel[k])) - cpu.v[i]));
+    scaleV = std::max(scaleV, glm::length(cpu.v[i]));
+  }
+  return {worstX, worstV / scaleV};
+}
+
+// An empty box [0, size] for balls of radius r (the rest of the parameters at their defaults).
+inline Params emptyBox(float radius, glm::vec3 size) {
+  Params p;
+  p.fill = Fill::None;
+  p.radius = radius;
+  p.domainMin = glm::vec3(0.0f);
+  p.domainMax = size;
+  return p;
+}
+
+// Acceleration of every ball at the state's positions and velocities (collide.comp's sum): gravity,
+// every other ball within 2r, the fixed particles and the walls at the domain bounds.
+inline std::vector<dvec3> accelerations(const State& s, const Params& p, const std::vector<Fixed>& fixed) {
+  const double r = p.radius, reach = 2 * r;
   const std::size_t n = s.x.size();
   std::vector<dvec3> a(n, dvec3(p.gravity));
   for (std::size_t i = 0; i < n; ++i) {
@@ -80,8 +122,50 @@ inline void step(State& s, const Params& p, const std::vector<Fixed>& fixed = {}
       if (above > 0) a[i] += wallAccel(p, -axis, above, s.v[i]);
     }
   }
+  return a;
+}
+
+// walls.glsl's confineToDomain: the CUDA sample's clamp-and-bounce, then the clamp to the domain.
+inline void confine(const Params& p, dvec3& x, dvec3& v) {
+  const double r = p.radius;
+  if (p.contact == Contact::CudaSample)
+    for (int k = 0; k < 3; ++k) {
+      if (x[k] > p.domainMax[k] - r) {
+        x[k] = p.domainMax[k] - r;
+        v[k] *= p.cudaBoundaryDamping;
+      }
+      if (x[k] < p.domainMin[k] + r) {
+        x[k] = p.domainMin[k] + r;
+        v[k] *= p.cudaBoundaryDamping;
+      }
+    }
+  x = glm::clamp(x, dvec3(p.domainMin), dvec3(p.domainMax));
+}
+
+// One velocity Verlet step as the model runs it. Its first step (a empty) evaluates a(x0, v0)
+// without a kick; then drift.comp: v½ = v + dt/2·a, x += dt·v½, confined; then collide.comp on
+// the drifted positions and half-step velocities: a = a(x, v½), v = (v½ + dt/2·a)·exp(−damping·dt).
+// The fixed particles are where they are when the forces act (here they do not move).
+inline void stepVerlet(State& s, const Params& p, const std::vector<Fixed>& fixed = {}) {
+  const double dt = p.dt;
+  if (s.a.size() != s.x.size()) s.a = accelerations(s, p, fixed);
+  for (std::size_t i = 0; i < s.x.size(); ++i) {
+    s.v[i] += 0.5 * dt * s.a[i];
+    s.x[i] += dt * s.v[i];
+    confine(p, s.x[i], s.v[i]);
+  }
+  s.a = accelerations(s, p, fixed);
   const double decay = std::exp(-double(p.damping) * dt);
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = 0; i < s.x.size(); ++i) s.v[i] = (s.v[i] + 0.5 * dt * s.a[i]) * decay;
+}
+
+// One step of the model's integrator (p.integrator), walls at the domain bounds.
+inline void step(State& s, const Params& p, const std::vector<Fixed>& fixed = {}) {
+  if (p.integrator == Integrator::VelocityVerlet) return stepVerlet(s, p, fixed);
+  const double dt = p.dt;
+  const std::vector<dvec3> a = accelerations(s, p, fixed);
+  const double decay = std::exp(-double(p.damping) * dt);
+  for (std::size_t i = 0; i < s.x.size(); ++i) {
     dvec3 x = s.x[i], v = s.v[i];
     if (p.integrator == Integrator::ExplicitEuler) {
       x += dt * v;
@@ -90,18 +174,8 @@ inline void step(State& s, const Params& p, const std::vector<Fixed>& fixed = {}
       v = (v + dt * a[i]) * decay;
       x += dt * v;
     }
-    if (p.contact == Contact::CudaSample)
-      for (int k = 0; k < 3; ++k) {
-        if (x[k] > p.domainMax[k] - r) {
-          x[k] = p.domainMax[k] - r;
-          v[k] *= p.cudaBoundaryDamping;
-        }
-        if (x[k] < p.domainMin[k] + r) {
-          x[k] = p.domainMin[k] + r;
-          v[k] *= p.cudaBoundaryDamping;
-        }
-      }
-    s.x[i] = glm::clamp(x, dvec3(p.domainMin), dvec3(p.domainMax));
+    confine(p, x, v);
+    s.x[i] = x;
     s.v[i] = v;
   }
 }

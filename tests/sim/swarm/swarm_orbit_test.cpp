@@ -30,6 +30,9 @@ constexpr int kStepsPerOrbit = 200, kOrbits = 10, kSampleEvery = 10;
 constexpr int kRing = 64;  // particles on the same orbit at different phases (particle 0: phase 0)
 constexpr double kEps32 = 1.1920929e-7;
 
+// Simulated seconds per step: an orbit (2π·r/√s) in kStepsPerOrbit steps.
+float orbitStep() { return float(2.0 * std::numbers::pi * kRadius / std::sqrt(kStrength) / kStepsPerOrbit); }
+
 double energy(glm::dvec2 x, glm::dvec2 v) { return 0.5 * glm::dot(v, v) - kStrength * std::log(glm::length(x)); }
 
 struct EnergyLog {
@@ -41,29 +44,14 @@ struct EnergyLog {
 
 TEST_P(SwarmOrbit, EnergyErrorStaysInTheIntegratorsBandAndGpuMatchesCpuReference) {
   const Integrator integrator = GetParam();
-  SwarmParams params;
+  SwarmParams params = test::freeFlight();
   params.integrator = integrator;
-  params.preset = Preset::None;
-  params.gravity = 0.0f;
-  params.friction = 0.0f;
-  params.epsilon = 0.0f;
-  params.bounce = false;
   params.particles = kRing;
-
-  const double period = 2.0 * std::numbers::pi * kRadius / std::sqrt(kStrength);
-  const float dt = float(period / kStepsPerOrbit);  // the GPU steps by this float; so does the reference
+  const float dt = orbitStep();  // the GPU steps by this float; so does the reference
   const double h = std::sqrt(kStrength) / kRadius * dt;
-  std::vector<SwarmParticle> start;
-  for (int k = 0; k < kRing; ++k) {
-    const double a = 2.0 * std::numbers::pi * k / kRing;
-    const glm::dvec2 dir(std::cos(a), std::sin(a));
-    start.push_back({glm::vec2(kRadius * dir), glm::vec2(std::sqrt(kStrength) * glm::dvec2(-dir.y, dir.x))});
-  }
-
+  const std::vector<SwarmParticle> start = test::orbitRing(kRing, kRadius, kStrength);
   Swarm gpu(shaders(), params);
-  gpu.setAspect(1.0);
-  gpu.setExtraAttractors({{{0.0, 0.0}, kStrength}});
-  gpu.upload(start);
+  test::placeOrbit(gpu, start, kStrength);
   test::SwarmReference cpu;
   cpu.params = params;
   cpu.extra = {{{0.0, 0.0}, kStrength}};
@@ -143,26 +131,12 @@ INSTANTIATE_TEST_SUITE_P(AllIntegrators, SwarmOrbit,
 // pictures, not accuracy studies; the bound below is 1.5x the worst measured.
 TEST_F(SwarmOrbitFp16, EnergyErrorWithFp16StorageIsMeasured) {
   for (Integrator integrator : {Integrator::SymplecticEuler, Integrator::Verlet, Integrator::Rk4}) {
-    SwarmParams params;
+    SwarmParams params = test::freeFlight();
     params.integrator = integrator;
     params.storage = Storage::Fp16;
-    params.preset = Preset::None;
-    params.gravity = 0.0f;
-    params.friction = 0.0f;
-    params.epsilon = 0.0f;
-    params.bounce = false;
-    const double period = 2.0 * std::numbers::pi * kRadius / std::sqrt(kStrength);
-    const float dt = float(period / kStepsPerOrbit);
-    std::vector<SwarmParticle> start;
-    for (int k = 0; k < kRing; ++k) {
-      const double a = 2.0 * std::numbers::pi * k / kRing;
-      const glm::dvec2 dir(std::cos(a), std::sin(a));
-      start.push_back({glm::vec2(kRadius * dir), glm::vec2(std::sqrt(kStrength) * glm::dvec2(-dir.y, dir.x))});
-    }
+    const float dt = orbitStep();
     Swarm gpu(shaders(), params);
-    gpu.setAspect(1.0);
-    gpu.setExtraAttractors({{{0.0, 0.0}, kStrength}});
-    gpu.upload(start);
+    test::placeOrbit(gpu, test::orbitRing(kRing, kRadius, kStrength), kStrength);
     std::vector<double> e0;
     for (const auto& p : gpu.download()) e0.push_back(energy(glm::dvec2(p.pos), glm::dvec2(p.vel)));
     double maxErr = 0.0, rmsRadius = 0.0;

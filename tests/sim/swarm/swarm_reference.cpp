@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace tidepool::test {
 
@@ -66,6 +67,32 @@ std::vector<RefParticle> toReference(const std::vector<sim::SwarmParticle>& gpu)
   std::vector<RefParticle> out;
   for (const sim::SwarmParticle& p : gpu) out.push_back({glm::dvec2(p.pos), glm::dvec2(p.vel)});
   return out;
+}
+
+sim::SwarmParams freeFlight() {
+  sim::SwarmParams p;
+  p.preset = sim::Preset::None;
+  p.gravity = 0.0f;
+  p.friction = 0.0f;
+  p.epsilon = 0.0f;
+  p.bounce = false;
+  return p;
+}
+
+std::vector<sim::SwarmParticle> orbitRing(int count, double radius, double strength) {
+  std::vector<sim::SwarmParticle> ring;
+  for (int k = 0; k < count; ++k) {
+    const double a = 2.0 * std::numbers::pi * k / count;
+    const glm::dvec2 dir(std::cos(a), std::sin(a));
+    ring.push_back({glm::vec2(radius * dir), glm::vec2(std::sqrt(strength) * glm::dvec2(-dir.y, dir.x))});
+  }
+  return ring;
+}
+
+void placeOrbit(sim::Swarm& swarm, const std::vector<sim::SwarmParticle>& ring, double strength) {
+  swarm.setAspect(1.0);
+  swarm.setExtraAttractors({{{0.0, 0.0}, strength}});
+  swarm.upload(ring);
 }
 
 }  // namespace tidepool::test

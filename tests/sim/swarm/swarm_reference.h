@@ -28,4 +28,11 @@ struct SwarmReference {
 
 std::vector<RefParticle> toReference(const std::vector<sim::SwarmParticle>& gpu);
 
+// Orbits about one attractor of strength s at the origin, with aspect 1 (NDC = world units):
+sim::SwarmParams freeFlight();  // no preset, gravity, friction, softening (ε = 0) or walls
+// `count` particles on the circular orbit of radius r (speed √s, counter-clockwise), at evenly
+// spaced phases from 0.
+std::vector<sim::SwarmParticle> orbitRing(int count, double radius, double strength);
+void placeOrbit(sim::Swarm& swarm, const std::vector<sim::SwarmParticle>& ring, double strength);
+
 }  // namespace tidepool::test
