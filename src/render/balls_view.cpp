@@ -2,7 +2,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "render/balls_bindings.glsl"
+#include "render/balls/bindings.glsl"
 
 namespace tidepool {
 
@@ -152,7 +152,7 @@ WindowRect BallsView::drawScene(const BallsScene& scene, const BallsCamera& came
   glDisable(GL_BLEND);
   m_vao.bind();
   if (scene.obstacle.count > 0) {
-    gl::Program& balls = m_shaders.program({"render/balls_impostor.vert", "render/balls_impostor.frag"});
+    gl::Program& balls = m_shaders.program({"render/balls/impostor.vert", "render/balls/impostor.frag"});
     balls.use();
     balls.set("uView", camera.view);
     balls.set("uProj", camera.proj);
@@ -165,7 +165,7 @@ WindowRect BallsView::drawScene(const BallsScene& scene, const BallsCamera& came
     glDrawArrays(GL_TRIANGLES, 0, GLsizei(6 * scene.obstacle.count));
   }
   if (!scene.obstacleMeshes.empty()) {
-    gl::Program& mesh = m_shaders.program({"render/obstacle_mesh.vert", "render/obstacle_mesh.frag"});
+    gl::Program& mesh = m_shaders.program({"render/balls/obstacle_mesh.vert", "render/balls/obstacle_mesh.frag"});
     mesh.use();
     mesh.set("uProj", camera.proj);
     mesh.set("uColor", m_params.obstacleColor);
