@@ -7,9 +7,7 @@ in float vFoam;
 
 uniform mat4 uProj;
 uniform float uRadius;
-uniform vec3 uColor;       // linear RGB
-uniform vec3 uLightView;   // towards the light, view space
-out vec4 fragColor;
+#include "render/balls/obstacle_light.glsl"
 
 void main() {
   const float r2 = dot(vLocal, vLocal);

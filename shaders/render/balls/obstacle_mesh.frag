@@ -5,10 +5,7 @@
 in vec3 vView;
 in vec3 vNormal;
 
-uniform vec3 uColor;      // linear RGB
-uniform vec3 uLightView;  // towards the light, view space
-
-out vec4 fragColor;
+#include "render/balls/obstacle_light.glsl"
 
 void main() {
   vec3 n = normalize(vNormal);

@@ -1,4 +1,5 @@
-// Ray-traced sphere impostors, shared by the G-buffer and thickness passes.
+// Ray-traced sphere impostors, shared by the G-buffer and thickness passes (gbuffer.vert and
+// sphere_fragment.glsl).
 //
 // Each ball is one quad (6 vertices from gl_VertexID) facing the eye, perpendicular to the ray
 // through the ball's centre and placed at the sphere's nearest point, sized to the tangent cone:

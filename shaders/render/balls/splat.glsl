@@ -1,6 +1,6 @@
-// Compute rasteriser of the balls' sphere impostors, shared by its three kernels
-// (splat_depth.comp, splat_id.comp, splat_resolve.comp). On GPUs with few
-// raster units (the H100) the fragment path's quads are raster-bound; here the shader cores do
+// Compute rasteriser of the balls' sphere impostors, shared by its three kernels (splat_depth.comp,
+// splat_id.comp, splat_resolve.comp; the first two walk the pixels with splat_walk.glsl). On GPUs
+// with few raster units (the H100) the fragment path's quads are raster-bound; here the shader cores do
 // the coverage: each ball bounds its silhouette in pixels, then intersects the eye ray through
 // every pixel centre in that box with the sphere, as the fragment path does per fragment.
 //

@@ -5,17 +5,10 @@
 // makes the disc's total brightness pi·R^2 — the same as the sub-pixel splats
 // (point.frag) the view switches to below one pixel per unit, so zooming across that
 // threshold does not change brightness. Used when the radius covers at least one pixel.
-in vec2 vOffset;
-flat in vec3 vColor;
-uniform float uRadius;
-uniform float uPixelsPerUnit;
-uniform float uExposure;
-out vec4 fragColor;
+#include "render/life/coverage.glsl"
 
 void main() {
   const float r = uRadius * uPixelsPerUnit;  // pixels
   const float edge = sqrt(max(r * r - 1.0 / 12.0, 0.0));
-  const float alpha = clamp(edge - length(vOffset) * uPixelsPerUnit + 0.5, 0.0, 1.0);
-  if (alpha <= 0.0) discard;
-  fragColor = vec4(vColor * uExposure, alpha);
+  writeCoverage(clamp(edge - length(vOffset) * uPixelsPerUnit + 0.5, 0.0, 1.0));
 }

@@ -17,20 +17,29 @@ vec2 slopeAt(ivec2 p) {
               heightAt(p + ivec2(0, 1)) - heightAt(p - ivec2(0, 1))) / (2.0 * uCellSize);
 }
 
-float heightBilinear(vec2 uv) {
+// A bilinear sample at grid uv: the cell c whose centre is the nearest at or below-left of uv,
+// and f in [0, 1)^2, how far uv lies from that centre towards the next ones.
+struct Bilinear {
+  ivec2 c;
+  vec2 f;
+};
+
+Bilinear bilinear(vec2 uv) {
   const vec2 g = uv * vec2(uSize) - 0.5;
   const ivec2 c = ivec2(floor(g));
-  const vec2 f = g - vec2(c);
-  return mix(mix(heightAt(c), heightAt(c + ivec2(1, 0)), f.x), mix(heightAt(c + ivec2(0, 1)), heightAt(c + ivec2(1, 1)), f.x),
-             f.y);
+  return Bilinear(c, g - vec2(c));
+}
+
+float heightBilinear(vec2 uv) {
+  const Bilinear s = bilinear(uv);
+  const float below = mix(heightAt(s.c), heightAt(s.c + ivec2(1, 0)), s.f.x);
+  return mix(below, mix(heightAt(s.c + ivec2(0, 1)), heightAt(s.c + ivec2(1, 1)), s.f.x), s.f.y);
 }
 
 vec2 slopeBilinear(vec2 uv) {
-  const vec2 g = uv * vec2(uSize) - 0.5;
-  const ivec2 c = ivec2(floor(g));
-  const vec2 f = g - vec2(c);
-  return mix(mix(slopeAt(c), slopeAt(c + ivec2(1, 0)), f.x), mix(slopeAt(c + ivec2(0, 1)), slopeAt(c + ivec2(1, 1)), f.x),
-             f.y);
+  const Bilinear s = bilinear(uv);
+  const vec2 below = mix(slopeAt(s.c), slopeAt(s.c + ivec2(1, 0)), s.f.x);
+  return mix(below, mix(slopeAt(s.c + ivec2(0, 1)), slopeAt(s.c + ivec2(1, 1)), s.f.x), s.f.y);
 }
 
 #endif

@@ -46,6 +46,18 @@ vec2 boundaryT(GridRay ray, ivec2 cell, float side) {
   return mix(vec2(kHuge), (bound - ray.q0) * ray.invDq, ray.moving);
 }
 
+// One step of the traversal (Amanatides & Woo): into the neighbour across the edge the ray
+// crosses first; that axis's next crossing lies tDelta further on.
+void stepCell(GridRay ray, vec2 tDelta, inout ivec2 cell, inout vec2 tNext) {
+  if (tNext.x < tNext.y) {
+    cell.x += ray.stepDir.x;
+    tNext.x += tDelta.x;
+  } else {
+    cell.y += ray.stepDir.y;
+    tNext.y += tDelta.y;
+  }
+}
+
 // Smallest root of c + b t + a t^2 in [0, len], or -1. A little slack at both ends: a crossing
 // on a cell edge belongs to either cell.
 float firstRoot(float a, float b, float c, float len) {
@@ -96,13 +108,7 @@ float traceTile(GridRay ray, ivec2 tile, float ta, float tb) {
       if (t >= 0.0) return t;
     }
     if (t1 >= tb) break;
-    if (tNext.x < tNext.y) {
-      k.x += ray.stepDir.x;
-      tNext.x += tDelta.x;
-    } else {
-      k.y += ray.stepDir.y;
-      tNext.y += tDelta.y;
-    }
+    stepCell(ray, tDelta, k, tNext);
     if (any(lessThan(k, lo)) || any(greaterThan(k, hi))) break;
     ta = max(ta, t1);
   }
@@ -128,13 +134,7 @@ float traceSurface(GridRay ray, float ta, float tb) {
       if (t >= 0.0) return t;
     }
     if (t1 >= tb) break;
-    if (tNext.x < tNext.y) {
-      tile.x += ray.stepDir.x;
-      tNext.x += tDelta.x;
-    } else {
-      tile.y += ray.stepDir.y;
-      tNext.y += tDelta.y;
-    }
+    stepCell(ray, tDelta, tile, tNext);
     if (any(lessThan(tile, ivec2(0))) || any(greaterThanEqual(tile, uTiles))) break;
     ta = max(ta, t1);
   }
