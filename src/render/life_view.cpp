@@ -5,6 +5,7 @@
 
 #include "life/bindings.glsl"
 #include "render/blue_noise.h"
+#include "render/life/bindings.glsl"
 
 namespace tidepool {
 
@@ -88,11 +89,9 @@ void LifeView::render(const life::Life& model, RenderTarget& target, gl::GpuProf
     auto scope = profiler.scope("life.compose");
     gl::Program& p = m_shaders.program({"render/common/fullscreen.vert", "render/life/compose.frag"});
     p.use();
-    p.set("uHdr", 0);
-    p.set("uBlueNoise", 1);
     p.set("uDither", m_params.dither ? 1 : 0);
-    m_hdr.bind(0);
-    m_blueNoise.bind(1);
+    m_hdr.bind(LIFE_VIEW_HDR_UNIT);
+    m_blueNoise.bind(LIFE_VIEW_BLUE_NOISE_UNIT);
     target.bind();
     glDrawArrays(GL_TRIANGLES, 0, 3);
   }

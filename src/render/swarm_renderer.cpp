@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/swarm/bindings.glsl"
 #include "swarm/bindings.glsl"
 
 namespace tidepool {
@@ -171,7 +172,7 @@ void SwarmRenderer::render(const sim::Swarm& swarm, const SwarmViewParams& view,
     gl::Program& p = m_shaders.program({"render/common/fullscreen.vert", "render/swarm/tonemap.frag"});
     p.use();
     p.set("uOpacity", view.blend ? view.opacity : -1.0f);
-    m_accum.bind(0);
+    m_accum.bind(SWARM_VIEW_ACCUM_UNIT);
     m_empty.bind();
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);

@@ -1,8 +1,10 @@
 #version 430 core
 // One camera-facing quad per ball from gl_VertexID (6 vertices each), reading the simulation's
 // position SSBO directly: no instancing buffer, no CPU copy.
-layout(std430, binding = 0) readonly buffer Positions { vec4 positions[]; };
-layout(std430, binding = 1) readonly buffer Velocities { vec4 velocities[]; };
+#include "render/balls/bindings.glsl"
+
+layout(std430, binding = BALLS_VIEW_POSITIONS) readonly buffer Positions { vec4 positions[]; };
+layout(std430, binding = BALLS_VIEW_VELOCITIES) readonly buffer Velocities { vec4 velocities[]; };
 
 uniform mat4 uModel;     // simulation -> world (domain rotation)
 uniform mat4 uView;

@@ -2,8 +2,10 @@
 // Compose the life HDR image into the 8-bit target: ACES filmic tone map (Narkowicz 2015),
 // gamma 1/2.2, then blue-noise dithering: per channel c = 255x rounds up when its fraction
 // exceeds the pixel's blue-noise threshold, else down, so smooth glows show no bands.
-uniform sampler2D uHdr;
-uniform sampler2D uBlueNoise;  // R32F thresholds in (0, 1), tiled by pixel
+#include "render/life/bindings.glsl"
+
+layout(binding = LIFE_VIEW_HDR_UNIT) uniform sampler2D uHdr;
+layout(binding = LIFE_VIEW_BLUE_NOISE_UNIT) uniform sampler2D uBlueNoise;  // R32F thresholds in (0, 1), tiled by pixel
 uniform int uDither;
 out vec4 fragColor;
 

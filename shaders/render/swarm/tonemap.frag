@@ -2,7 +2,9 @@
 // High-quality swarm composite: the accumulation image holds (sum of colours, count) per pixel
 // in fp32, so nothing clips at 255 particles. Blending: brightness 1 - exp(-opacity * count)
 // (one particle ~ opacity, saturating smoothly); opaque (uOpacity < 0): any particle shows fully.
-layout(binding = 0) uniform sampler2D uAccum;
+#include "render/swarm/bindings.glsl"
+
+layout(binding = SWARM_VIEW_ACCUM_UNIT) uniform sampler2D uAccum;
 uniform float uOpacity;
 out vec4 fragColor;
 
