@@ -4,9 +4,10 @@
 // instead of glClearBufferData, which one driver (NVIDIA 580 on an H100) runs at ~25 GB/s.
 layout(local_size_x = 256) in;
 #include "common/index.glsl"
+#include "common/words_bindings.glsl"
 
-layout(std430, binding = 0) writeonly buffer Quads { uvec4 quads[]; };
-layout(std430, binding = 0) writeonly buffer Words { uint words[]; };
+layout(std430, binding = WORDS_FILL_TARGET) writeonly buffer Quads { uvec4 quads[]; };
+layout(std430, binding = WORDS_FILL_TARGET) writeonly buffer Words { uint words[]; };
 
 uniform uint uWords;
 uniform uint uValue;

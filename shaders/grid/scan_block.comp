@@ -9,8 +9,6 @@
 //   uWriteSums = 1 (scan-then-propagate): writes the block's sum to blockSums[block] instead;
 //                scan_add.comp adds the offsets afterwards.
 // The last block also writes its total (plus its offset) to out[uCount].
-layout(local_size_x = WG) in;
-#include "common/index.glsl"
 #include "grid/scan_group.glsl"
 #include "grid/scan_io.glsl"
 
@@ -35,10 +33,10 @@ uint sumOfEarlierBlocks(uint block) {
 }
 
 void main() {
-  const uint block = groupIndex();
-  if (block >= blockCount()) return;  // spare groups of a dispatch spilled into y (whole group)
+  uint block;
+  bool partial;
+  if (!groupBlock(block, partial)) return;
   const uint t = gl_LocalInvocationID.x;
-  const bool partial = partialBlock(block);
 
   // 1. Exclusive scan inside each 4-element chunk; chunk sums go to shared memory. The block's
   // offset is read (or summed) between the loads and their first use.

@@ -2,15 +2,13 @@
 // Reduce phase of the reduce-then-scan prefix sum (see src/grid/prefix_scan.h): the sum of each
 // block of kScanBlock uints goes to blockSums[block]. Read-only over the input, so the level
 // costs one read of N; the scan of the sums and the block scan with offsets follow.
-layout(local_size_x = WG) in;
-#include "common/index.glsl"
 #include "grid/scan_group.glsl"
 #include "grid/scan_io.glsl"
 
 void main() {
-  const uint block = groupIndex();
-  if (block >= blockCount()) return;  // spare groups of a dispatch spilled into y (whole group)
-  const bool partial = partialBlock(block);
+  uint block;
+  bool partial;
+  if (!groupBlock(block, partial)) return;
   uint sum = 0u;
   for (uint k = 0u; k < VECS; ++k) {
     const uvec4 v = loadChunk(block, k, partial);

@@ -4,11 +4,6 @@
 
 namespace tidepool::gl {
 namespace {
-GLuint genBuffer() {
-  GLuint name = 0;
-  glGenBuffers(1, &name);
-  return name;
-}
 void checkRange(std::size_t offset, std::size_t bytes, std::size_t size, const char* what) {
   if (offset + bytes > size)
     throw GlError(std::string("buffer ") + what + " of " + std::to_string(bytes) + " bytes at offset " +
@@ -16,7 +11,7 @@ void checkRange(std::size_t offset, std::size_t bytes, std::size_t size, const c
 }
 }  // namespace
 
-Buffer::Buffer(std::size_t bytes, const void* data, GLenum usage) : m_handle(genBuffer()) {
+Buffer::Buffer(std::size_t bytes, const void* data, GLenum usage) : m_handle(Handle<Kind::Buffer>::generate()) {
   glBindBuffer(GL_COPY_WRITE_BUFFER, id());
   glBufferData(GL_COPY_WRITE_BUFFER, GLsizeiptr(bytes), data, usage);
   glBindBuffer(GL_COPY_WRITE_BUFFER, 0);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "common/words_bindings.glsl"
 #include "gl/program.h"
 
 namespace tidepool::gl {
@@ -33,7 +34,7 @@ void BufferOps::fill(Buffer& buffer, uint32_t value, std::size_t bytes) const {
   m_fill->set("uValue", unsigned(value));
   for (std::size_t offset = 0; offset < bytes; offset += m_chunk) {
     const std::size_t n = std::min(m_chunk, bytes - offset);
-    buffer.bindRange(GL_SHADER_STORAGE_BUFFER, 0, offset, n);
+    buffer.bindRange(GL_SHADER_STORAGE_BUFFER, WORDS_FILL_TARGET, offset, n);
     m_fill->set("uWords", unsigned(n / 4));
     m_fill->dispatchThreads((n / 4 + 3) / 4);
   }
@@ -48,8 +49,8 @@ void BufferOps::copy(const Buffer& src, Buffer& dst, std::size_t bytes) const {
   m_copy->use();
   for (std::size_t offset = 0; offset < bytes; offset += m_chunk) {
     const std::size_t n = std::min(m_chunk, bytes - offset);
-    src.bindRange(GL_SHADER_STORAGE_BUFFER, 0, offset, n);
-    dst.bindRange(GL_SHADER_STORAGE_BUFFER, 1, offset, n);
+    src.bindRange(GL_SHADER_STORAGE_BUFFER, WORDS_COPY_SRC, offset, n);
+    dst.bindRange(GL_SHADER_STORAGE_BUFFER, WORDS_COPY_DST, offset, n);
     m_copy->set("uWords", unsigned(n / 4));
     m_copy->dispatchThreads((n / 4 + 3) / 4);
   }

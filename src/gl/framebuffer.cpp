@@ -16,10 +16,8 @@ const char* statusName(GLenum status) {
 }  // namespace
 
 Framebuffer::Framebuffer(std::initializer_list<const Texture2D*> colors, const Texture2D* depth) {
-  GLuint name = 0;
-  glGenFramebuffers(1, &name);
-  m_handle = Handle<Kind::Framebuffer>(name);
-  glBindFramebuffer(GL_FRAMEBUFFER, name);
+  m_handle = Handle<Kind::Framebuffer>::generate();
+  glBindFramebuffer(GL_FRAMEBUFFER, id());
   std::vector<GLenum> drawBuffers;
   for (const Texture2D* c : colors) {
     const GLenum attachment = GL_COLOR_ATTACHMENT0 + GLenum(drawBuffers.size());
@@ -46,18 +44,14 @@ void Framebuffer::bind() const {
 }
 
 VertexArray VertexArray::create() {
-  GLuint name = 0;
-  glGenVertexArrays(1, &name);
   VertexArray v;
-  v.m_handle = Handle<Kind::VertexArray>(name);
+  v.m_handle = Handle<Kind::VertexArray>::generate();
   return v;
 }
 
 Query Query::create() {
-  GLuint name = 0;
-  glGenQueries(1, &name);
   Query q;
-  q.m_handle = Handle<Kind::Query>(name);
+  q.m_handle = Handle<Kind::Query>::generate();
   return q;
 }
 

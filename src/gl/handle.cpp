@@ -13,6 +13,21 @@ namespace detail {
 void noteCreated(Kind kind) { ++g_live[static_cast<int>(kind)]; }
 void noteReleased(Kind kind) { --g_live[static_cast<int>(kind)]; }
 
+GLuint generate(Kind kind) {
+  GLuint name = 0;
+  switch (kind) {
+    case Kind::Buffer: glGenBuffers(1, &name); break;
+    case Kind::Texture: glGenTextures(1, &name); break;
+    case Kind::Framebuffer: glGenFramebuffers(1, &name); break;
+    case Kind::VertexArray: glGenVertexArrays(1, &name); break;
+    case Kind::Query: glGenQueries(1, &name); break;
+    case Kind::Program:
+    case Kind::Shader:
+    case Kind::Count: break;  // Handle::generate() does not compile for these
+  }
+  return name;
+}
+
 void release(Kind kind, GLuint name) {
   switch (kind) {
     case Kind::Buffer: glDeleteBuffers(1, &name); break;

@@ -19,6 +19,7 @@ int liveCount(Kind kind);
 namespace detail {
 void noteCreated(Kind kind);
 void noteReleased(Kind kind);
+GLuint generate(Kind kind);            // glGen* for the kind (Buffer to Query)
 void release(Kind kind, GLuint name);  // glDelete* for the kind
 }  // namespace detail
 
@@ -28,6 +29,11 @@ class Handle {
   Handle() = default;
   explicit Handle(GLuint name) : m_name(name) {
     if (m_name) detail::noteCreated(K);
+  }
+  // A new name from glGen*; programs and shaders come from glCreate*, which their owners call.
+  static Handle generate() {
+    static_assert(K < Kind::Program, "programs and shaders are made by glCreateProgram / glCreateShader");
+    return Handle(detail::generate(K));
   }
   ~Handle() { reset(); }
   Handle(Handle&& o) noexcept : m_name(std::exchange(o.m_name, 0)) {}

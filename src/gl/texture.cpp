@@ -4,16 +4,9 @@
 #include <string>
 
 namespace tidepool::gl {
-namespace {
-GLuint genTexture() {
-  GLuint name = 0;
-  glGenTextures(1, &name);
-  return name;
-}
-}  // namespace
 
 Texture2D::Texture2D(int width, int height, GLenum internalFormat, int levels)
-    : m_handle(genTexture()), m_width(width), m_height(height), m_format(internalFormat) {
+    : m_handle(Handle<Kind::Texture>::generate()), m_width(width), m_height(height), m_format(internalFormat) {
   if (width <= 0 || height <= 0)
     throw GlError("texture size " + std::to_string(width) + "x" + std::to_string(height) + " is not positive");
   GLint maxSize = 0;

@@ -1,6 +1,7 @@
-// Uniform spatial grid on the GPU, shared by balls, fluid and life: particles are counted into
-// cells, the counts are scanned into cell starts, and particle arrays are reordered so that each
-// cell's particles are contiguous and cells are in index order (x fastest, then y, then z).
+// Uniform spatial grid on the GPU, shared by the balls and life models (and the grid benchmark):
+// particles are counted into cells, the counts are scanned into cell starts, and particle arrays
+// are reordered so that each cell's particles are contiguous and cells are in index order (x
+// fastest, then y, then z).
 //
 //   6 particles in 4 cells, cell of particle i = {2, 0, 2, 3, 2, 0}
 //   count    cellCount   = {2, 0, 3, 1}        indexInCell = {0, 0, 1, 0, 2, 1}  (atomicAdd results)

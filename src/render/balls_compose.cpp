@@ -1,6 +1,6 @@
 #include "render/balls_compose.h"
 
-#include "render/balls_bindings.glsl"
+#include "render/balls/bindings.glsl"
 
 namespace tidepool {
 
@@ -41,7 +41,7 @@ std::vector<glm::vec4> boxEdgesInWindow(glm::vec3 lo, glm::vec3 hi, const glm::m
 
 void BallsCompose::draw(const gl::Texture2D* surface, const BallsGBuffer& gbuffer, const BallsViewParams& look,
                         const BallsCamera& camera, float radius, const ComposeScene& scene, RenderTarget& target) {
-  gl::Program& program = m_shaders.program({"render/balls_compose.comp"});
+  gl::Program& program = m_shaders.program({"render/balls/compose.comp"});
   program.use();
   if (surface) {
     surface->bind(BALLS_VIEW_GBUFFER);

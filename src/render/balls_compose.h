@@ -1,4 +1,4 @@
-// The compose pass of the balls renderer, a compute kernel (shaders/render/balls_compose.comp):
+// The compose pass of the balls renderer, a compute kernel (shaders/render/balls/compose.comp):
 // shades the G-buffer over the scene in the target (balls: diffuse + ambient; water: Fresnel,
 // sky, specular, Beer–Lambert absorption, foam, and the scene behind showing through), where the
 // balls are nearer than the scene's depth; draws the domain box's lines into the scene on the

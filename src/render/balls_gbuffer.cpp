@@ -1,6 +1,6 @@
 #include "render/balls_gbuffer.h"
 
-#include "render/balls_bindings.glsl"
+#include "render/balls/bindings.glsl"
 
 namespace tidepool {
 
@@ -63,7 +63,7 @@ void BallsGBuffer::drawFragments(const SphereBatch& balls, const BallsCamera& ca
       glEnable(GL_DEPTH_TEST);
       glDepthFunc(GL_LESS);
       glColorMaski(0, GL_TRUE, GL_TRUE, GL_FALSE, GL_TRUE);  // B is the thickness pass's
-      drawSpheres(m_shaders.program({"render/balls_gbuffer.vert", "render/balls_gbuffer.frag"}), balls, camera);
+      drawSpheres(m_shaders.program({"render/balls/gbuffer.vert", "render/balls/gbuffer.frag"}), balls, camera);
     }
   }
   if (thickness && balls.count > 0) {
@@ -80,7 +80,7 @@ void BallsGBuffer::drawFragments(const SphereBatch& balls, const BallsCamera& ca
     glColorMaski(0, GL_FALSE, GL_FALSE, GL_TRUE, GL_FALSE);
     glEnable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ONE);
-    drawSpheres(m_shaders.program({"render/balls_gbuffer.vert", "render/balls_thickness.frag"}), balls, camera);
+    drawSpheres(m_shaders.program({"render/balls/gbuffer.vert", "render/balls/thickness.frag"}), balls, camera);
     glDisable(GL_BLEND);
   }
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "render/balls_bindings.glsl"
+#include "render/balls/bindings.glsl"
 
 namespace tidepool {
 
@@ -46,7 +46,7 @@ void BallsSplat::setCommon(gl::Program& program, const SphereBatch& balls, const
 }
 
 void BallsSplat::perBall(const char* kernel, const SphereBatch& balls, const BallsCamera& camera) {
-  const std::string file = std::string("render/") + kernel + ".comp";
+  const std::string file = std::string("render/balls/") + kernel + ".comp";
   gl::Program& small = m_shaders.program({file}, {{"BIG", "0"}});
   setCommon(small, balls, camera);
   small.dispatchThreads(balls.count);
@@ -78,14 +78,14 @@ void BallsSplat::draw(const SphereBatch& balls, const BallsCamera& camera, const
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     m_big.upload(kBigHeader, kBigHeaderBytes);
     if (scene.texture) scene.texture->bind(BALLS_VIEW_SCENE_DEPTH);
-    perBall("balls_splat_depth", balls, camera);
+    perBall("splat_depth", balls, camera);
   }
   {
     auto scope = profiler.scope("balls.splat.id");
-    perBall("balls_splat_id", balls, camera);
+    perBall("splat_id", balls, camera);
   }
   auto scope = profiler.scope("balls.splat.resolve");
-  gl::Program& resolve = m_shaders.program({"render/balls_splat_resolve.comp"});
+  gl::Program& resolve = m_shaders.program({"render/balls/splat_resolve.comp"});
   setCommon(resolve, balls, camera);
   resolve.set("uHasFoam", balls.velocities ? 1 : 0);
   surface.bindImage(BALLS_VIEW_SPLAT_SURFACE, GL_WRITE_ONLY, GL_RGBA32F);

@@ -1,7 +1,7 @@
 // Compute rasteriser of the balls' sphere impostors: fills the same G-buffer as the fragment
 // path (src/render/balls_gbuffer.h) with the shader cores instead of the raster units, which on
 // compute-first GPUs (the H100) draw a million impostors some ten times slower. Three kernels
-// (shaders/render/balls_splat_*.comp; the scheme is at the top of render/balls_splat.glsl):
+// (shaders/render/balls/splat_*.comp; the scheme is at the top of render/balls/splat.glsl):
 //   depth    per ball: window depth by atomicMin into a uint per pixel; the thickness (when
 //            asked) by atomicAdd of fixed-point chords where the ball is in front of the scene
 //   id       per ball: where its depth won, its id replaces the depth
@@ -35,7 +35,7 @@ class BallsSplat {
  private:
   void resize(const BallsCamera& camera, std::size_t balls);
   void setCommon(gl::Program& program, const SphereBatch& balls, const BallsCamera& camera) const;
-  // Runs `kernel` (balls_splat_depth or balls_splat_id) over the balls, then its big-ball variant.
+  // Runs `kernel` ("splat_depth" or "splat_id" in shaders/render/balls/) over the balls, then its big-ball variant.
   void perBall(const char* kernel, const SphereBatch& balls, const BallsCamera& camera);
   gl::ShaderLibrary& m_shaders;
   gl::BufferOps m_ops;

@@ -2,7 +2,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "render/balls_bindings.glsl"
+#include "render/balls/bindings.glsl"
 
 namespace tidepool {
 
@@ -151,25 +151,27 @@ WindowRect BallsView::drawScene(const BallsScene& scene, const BallsCamera& came
   glDepthFunc(GL_LESS);
   glDisable(GL_BLEND);
   m_vao.bind();
+  // Both obstacle programs take render/balls/obstacle_light.glsl's colour and key light.
+  const auto useWithLight = [&](gl::Program& program) {
+    program.use();
+    program.set("uColor", m_params.obstacleColor);
+    program.set("uLightView", camera.towardsLight(m_params.lightDirection));
+  };
   if (scene.obstacle.count > 0) {
-    gl::Program& balls = m_shaders.program({"render/balls_impostor.vert", "render/balls_impostor.frag"});
-    balls.use();
+    gl::Program& balls = m_shaders.program({"render/balls/impostor.vert", "render/balls/impostor.frag"});
+    useWithLight(balls);
     balls.set("uView", camera.view);
     balls.set("uProj", camera.proj);
     balls.set("uRadius", scene.obstacle.radius);
-    balls.set("uLightView", camera.towardsLight(m_params.lightDirection));
     balls.set("uModel", scene.obstacle.model);
-    balls.set("uColor", m_params.obstacleColor);
     balls.set("uHasVelocity", 0);
     scene.obstacle.positions->bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VIEW_POSITIONS);
     glDrawArrays(GL_TRIANGLES, 0, GLsizei(6 * scene.obstacle.count));
   }
   if (!scene.obstacleMeshes.empty()) {
-    gl::Program& mesh = m_shaders.program({"render/obstacle_mesh.vert", "render/obstacle_mesh.frag"});
-    mesh.use();
+    gl::Program& mesh = m_shaders.program({"render/balls/obstacle_mesh.vert", "render/balls/obstacle_mesh.frag"});
+    useWithLight(mesh);
     mesh.set("uProj", camera.proj);
-    mesh.set("uColor", m_params.obstacleColor);
-    mesh.set("uLightView", camera.towardsLight(m_params.lightDirection));
     for (const MeshBatch& batch : scene.obstacleMeshes) {
       mesh.set("uModelView", camera.view * batch.model);
       batch.vertices->bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VIEW_MESH);

@@ -5,6 +5,7 @@
 
 #include "life/bindings.glsl"
 #include "render/blue_noise.h"
+#include "render/life/bindings.glsl"
 
 namespace tidepool {
 
@@ -43,7 +44,7 @@ void LifeView::zoomAbout(glm::vec2 cursor, float clicks, glm::ivec2 viewport) {
 
 void LifeView::drawParticles(const life::Life& model, const char* fragment, float halfSize, float ppu,
                              glm::vec2 extent) {
-  gl::Program& p = m_shaders.program({"render/life_particle.vert", fragment},
+  gl::Program& p = m_shaders.program({"render/life/particle.vert", fragment},
                                      {{"LIFE_FP16", model.storage() == life::Storage::Fp16 ? "1" : "0"}});
   p.use();
   p.set("uCentre", m_camera.centre);
@@ -75,24 +76,22 @@ void LifeView::render(const life::Life& model, RenderTarget& target, gl::GpuProf
     glEnable(GL_BLEND);
     glBlendEquation(GL_FUNC_ADD);
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE, GL_ONE, GL_ONE);  // colour·alpha added, alpha summed
-    if (m_params.glow) drawParticles(model, "render/life_glow.frag", m_params.glowSize, ppu, extent);
+    if (m_params.glow) drawParticles(model, "render/life/glow.frag", m_params.glowSize, ppu, extent);
     if (m_params.particles) {
       if (ppu * m_params.radius >= 1.0f)
-        drawParticles(model, "render/life_disc.frag", 1.5f * m_params.radius, ppu, extent);
+        drawParticles(model, "render/life/disc.frag", 1.5f * m_params.radius, ppu, extent);
       else
-        drawParticles(model, "render/life_point.frag", 2.0f / ppu, ppu, extent);  // a 2-pixel quad
+        drawParticles(model, "render/life/point.frag", 2.0f / ppu, ppu, extent);  // a 2-pixel quad
     }
     glDisable(GL_BLEND);
   }
   {
     auto scope = profiler.scope("life.compose");
-    gl::Program& p = m_shaders.program({"render/fullscreen.vert", "render/life_compose.frag"});
+    gl::Program& p = m_shaders.program({"render/common/fullscreen.vert", "render/life/compose.frag"});
     p.use();
-    p.set("uHdr", 0);
-    p.set("uBlueNoise", 1);
     p.set("uDither", m_params.dither ? 1 : 0);
-    m_hdr.bind(0);
-    m_blueNoise.bind(1);
+    m_hdr.bind(LIFE_VIEW_HDR_UNIT);
+    m_blueNoise.bind(LIFE_VIEW_BLUE_NOISE_UNIT);
     target.bind();
     glDrawArrays(GL_TRIANGLES, 0, 3);
   }

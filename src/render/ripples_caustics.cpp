@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/ripples/bindings.glsl"
 #include "render/ripples_view3d.h"
-#include "render/ripples_view_bindings.glsl"
 
 namespace tidepool {
 
@@ -34,14 +34,14 @@ void RipplesView3D::splatCaustics(const ripples::Ripples& model, glm::ivec2 grid
   const glm::ivec2 size(m_caustics.width(), m_caustics.height());
   m_light.bindBase(GL_SHADER_STORAGE_BUFFER, RIPPLES_VIEW_LIGHT);
   if (m_params.caustics) {
-    gl::Program& splat = m_shaders.program({"render/ripples_caustics.comp"});
+    gl::Program& splat = m_shaders.program({"render/ripples/caustics.comp"});
     setCommon(splat, model);
     splat.set("uLightGrid", grid);
     splat.set("uLightSize", size);
     splat.dispatchThreads(std::size_t(grid.x) * std::size_t(grid.y));
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   }
-  gl::Program& resolve = m_shaders.program({"render/ripples_caustics_resolve.comp"});
+  gl::Program& resolve = m_shaders.program({"render/ripples/caustics_resolve.comp"});
   resolve.use();
   resolve.set("uLightSize", size);
   resolve.set("uWeight", weight);
@@ -59,7 +59,7 @@ void RipplesView3D::drawCaustics(const ripples::Ripples& model, glm::ivec2 grid,
   glClearColor(m_params.caustics ? 0.0f : 1.0f, 0.0f, 0.0f, 0.0f);
   glClear(GL_COLOR_BUFFER_BIT);
   if (!m_params.caustics) return;
-  gl::Program& p = m_shaders.program({"render/ripples_caustics.vert", "render/ripples_caustics.frag"});
+  gl::Program& p = m_shaders.program({"render/ripples/caustics.vert", "render/ripples/caustics.frag"});
   setCommon(p, model);
   p.set("uLightGrid", grid);
   p.set("uWeight", weight);

@@ -1,6 +1,6 @@
 #include "render/ripples_view.h"
 
-#include "render/ripples_view_bindings.glsl"
+#include "render/ripples/bindings.glsl"
 #include "render/textures.h"
 #include "ripples/bindings.glsl"
 
@@ -68,7 +68,7 @@ void RipplesView::render(const ripples::Ripples& model, RenderTarget& target, gl
   auto scope = profiler.scope("ripples.view2d");
   const glm::ivec2 size(target.width(), target.height());
   if (m_params.renderer == RipplesRenderer::Compute) {
-    gl::Program& p = m_shaders.program({"render/ripples_2d.comp"});
+    gl::Program& p = m_shaders.program({"render/ripples/view_2d.comp"});
     setUniforms(p, model, size);
     p.set("uTargetSize", size);
     target.color().bindImage(RIPPLES_VIEW_COLOR_IMAGE, GL_WRITE_ONLY, GL_RGBA8);
@@ -78,7 +78,7 @@ void RipplesView::render(const ripples::Ripples& model, RenderTarget& target, gl
     glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     return;
   }
-  gl::Program& p = m_shaders.program({"render/fullscreen.vert", "render/ripples_2d.frag"});
+  gl::Program& p = m_shaders.program({"render/common/fullscreen.vert", "render/ripples/view_2d.frag"});
   setUniforms(p, model, size);
   target.bind();
   glDisable(GL_DEPTH_TEST);

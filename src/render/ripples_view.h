@@ -1,7 +1,7 @@
 // Renderer of the ripples model: the 2D refraction view (top-down, water-simulation-gpu's look).
 // Reads the model's state buffer directly; writes only the render target's colour. A compute
-// pass shades every pixel (shaders/render/ripples_2d.comp); the same shading as one full-screen
-// triangle (ripples_2d.frag) is kept as the "raster" renderer, to check the compute one against.
+// pass shades every pixel (shaders/render/ripples/view_2d.comp); the same shading as one full-screen
+// triangle (render/ripples/view_2d.frag) is kept as the "raster" renderer, to check the compute one against.
 #pragma once
 
 #include <array>

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "render/ripples_view_bindings.glsl"
+#include "render/ripples/bindings.glsl"
 #include "render/textures.h"
 #include "ripples/bindings.glsl"
 
@@ -86,7 +86,7 @@ void RipplesView3D::rayCast(const ripples::Ripples& model, RenderTarget& target,
   if (m_tiles.size() != tileBytes) m_tiles = gl::Buffer(tileBytes);
   const GLuint empty[2] = {0xffffffffu, 0u};  // ordered bits: min = +inf-ish, max = -inf-ish
   m_range.upload(empty, sizeof empty);
-  gl::Program& bounds = m_shaders.program({"render/ripples_tiles.comp"});
+  gl::Program& bounds = m_shaders.program({"render/ripples/tiles.comp"});
   setCommon(bounds, model);
   bounds.set("uTiles", tiles);
   m_tiles.bindBase(GL_SHADER_STORAGE_BUFFER, RIPPLES_VIEW_TILES);
@@ -94,7 +94,7 @@ void RipplesView3D::rayCast(const ripples::Ripples& model, RenderTarget& target,
   bounds.dispatch({unsigned(tiles.x + 7) / 8, unsigned(tiles.y + 7) / 8, 1});
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
-  gl::Program& p = m_shaders.program({"render/ripples_raycast.comp"});
+  gl::Program& p = m_shaders.program({"render/ripples/raycast.comp"});
   setShading(p, model);
   const glm::ivec2 size(target.width(), target.height());
   p.set("uTiles", tiles);

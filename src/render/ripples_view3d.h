@@ -4,11 +4,11 @@
 //
 // Default (compute) renderer, all compute passes:
 //   caustics  light points -> atomic counts per floor texel -> light texture (ripples_caustics.cpp)
-//   tiles     min/max height per 8x8 dual cells and over the grid (ripples_tiles.comp)
-//   ray cast  per pixel: walls, ball, heightfield surface, shading (ripples_raycast.comp)
+//   tiles     min/max height per 8x8 dual cells and over the grid (render/ripples/tiles.comp)
+//   ray cast  per pixel: walls, ball, heightfield surface, shading (render/ripples/raycast.comp)
 // Raster renderer (the original, kept as the reference the tests compare against): caustics as
 // additive GL_POINTs, walls, ball and a displaced surface mesh drawn with the depth test
-// (ripples_view3d_raster.cpp). Both shade with the same shaders/render/ripples_shading.glsl.
+// (ripples_view3d_raster.cpp). Both shade with the same shaders/render/ripples/shading.glsl.
 #pragma once
 
 #include "base/param.h"

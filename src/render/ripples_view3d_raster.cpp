@@ -10,7 +10,7 @@ namespace tidepool {
 void RipplesView3D::rasterise(const ripples::Ripples& model, RenderTarget& target, const glm::mat4& viewProj) {
   const ripples::Params& mp = model.params();
   target.bind();
-  glClearColor(0.07f, 0.08f, 0.1f, 1.0f);  // kBackground in ripples_shading.glsl
+  glClearColor(0.07f, 0.08f, 0.1f, 1.0f);  // kBackground in render/ripples/shading.glsl
   glClearDepth(1.0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glEnable(GL_DEPTH_TEST);
@@ -18,13 +18,13 @@ void RipplesView3D::rasterise(const ripples::Ripples& model, RenderTarget& targe
   glEnable(GL_CULL_FACE);
   glCullFace(GL_BACK);
   m_vao.bind();
-  gl::Program& walls = m_shaders.program({"render/ripples_walls.vert", "render/ripples_walls.frag"});
+  gl::Program& walls = m_shaders.program({"render/ripples/walls.vert", "render/ripples/walls.frag"});
   setShading(walls, model);
   walls.set("uViewProj", viewProj);
   walls.set("uWallTop", 2.0f * m_params.waterLevel);
   glDrawArrays(GL_TRIANGLES, 0, 24);
   if (const glm::vec4 b = ball(model); b.w > 0.0f) {
-    gl::Program& p = m_shaders.program({"render/sphere.vert", "render/sphere.frag"});
+    gl::Program& p = m_shaders.program({"render/ripples/sphere.vert", "render/ripples/sphere.frag"});
     p.use();
     p.set("uSegments", glm::ivec2(48, 24));
     p.set("uCentre", glm::vec3(b));
@@ -38,7 +38,7 @@ void RipplesView3D::rasterise(const ripples::Ripples& model, RenderTarget& targe
     glCullFace(GL_BACK);
   }
   glDisable(GL_CULL_FACE);  // the surface is seen from both sides at grazing angles
-  gl::Program& surface = m_shaders.program({"render/ripples_surface.vert", "render/ripples_surface.frag"});
+  gl::Program& surface = m_shaders.program({"render/ripples/surface.vert", "render/ripples/surface.frag"});
   setShading(surface, model);
   surface.set("uViewProj", viewProj);
   const glm::ivec2 mesh(m_params.meshCells,

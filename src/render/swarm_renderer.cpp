@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/swarm/bindings.glsl"
 #include "swarm/bindings.glsl"
 
 namespace tidepool {
@@ -50,7 +51,7 @@ void SwarmRenderer::colorFromImage(const sim::Swarm& swarm, const io::Image& ima
   texture.setWrap(GL_CLAMP_TO_EDGE);
   if (!m_colors || m_colors.size() != swarm.count() * 4) m_colors = gl::Buffer(swarm.count() * 4);
   m_colorCount = swarm.count();
-  gl::Program& p = m_shaders.program({"render/swarm_color_image.comp"}, storageDefine(swarm));
+  gl::Program& p = m_shaders.program({"render/swarm/color_image.comp"}, storageDefine(swarm));
   p.use();
   p.set("uCount", unsigned(swarm.count()));
   swarm.state().bindBase(GL_SHADER_STORAGE_BUFFER, SWARM_STATE_BINDING);
@@ -64,7 +65,7 @@ void SwarmRenderer::drawPoints(const sim::Swarm& swarm, const SwarmViewParams& v
                                bool accumulate) {
   const bool perParticle = view.colorMode == SwarmColorMode::Image && hasColors(swarm);
   const int mode = perParticle ? 1 : view.colorMode == SwarmColorMode::Velocity ? 2 : 0;
-  gl::Program& p = m_shaders.program({"render/swarm_points.vert", "render/swarm_points.frag"});
+  gl::Program& p = m_shaders.program({"render/swarm/points.vert", "render/swarm/points.frag"});
   p.use();
   p.set("uColorMode", mode);
   p.set("uColor", singleColor);
@@ -97,7 +98,7 @@ void SwarmRenderer::drawMarkers(std::span<const SwarmMarker> markers) {
   if (markers.empty()) return;
   std::vector<glm::vec4> packed;
   for (const SwarmMarker& m : markers) packed.emplace_back(m.ndc, m.strength, 0.0f);
-  gl::Program& p = m_shaders.program({"render/swarm_markers.vert", "render/swarm_markers.frag"});
+  gl::Program& p = m_shaders.program({"render/swarm/markers.vert", "render/swarm/markers.frag"});
   p.use();
   glProgramUniform4fv(p.id(), p.uniform("uMarkers[0]"), GLsizei(packed.size()), &packed[0].x);
   glEnable(GL_BLEND);
@@ -118,7 +119,7 @@ void SwarmRenderer::splatPoints(const sim::Swarm& swarm, const SwarmViewParams& 
     auto scope = profiler.scope("swarm.splat");
     if (m_splat.size() != bytes) m_splat = gl::Buffer(bytes);
     m_ops.fill(m_splat, 0);
-    gl::Program& p = m_shaders.program({"render/swarm_splat.comp"}, storageDefine(swarm));
+    gl::Program& p = m_shaders.program({"render/swarm/splat.comp"}, storageDefine(swarm));
     p.use();
     p.set("uCount", unsigned(swarm.count()));
     p.set("uSize", size);
@@ -133,7 +134,7 @@ void SwarmRenderer::splatPoints(const sim::Swarm& swarm, const SwarmViewParams& 
   auto scope = profiler.scope("swarm.resolve");
   target.bind();
   glDisable(GL_BLEND);
-  gl::Program& p = m_shaders.program({"render/fullscreen.vert", "render/swarm_splat_resolve.frag"});
+  gl::Program& p = m_shaders.program({"render/common/fullscreen.vert", "render/swarm/splat_resolve.frag"});
   p.use();
   p.set("uSize", size);
   p.set("uMode", !view.blend ? 1 : view.highQuality ? 2 : 0);
@@ -168,10 +169,10 @@ void SwarmRenderer::render(const sim::Swarm& swarm, const SwarmViewParams& view,
     auto scope = profiler.scope("swarm.tonemap");
     target.bind();
     glDisable(GL_BLEND);
-    gl::Program& p = m_shaders.program({"render/fullscreen.vert", "render/swarm_tonemap.frag"});
+    gl::Program& p = m_shaders.program({"render/common/fullscreen.vert", "render/swarm/tonemap.frag"});
     p.use();
     p.set("uOpacity", view.blend ? view.opacity : -1.0f);
-    m_accum.bind(0);
+    m_accum.bind(SWARM_VIEW_ACCUM_UNIT);
     m_empty.bind();
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);

@@ -3,13 +3,13 @@
 #include <algorithm>
 #include <string>
 
-#include "render/balls_bindings.glsl"
+#include "render/balls/bindings.glsl"
 
 namespace tidepool {
 
 void WaterBlur::pass(int axis, const gl::Texture2D& from, const gl::Texture2D& to, float pixelRadius,
                      float depthThreshold) {
-  gl::Program& program = m_shaders.program({"render/water_blur.comp"}, {{"AXIS", std::to_string(axis)}});
+  gl::Program& program = m_shaders.program({"render/balls/water_blur.comp"}, {{"AXIS", std::to_string(axis)}});
   program.use();
   program.set("uPixelRadius", pixelRadius);
   program.set("uDepthThreshold", depthThreshold);

@@ -1,5 +1,5 @@
 // Depth-aware separable Gaussian blur of the balls' G-buffer for the screen-space water mode:
-// two compute passes (rows, then columns; shaders/render/water_blur.comp) that each stage a run
+// two compute passes (rows, then columns; shaders/render/balls/water_blur.comp) that each stage a run
 // of texels plus an apron in shared memory. It smooths the depth, normals and thickness of
 // neighbouring balls into one surface while depth steps larger than a threshold stay sharp.
 #pragma once

@@ -28,34 +28,34 @@ uint32_t runWriter(Program& p) {
   return out.read<uint32_t>(1)[0];
 }
 
+// The message of the GlError that building w.comp (kWriter, then `more`) with `value` as
+// common/value.glsl throws; "" when it builds.
+std::string buildError(const std::string& value, const std::string& more = "") {
+  TempDir dir;
+  dir.write("w.comp", kWriter + more);
+  dir.write("common/value.glsl", value);
+  ShaderLibrary lib(dir.path());
+  try {
+    lib.program({"w.comp"});
+  } catch (const GlError& e) {
+    return e.what();
+  }
+  return "";
+}
+
 }  // namespace
 
 TEST_F(ShaderLibraryTest, CompileErrorInIncludedFileNamesThatFileAndLine) {
-  TempDir dir;
-  dir.write("w.comp", kWriter);
-  dir.write("common/value.glsl", "// value\n\nuint value() { return undeclared_thing; }\n");
-  ShaderLibrary lib(dir.path());
-  try {
-    lib.program({"w.comp"});
-    FAIL() << "expected a compile error";
-  } catch (const GlError& e) {
-    const std::string msg = e.what();
-    const std::string firstLine = msg.substr(0, msg.find('\n'));
-    EXPECT_NE(firstLine.find("'w.comp' failed to compile at common/value.glsl:3"), std::string::npos) << msg;
-  }
+  const std::string msg = buildError("// value\n\nuint value() { return undeclared_thing; }\n");
+  ASSERT_FALSE(msg.empty()) << "expected a compile error";
+  const std::string firstLine = msg.substr(0, msg.find('\n'));
+  EXPECT_NE(firstLine.find("'w.comp' failed to compile at common/value.glsl:3"), std::string::npos) << msg;
 }
 
 TEST_F(ShaderLibraryTest, ErrorInRootFileAfterAnIncludeKeepsItsLineNumber) {
-  TempDir dir;
-  dir.write("w.comp", std::string(kWriter) + "\n\nvoid broken() { nope(); }\n");  // line 8
-  dir.write("common/value.glsl", "uint value() { return 7u; }\n");
-  ShaderLibrary lib(dir.path());
-  try {
-    lib.program({"w.comp"});
-    FAIL() << "expected a compile error";
-  } catch (const GlError& e) {
-    EXPECT_NE(std::string(e.what()).find("at w.comp:8"), std::string::npos) << e.what();
-  }
+  const std::string msg = buildError("uint value() { return 7u; }\n", "\n\nvoid broken() { nope(); }\n");  // line 8
+  ASSERT_FALSE(msg.empty()) << "expected a compile error";
+  EXPECT_NE(msg.find("at w.comp:8"), std::string::npos) << msg;
 }
 
 TEST_F(ShaderLibraryTest, DefinesAreInjectedAndCachedSeparately) {

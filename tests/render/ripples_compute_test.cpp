@@ -68,6 +68,22 @@ std::unique_ptr<ripples::Ripples> wavyPool(gl::ShaderLibrary& shaders, bool with
   return model;
 }
 
+// The wavy pool without and with the ball, each drawn into a `size` target by both renderers of a
+// fresh view (setUp tunes it) and compared; `name` names the images (name, name-ball).
+template <class View>
+void expectComputeMatchesRasterOnBothPools(gl::ShaderLibrary& shaders, const std::string& name, glm::ivec2 size,
+                                           void (*setUp)(View&)) {
+  gl::GpuProfiler profiler;
+  for (const bool withBall : {false, true}) {
+    const auto pool = wavyPool(shaders, withBall, profiler);
+    View view(shaders);
+    setUp(view);
+    RenderTarget target(size.x, size.y);
+    expectComputeMatchesRaster(withBall ? name + "-ball" : name, view, *pool, target, profiler);
+  }
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
 std::vector<float> lightOf(const RipplesView3D& view) {
   std::vector<float> light(std::size_t(view.caustics().width()) * view.caustics().height());
   view.caustics().download(GL_RED, GL_FLOAT, light.data());
@@ -77,15 +93,7 @@ std::vector<float> lightOf(const RipplesView3D& view) {
 }  // namespace
 
 TEST_F(RipplesCompute, TopViewMatchesTheRasterView) {
-  gl::GpuProfiler profiler;
-  for (const bool withBall : {false, true}) {
-    const auto pool = wavyPool(shaders(), withBall, profiler);
-    const ripples::Ripples& model = *pool;
-    RipplesView view(shaders());
-    RenderTarget target(200, 120);
-    expectComputeMatchesRaster(withBall ? "ripples-2d-ball" : "ripples-2d", view, model, target, profiler);
-  }
-  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  expectComputeMatchesRasterOnBothPools<RipplesView>(shaders(), "ripples-2d", {200, 120}, [](RipplesView&) {});
 }
 
 TEST_F(RipplesCompute, CausticsSplatLandsLikeThePoints) {
@@ -125,17 +133,10 @@ TEST_F(RipplesCompute, CausticsSplatLandsLikeThePoints) {
 }
 
 TEST_F(RipplesCompute, TankViewMatchesTheRasterView) {
-  gl::GpuProfiler profiler;
-  for (const bool withBall : {false, true}) {
-    const auto pool = wavyPool(shaders(), withBall, profiler);
-    const ripples::Ripples& model = *pool;
-    RipplesView3D view(shaders());
+  expectComputeMatchesRasterOnBothPools<RipplesView3D>(shaders(), "ripples-3d", {240, 160}, [](RipplesView3D& view) {
     view.params().lightGrid = 256;
     view.params().causticsSize = 128;
-    RenderTarget target(240, 160);
-    expectComputeMatchesRaster(withBall ? "ripples-3d-ball" : "ripples-3d", view, model, target, profiler);
-  }
-  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  });
 }
 
 TEST_F(RipplesCompute, TankViewFromOtherAnglesMatchesTheRasterView) {

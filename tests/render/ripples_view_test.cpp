@@ -26,6 +26,12 @@ std::vector<float> causticsOf(RipplesView3D& view) {
   return light;
 }
 
+// A drop of `radius` (grid units) at (x, y), spread for `frames` frames of 1/60 s.
+void dropAndWait(ripples::Ripples& model, float x, float y, float radius, int frames, gl::GpuProfiler& profiler) {
+  model.touch(x, y, radius, -0.05f);
+  for (int i = 0; i < frames; ++i) model.step(1.0 / 60, profiler);
+}
+
 int distinctColours(const std::vector<uint8_t>& rgba) {
   std::vector<uint32_t> c;
   for (std::size_t i = 0; i < rgba.size(); i += 4) c.push_back(rgba[i] | rgba[i + 1] << 8 | rgba[i + 2] << 16);
@@ -55,9 +61,8 @@ TEST_F(RipplesViews, FlatWaterLightsTheFloorEvenly) {
 
 TEST_F(RipplesViews, WavesFocusLightWithoutCreatingOrLosingIt) {
   ripples::Ripples model(shaders(), smallPool());
-  model.touch(0.5f, 0.5f, 0.2f, -0.05f);
   gl::GpuProfiler profiler;
-  for (int i = 0; i < 20; ++i) model.step(1.0 / 60, profiler);
+  dropAndWait(model, 0.5f, 0.5f, 0.2f, 20, profiler);
   RenderTarget target(64, 48);
   for (const RipplesRenderer renderer : {RipplesRenderer::Compute, RipplesRenderer::Raster}) {
     RipplesView3D view(shaders());
@@ -76,9 +81,8 @@ TEST_F(RipplesViews, WavesFocusLightWithoutCreatingOrLosingIt) {
 
 TEST_F(RipplesViews, BothViewsDrawTheWaterNotAFlatColour) {
   ripples::Ripples model(shaders(), smallPool());
-  model.touch(0.4f, 0.5f, 0.15f, -0.05f);
   gl::GpuProfiler profiler;
-  for (int i = 0; i < 10; ++i) model.step(1.0 / 60, profiler);
+  dropAndWait(model, 0.4f, 0.5f, 0.15f, 10, profiler);
   RenderTarget target(96, 64);
   RipplesView top(shaders());
   top.render(model, target, profiler);

@@ -1,0 +1,12 @@
+#version 430 core
+// Glossy ball (render/ripples/ball_shading.glsl).
+#include "render/ripples/ball_shading.glsl"
+
+uniform vec3 uColor;   // linear RGB
+uniform vec3 uSunDir;  // towards the sun
+uniform vec3 uEye;
+in vec3 vNormal;
+in vec3 vWorld;
+out vec4 fragColor;
+
+void main() { fragColor = vec4(ballColor(uColor, normalize(vNormal), normalize(uEye - vWorld), uSunDir), 1.0); }
