@@ -1,5 +1,5 @@
-// Binding points of the balls model, shared by C++ (src/sim/balls) and GLSL. At most 8 storage
-// blocks per kernel (GL 4.3's guaranteed minimum).
+// Binding points and the work-group size of the balls model, shared by C++ (src/sim/balls) and
+// GLSL: only #define lines. At most 8 storage blocks per kernel (GL 4.3's guaranteed minimum).
 #define BALLS_POS_IN 0         // vec4 (position m, w = 1), cell order
 #define BALLS_VEL_IN 1         // vec4 (velocity m/s, w = foam), cell order
 #define BALLS_POS_OUT 2        // vec4, written
@@ -10,4 +10,5 @@
 #define BALLS_OBST_CELL_START 7  // uint per obstacle-grid cell + 1
 #define BALLS_OBST_POSES 0     // uniform block (std140): each obstacle's pose and velocity (obstacle_poses.glsl)
 #define BALLS_MAX_OBSTACLES 16
-#define BALLS_STATS 2          // stats pass: 8 floats of partial sums per work group (reuses POS_OUT)
+#define BALLS_STATS 2          // stats pass: BALLS_STATS_VALUES floats per work group (stats_layout.glsl; reuses POS_OUT)
+#define BALLS_GROUP_SIZE 128   // local size of every balls kernel (one ball per invocation)

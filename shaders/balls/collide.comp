@@ -4,7 +4,7 @@
 // Reads the cell-ordered arrays, writes the other buffers (no read/write hazard between balls).
 #include "balls/bindings.glsl"
 
-layout(local_size_x = 128) in;
+layout(local_size_x = BALLS_GROUP_SIZE) in;
 #include "common/index.glsl"
 
 layout(std430, binding = BALLS_POS_IN) readonly buffer PosIn { vec4 posIn[]; };

@@ -45,7 +45,7 @@ vec3 wallAccel(vec3 n, float overlap, vec3 relVel) {
 #if defined(CONTACT_PENALTY)
   return 2.0 * overlap / uDt * n;
 #elif defined(CONTACT_CUDA)
-  return vec3(0.0);  // the CUDA sample clamps at the walls instead (see integrate)
+  return vec3(0.0);  // the CUDA sample clamps at the walls instead (confineToDomain, walls.glsl)
 #else
   return contactAccel(n, overlap, relVel, 1.0, 1.0);
 #endif

@@ -3,7 +3,7 @@
 // The force-and-kick half is collide.comp with INTEGRATOR_VERLET.
 #include "balls/bindings.glsl"
 
-layout(local_size_x = 128) in;
+layout(local_size_x = BALLS_GROUP_SIZE) in;
 #include "common/index.glsl"
 
 layout(std430, binding = BALLS_POS_OUT) buffer Pos { vec4 pos[]; };

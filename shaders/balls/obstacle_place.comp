@@ -3,7 +3,7 @@
 // a particle of obstacle k (w) at own-frame position b. The obstacle grid is built from the result.
 #include "balls/bindings.glsl"
 
-layout(local_size_x = 128) in;
+layout(local_size_x = BALLS_GROUP_SIZE) in;
 #include "common/index.glsl"
 
 layout(std430, binding = BALLS_POS_IN) readonly buffer Body { vec4 body[]; };     // own frame, w = k

@@ -1,18 +1,15 @@
 #version 430 core
-// Live statistics and probes of the balls, reduced per work group (the CPU adds the groups):
-//   [0] kinetic energy Σ ½|v|² (per unit mass)   [1] potential energy Σ −g·(x − domain min)
-//   [2] Σ overlap / r over contacts (each pair seen from both sides)   [3] contacts
-//   [4] max overlap / r   [5] max speed   [6] non-finite balls   [7] balls outside the walls
-//   [8] surge front: largest x of balls within 2r of the floor (−inf when none)
-//   [9] column height: largest z of balls within 2r of the back (x min) wall (−inf when none)
+// Live statistics and probes of the balls, reduced per work group (the CPU adds the groups): the
+// BALLS_STATS_VALUES floats of balls/stats_layout.glsl, sums and maxima, for each work group.
 #include "balls/bindings.glsl"
+#include "balls/stats_layout.glsl"
 
-layout(local_size_x = 128) in;
+layout(local_size_x = BALLS_GROUP_SIZE) in;
 #include "common/index.glsl"
 
 layout(std430, binding = BALLS_POS_IN) readonly buffer PosIn { vec4 posIn[]; };
 layout(std430, binding = BALLS_VEL_IN) readonly buffer VelIn { vec4 velIn[]; };
-layout(std430, binding = BALLS_STATS) writeonly buffer Stats { float partials[]; };  // 10 per group
+layout(std430, binding = BALLS_STATS) writeonly buffer Stats { float partials[]; };  // BALLS_STATS_VALUES per group
 
 float gMaxOverlap, gSumOverlap, gContacts;
 void onContact(vec3 n, float overlap, vec3 otherVelocity, float massRatio, float share) {
@@ -29,42 +26,49 @@ uniform vec3 uDomainMin;
 uniform vec3 uWallMin;
 uniform vec3 uWallMax;
 
-const uint kGroup = 128u;
-const int kValues = 10;
-shared float sValues[kValues][128];
+const int kValues = BALLS_STATS_VALUES;
+shared float sValues[kValues][BALLS_GROUP_SIZE];
+
+bool reducedByMax(int k) {
+  return k == BALLS_STATS_MAX_OVERLAP || k == BALLS_STATS_MAX_SPEED || k == BALLS_STATS_FRONT ||
+         k == BALLS_STATS_BACK_HEIGHT;
+}
 
 void main() {
   const uint i = globalIndex();
   const uint t = gl_LocalInvocationIndex;
   const float kNone = -3.0e38;
-  float values[kValues] = float[kValues](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, kNone, kNone);
+  float values[kValues];
+  for (int k = 0; k < kValues; ++k) values[k] = 0.0;
+  values[BALLS_STATS_FRONT] = kNone;
+  values[BALLS_STATS_BACK_HEIGHT] = kNone;
   if (i < uCount) {
     const vec3 p = posIn[i].xyz, v = velIn[i].xyz;
     if (any(isnan(p)) || any(isinf(p)) || any(isnan(v)) || any(isinf(v))) {
-      values[6] = 1.0;
+      values[BALLS_STATS_NON_FINITE] = 1.0;
     } else {
       gMaxOverlap = 0.0;
       gSumOverlap = 0.0;
       gContacts = 0.0;
       forEachContact(p);
-      values[0] = 0.5 * dot(v, v);
-      values[1] = -dot(uGravity, p - uDomainMin);
-      values[2] = gSumOverlap / uRadius;
-      values[3] = gContacts;
-      values[4] = gMaxOverlap / uRadius;
-      values[5] = length(v);
-      values[7] = any(lessThan(p, uWallMin - 1e-6)) || any(greaterThan(p, uWallMax + 1e-6)) ? 1.0 : 0.0;
-      if (p.z < uWallMin.z + 2.0 * uRadius) values[8] = p.x;
-      if (p.x < uWallMin.x + 2.0 * uRadius) values[9] = p.z;
+      values[BALLS_STATS_KINETIC] = 0.5 * dot(v, v);
+      values[BALLS_STATS_POTENTIAL] = -dot(uGravity, p - uDomainMin);
+      values[BALLS_STATS_OVERLAP] = gSumOverlap / uRadius;
+      values[BALLS_STATS_CONTACTS] = gContacts;
+      values[BALLS_STATS_MAX_OVERLAP] = gMaxOverlap / uRadius;
+      values[BALLS_STATS_MAX_SPEED] = length(v);
+      values[BALLS_STATS_OUTSIDE] = any(lessThan(p, uWallMin - 1e-6)) || any(greaterThan(p, uWallMax + 1e-6)) ? 1.0 : 0.0;
+      if (p.z < uWallMin.z + 2.0 * uRadius) values[BALLS_STATS_FRONT] = p.x;
+      if (p.x < uWallMin.x + 2.0 * uRadius) values[BALLS_STATS_BACK_HEIGHT] = p.z;
     }
   }
   for (int k = 0; k < kValues; ++k) sValues[k][t] = values[k];
   barrier();
-  for (uint stride = kGroup / 2u; stride > 0u; stride /= 2u) {
+  for (uint stride = uint(BALLS_GROUP_SIZE) / 2u; stride > 0u; stride /= 2u) {
     if (t < stride)
       for (int k = 0; k < kValues; ++k) {
         const float other = sValues[k][t + stride];
-        sValues[k][t] = (k == 4 || k == 5 || k >= 8) ? max(sValues[k][t], other) : sValues[k][t] + other;
+        sValues[k][t] = reducedByMax(k) ? max(sValues[k][t], other) : sValues[k][t] + other;
       }
     barrier();
   }

@@ -5,7 +5,6 @@
 #define LIFE_CELL_START 4  // the grid's cellStart (uint per cell + 1)
 #define LIFE_GROUP_PAIRS 5  // uint per work group: candidate pairs examined (benchmark variant only)
 #define LIFE_SPECIES_COLORS 6  // vec4 per species: linear RGB + 1 (read by the renderer)
-#define LIFE_HEALTH 7  // 4 uints: the divergence watch's reduction (health.comp)
 #define LIFE_FORCES_GROUP 64  // work-group size of forces.comp
 #define LIFE_MAX_SPECIES 20  // kMaxSpecies: the force table lives in shared memory
 #define LIFE_BRUTE_TILE 256  // work-group size and shared-memory tile of forces_brute.comp

@@ -5,7 +5,7 @@
 //   After Ten Minute Physics #20 (height-field water with bodies, coupling alpha = 0.5).
 #include "ripples/bindings.glsl"
 
-layout(local_size_x = 16, local_size_y = 16) in;
+layout(local_size_x = RIPPLES_TILE, local_size_y = RIPPLES_TILE) in;
 #include "ripples/cells.glsl"
 
 layout(std430, binding = RIPPLES_STATE_OUT) buffer State { vec2 state[]; };

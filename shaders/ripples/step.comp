@@ -9,7 +9,7 @@
 // (coalesced) and 64 of them one apron cell each (the stencil never reads the tile's corners).
 #include "ripples/bindings.glsl"
 
-layout(local_size_x = 16, local_size_y = 16) in;
+layout(local_size_x = RIPPLES_TILE, local_size_y = RIPPLES_TILE) in;
 #include "ripples/cells.glsl"
 
 layout(std430, binding = RIPPLES_STATE_IN) readonly buffer StateIn { vec2 stateIn[]; };

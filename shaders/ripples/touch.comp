@@ -3,7 +3,7 @@
 //   h += depth · (cos(π·r/radius) + 1)/2  for r ≤ radius (r in cells, aspect-correct).
 #include "ripples/bindings.glsl"
 
-layout(local_size_x = 16, local_size_y = 16) in;
+layout(local_size_x = RIPPLES_TILE, local_size_y = RIPPLES_TILE) in;
 #include "ripples/cells.glsl"
 
 layout(std430, binding = RIPPLES_STATE_OUT) buffer State { vec2 state[]; };

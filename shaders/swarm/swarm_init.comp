@@ -1,9 +1,9 @@
 #version 430 core
 // Swarm reset: positions uniform in the NDC box [-1,1]^2 from a hash of (index, seed); v = 0.
-layout(local_size_x = 256) in;
+#include "swarm/bindings.glsl"
+layout(local_size_x = SWARM_WORK_GROUP) in;
 #include "common/index.glsl"
 #include "common/random.glsl"
-#include "swarm/bindings.glsl"
 #include "swarm/state.glsl"
 
 uniform uint uCount;

@@ -4,9 +4,9 @@
 // The state is read and written once: the step is bound by memory bandwidth, so RK4's four
 // force evaluations cost little. Physics in world units x = pos * uAspect; friction is applied
 // as the exact decay exp(-friction dt) after the conservative step (operator splitting).
-layout(local_size_x = 256) in;
-#include "common/index.glsl"
 #include "swarm/bindings.glsl"
+layout(local_size_x = SWARM_WORK_GROUP) in;
+#include "common/index.glsl"
 #include "swarm/state.glsl"
 #include "swarm/force.glsl"
 

@@ -34,18 +34,18 @@ void visitAll(ParamVisitor& v, balls::Params& model, ViewSettings& view) {
   }
 }
 
-class BallsStage final : public Stage {
+class BallsStage final : public ModelStage<balls::Balls> {
  public:
   BallsStage(gl::ShaderLibrary& shaders, const balls::Params& model, const ViewSettings& view)
-      : m_model(shaders, model), m_view(shaders), m_settings(view) {}
+      : ModelStage(shaders, model), m_view(shaders), m_settings(view) {}
 
   void visitParams(ParamVisitor& v) override { visitAll(v, m_model.params(), m_settings); }
   void reset() override {
-    m_model.reset();
+    ModelStage::reset();
     m_frames = 0;
   }
-  void step(double, gl::GpuProfiler& profiler) override {
-    m_model.step(profiler);
+  void step(double frameSeconds, gl::GpuProfiler& profiler) override {
+    ModelStage::step(frameSeconds, profiler);
     if (m_frames++ % kStatsInterval == 0) m_stats = m_model.stats();
   }
   void render(RenderTarget& target, gl::GpuProfiler& profiler) override {
@@ -77,25 +77,17 @@ class BallsStage final : public Stage {
     p.obstacles.push_back(o);
     return true;
   }
-  double simTime() const override { return m_model.time(); }
-  std::optional<DivergenceReport> divergence() const override { return m_model.divergence(); }
-  bool recover() override { return m_model.recover(); }
-  void flushChecks() override { m_model.flushChecks(); }
   std::pair<std::string, double> liveMetric() const override {
     return {"max overlap (% of r)", m_frames > 0 ? 100.0 * m_stats.maxOverlap : NAN};
   }
   std::string status() const override {
-    char buf[256];
-    std::snprintf(buf, sizeof buf,
-                  "%zu balls + %zu fixed, r = %.4g m; KE %.4g, PE %.4g; overlap max %.1f%% mean %.2f%% of r",
-                  m_model.count(), m_model.obstacleCount(), m_model.radius(), m_stats.kinetic, m_stats.potential,
-                  100.0 * m_stats.maxOverlap, 100.0 * m_stats.meanOverlap);
-    // A refused obstacle edit (a missing or open mesh) stays in view until the next edit.
-    return m_model.obstacleError().empty() ? std::string(buf) : m_model.obstacleError() + "\n" + buf;
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "; KE %.4g, PE %.4g; overlap max %.1f%% mean %.2f%% of r", m_stats.kinetic,
+                  m_stats.potential, 100.0 * m_stats.maxOverlap, 100.0 * m_stats.meanOverlap);
+    return m_model.status() + buf;
   }
 
  private:
-  balls::Balls m_model;
   BallsView m_view;
   ViewSettings m_settings;
   balls::Stats m_stats;

@@ -96,11 +96,11 @@ life::Rules resolveRules(const std::string& text, const std::string& where) {
   }
 }
 
-class LifeStage final : public Stage {
+class LifeStage final : public ModelStage<life::Life> {
  public:
   LifeStage(gl::ShaderLibrary& shaders, const life::Rules& rules, const Setup& setup, const life::Params& params,
             const ViewSettings& view)
-      : m_model(shaders, rules, params), m_view(shaders), m_setup(setup), m_applied(setup), m_settings(view) {
+      : ModelStage(shaders, rules, params), m_view(shaders), m_setup(setup), m_applied(setup), m_settings(view) {
     m_shareCode = life::encodeShareCode(rules);
   }
 
@@ -123,10 +123,9 @@ class LifeStage final : public Stage {
       v.endGroup();
     }
   }
-  void reset() override { m_model.reset(); }
   void step(double frameSeconds, gl::GpuProfiler& profiler) override {
     applySetup();
-    m_model.step(frameSeconds, profiler);
+    ModelStage::step(frameSeconds, profiler);
   }
   void render(RenderTarget& target, gl::GpuProfiler& profiler) override {
     applySetup();
@@ -182,11 +181,6 @@ class LifeStage final : public Stage {
     }
     return true;
   }
-  double simTime() const override { return m_model.time(); }
-  std::optional<DivergenceReport> divergence() const override { return m_model.divergence(); }
-  bool recover() override { return m_model.recover(); }
-  void flushChecks() override { m_model.flushChecks(); }
-  std::string status() const override { return m_model.status(); }
   std::string shareText() const override { return m_shareCode; }
 
  private:
@@ -217,7 +211,6 @@ class LifeStage final : public Stage {
     m_applied = m_setup;
   }
 
-  life::Life m_model;
   LifeView m_view;
   Setup m_setup, m_applied;
   ViewSettings m_settings;

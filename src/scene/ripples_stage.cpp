@@ -39,11 +39,11 @@ struct Drop {
   float time = 0, x = 0.5f, y = 0.5f, radius = 0.05f, depth = -0.05f;
 };
 
-class RipplesStage final : public Stage {
+class RipplesStage final : public ModelStage<ripples::Ripples> {
  public:
   RipplesStage(gl::ShaderLibrary& shaders, const ripples::Params& model, const ViewSettings& view,
                std::vector<Drop> drops)
-      : m_model(shaders, model), m_view2d(shaders), m_view3d(shaders), m_view(view), m_drops(std::move(drops)) {
+      : ModelStage(shaders, model), m_view2d(shaders), m_view3d(shaders), m_view(view), m_drops(std::move(drops)) {
     reset();
   }
 
@@ -55,7 +55,7 @@ class RipplesStage final : public Stage {
     }
   }
   void reset() override {
-    m_model.reset();
+    ModelStage::reset();
     m_nextDrop = 0;
   }
   void step(double frameSeconds, gl::GpuProfiler& profiler) override {
@@ -63,7 +63,7 @@ class RipplesStage final : public Stage {
       const Drop& d = m_drops[m_nextDrop];
       m_model.touch(d.x, d.y, d.radius, d.depth);
     }
-    m_model.step(frameSeconds, profiler);
+    ModelStage::step(frameSeconds, profiler);
   }
   void render(RenderTarget& target, gl::GpuProfiler& profiler) override {
     syncViews();
@@ -94,12 +94,7 @@ class RipplesStage final : public Stage {
     m_model.touch(uv.x, uv.y, p.touchRadius, m_pressed ? 0.1f * p.touchDepth : p.touchDepth);
     m_pressed = true;
   }
-  double simTime() const override { return m_model.time(); }
-  std::string status() const override { return m_model.status(); }
-  std::optional<DivergenceReport> divergence() const override { return m_model.divergence(); }
-  bool recover() override { return m_model.recover(); }
   std::pair<std::string, double> liveMetric() const override { return {"max |h| (m)", m_model.lastMaxHeight()}; }
-  void flushChecks() override { m_model.flushChecks(); }
 
  private:
   // The UI edits m_view; the views take their copies before drawing.
@@ -109,7 +104,6 @@ class RipplesStage final : public Stage {
     m_view3d.camera().params() = m_view.camera;
   }
 
-  ripples::Ripples m_model;
   RipplesView m_view2d;
   RipplesView3D m_view3d;
   ViewSettings m_view;

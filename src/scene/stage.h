@@ -8,6 +8,8 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "base/input.h"
@@ -17,6 +19,7 @@
 #include "io/json.h"
 #include "render/target.h"
 #include "sim/divergence.h"
+#include "sim/model.h"
 
 namespace tidepool {
 
@@ -42,6 +45,29 @@ class Stage {
   virtual std::pair<std::string, double> liveMetric() const { return {"", NAN}; }
   virtual bool recover() { return false; }
   virtual void flushChecks() {}
+};
+
+// A stage whose model is a sim::Model (every model but blank): stepping, the clock, the status
+// line and the divergence watch go to the model; the stage adds its view, input and extras by
+// overriding (and calling ModelStage::step etc. for the model's part).
+template <class M>
+class ModelStage : public Stage {
+  static_assert(std::is_base_of_v<sim::Model, M>, "a ModelStage drives a sim::Model");
+
+ public:
+  void reset() override { m_model.reset(); }
+  void step(double frameSeconds, gl::GpuProfiler& profiler) override { m_model.step(frameSeconds, profiler); }
+  double simTime() const override { return m_model.time(); }
+  std::string status() const override { return m_model.status(); }
+  std::optional<DivergenceReport> divergence() const override { return m_model.divergence(); }
+  bool recover() override { return m_model.recover(); }
+  void flushChecks() override { m_model.flushChecks(); }
+
+ protected:
+  template <class... Args>
+  explicit ModelStage(Args&&... args) : m_model(std::forward<Args>(args)...) {}
+
+  M m_model;
 };
 
 struct ModelEntry {

@@ -1,7 +1,6 @@
 #include "scene/swarm_stage.h"
 
 #include <cmath>
-#include <cstdio>
 
 #include "base/log.h"
 #include "render/swarm_renderer.h"
@@ -26,51 +25,46 @@ io::Image loadSwarmImage(const std::string& nameOrPath) {
   return io::readPng(std::filesystem::exists(asset) ? asset : std::filesystem::path(nameOrPath));
 }
 
-class SwarmStage final : public Stage {
+class SwarmStage final : public ModelStage<sim::Swarm> {
  public:
   SwarmStage(const sim::SwarmParams& simParams, const SwarmViewParams& view, gl::ShaderLibrary& shaders)
-      : m_swarm(shaders, simParams), m_renderer(shaders), m_view(view) {}
+      : ModelStage(shaders, simParams), m_renderer(shaders), m_view(view) {}
 
-  void visitParams(ParamVisitor& v) override { visitAll(v, m_swarm.params(), m_view); }
+  void visitParams(ParamVisitor& v) override { visitAll(v, m_model.params(), m_view); }
 
   void reset() override {
     syncAllocation();
-    m_swarm.reset();
+    m_model.reset();
     m_coloredImage.clear();  // recoloured from the new start positions
   }
 
   void step(double frameSeconds, gl::GpuProfiler& profiler) override {
     syncAllocation();
     syncColors();
-    auto scope = profiler.scope("swarm.step");
-    const sim::SwarmParams& p = m_swarm.params();
-    const int substeps = sim::swarmSubsteps(p, frameSeconds);
-    const double dt = double(p.speed) * frameSeconds / substeps;
-    for (int s = 0; s < substeps; ++s) m_swarm.step(dt);
-    m_swarm.watch();
+    ModelStage::step(frameSeconds, profiler);
     m_clock += frameSeconds;
   }
 
   void render(RenderTarget& target, gl::GpuProfiler& profiler) override {
-    m_swarm.setAspect(double(target.width()) / target.height());
+    m_model.setAspect(double(target.width()) / target.height());
     syncAllocation();
     syncColors();
     std::vector<SwarmMarker> markers;
-    const glm::dvec2 toNdc(1.0 / m_swarm.aspect(), 1.0);
-    for (const sim::Attractor& a : m_swarm.attractorsAt(m_swarm.time()))
+    const glm::dvec2 toNdc(1.0 / m_model.aspect(), 1.0);
+    for (const sim::Attractor& a : m_model.attractorsAt(m_model.time()))
       markers.push_back({glm::vec2(a.pos * toNdc), float(a.strength)});
     const glm::vec3 color = m_view.autoHue ? swarmHue(m_clock / 60.0) : m_view.color;
-    m_renderer.render(m_swarm, m_view, color, markers, target, profiler);
+    m_renderer.render(m_model, m_view, color, markers, target, profiler);
   }
 
   void input(const Input& in) override {
     if (!in.left) {
-      m_swarm.setMouse(std::nullopt);
+      m_model.setMouse(std::nullopt);
       return;
     }
     const glm::dvec2 ndc(2.0 * in.cursor.x / std::max(in.viewport.x, 1) - 1.0,
                          1.0 - 2.0 * in.cursor.y / std::max(in.viewport.y, 1));
-    m_swarm.setMouse(ndc * glm::dvec2(m_swarm.aspect(), 1.0));
+    m_model.setMouse(ndc * glm::dvec2(m_model.aspect(), 1.0));
   }
 
   bool dropFile(const std::string& path) override {
@@ -80,46 +74,37 @@ class SwarmStage final : public Stage {
     return true;
   }
 
-  double simTime() const override { return m_swarm.time(); }
-  std::optional<DivergenceReport> divergence() const override { return m_swarm.divergence(); }
-  bool recover() override { return m_swarm.recover(); }
-  void flushChecks() override { m_swarm.flushChecks(); }
-
   std::string status() const override {
-    char buf[160];
-    std::snprintf(buf, sizeof buf, "%zu particles, %s, %s, %.0f MiB state", m_swarm.count(),
-                  sim::kStorageNames[std::size_t(m_swarm.storage())],
-                  sim::kIntegratorNames[std::size_t(m_swarm.params().integrator)], m_swarm.stateBytes() / 1048576.0);
-    return m_warning.empty() ? buf : std::string(buf) + "\n" + m_warning;
+    return m_warning.empty() ? m_model.status() : m_model.status() + "\n" + m_warning;
   }
 
  private:
   // Count and storage changes (UI, scene) re-allocate; a request that does not fit is refused
   // with the message in the status line, keeping the current particles.
   void syncAllocation() {
-    sim::SwarmParams& p = m_swarm.params();
-    if (std::size_t(p.particles) == m_swarm.count() && p.storage == m_swarm.storage()) return;
+    sim::SwarmParams& p = m_model.params();
+    if (std::size_t(p.particles) == m_model.count() && p.storage == m_model.storage()) return;
     try {
-      m_swarm.reset();
+      m_model.reset();
       m_coloredImage.clear();
       m_warning.clear();
     } catch (const Error& e) {
       m_warning = e.what();
       log::error(m_warning);
-      p.particles = int(m_swarm.count());
-      p.storage = m_swarm.storage();
+      p.particles = int(m_model.count());
+      p.storage = m_model.storage();
     }
   }
 
   // Image colours mark where each particle started: a new image restarts the swarm (as the seed does).
   void syncColors() {
     if (m_view.colorMode != SwarmColorMode::Image) return;
-    if (m_coloredImage == m_view.image && m_renderer.hasColors(m_swarm)) return;
+    if (m_coloredImage == m_view.image && m_renderer.hasColors(m_model)) return;
     m_coloredImage = m_view.image;
     try {
       const io::Image image = loadSwarmImage(m_view.image);
-      if (m_swarm.time() > 0.0) m_swarm.reset();
-      m_renderer.colorFromImage(m_swarm, image);
+      if (m_model.time() > 0.0) m_model.reset();
+      m_renderer.colorFromImage(m_model, image);
       m_warning.clear();
     } catch (const Error& e) {
       m_warning = e.what();
@@ -127,7 +112,6 @@ class SwarmStage final : public Stage {
     }
   }
 
-  sim::Swarm m_swarm;
   SwarmRenderer m_renderer;
   SwarmViewParams m_view;
   std::string m_coloredImage;  // image the colour buffer was made from

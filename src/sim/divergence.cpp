@@ -3,20 +3,9 @@
 #include <cstdio>
 #include <cstring>
 
-namespace tidepool {
-namespace {
-CheckCycle::Words words(const std::vector<std::byte>& bytes) {
-  CheckCycle::Words w{};
-  std::memcpy(w.data(), bytes.data(), std::min(bytes.size(), sizeof w));
-  return w;
-}
-}  // namespace
+#include "common/health_layout.glsl"
 
-float healthFloat(std::uint32_t word) {
-  float value = 0;
-  std::memcpy(&value, &word, sizeof value);
-  return value;
-}
+namespace tidepool {
 
 DivergenceReport divergenceReport(const std::string& model, double time, const std::string& what,
                                   const std::string& method, bool hasGood) {
@@ -28,28 +17,112 @@ DivergenceReport divergenceReport(const std::string& model, double time, const s
       time};
 }
 
-void CheckCycle::frame(double time, bool allowed, const Judge& judge, const std::function<void()>& start,
-                       const gl::Buffer& health) {
-  std::vector<std::byte> bytes;
-  if (m_readback.poll(bytes)) judge(words(bytes), m_time);
-  if (m_readback.pending() || ++m_frames < m_interval || !allowed) return;
-  m_frames = 0;
-  start();
-  m_time = time;
-  m_readback.request(health, health.size());
+namespace sim {
+namespace {
+static_assert(std::tuple_size_v<DivergenceWatch::Words> == HEALTH_WORDS, "the words of common/health_layout.glsl");
+
+DivergenceWatch::Words words(const std::vector<std::byte>& bytes) {
+  DivergenceWatch::Words w{};
+  std::memcpy(w.data(), bytes.data(), std::min(bytes.size(), sizeof w));
+  return w;
+}
+}  // namespace
+
+std::optional<std::string> DivergenceWatch::nonFinite(const Words& w, const char* elements) {
+  if (w[HEALTH_NON_FINITE] == 0) return std::nullopt;
+  return std::to_string(w[HEALTH_NON_FINITE]) + " " + elements + " are NaN or infinite";
 }
 
-void CheckCycle::flush(const Judge& judge) {
+float DivergenceWatch::largest(const Words& w) {
+  float value = 0;  // the word holds the float's bits
+  std::memcpy(&value, &w[HEALTH_MAX_BITS], sizeof value);
+  return value;
+}
+
+std::uint32_t DivergenceWatch::flagged(const Words& w) { return w[HEALTH_FLAGGED]; }
+
+DivergenceWatch::DivergenceWatch(gl::ShaderLibrary& shaders, std::string model, std::size_t maxCopied, int interval)
+    : m_ops(shaders),
+      m_model(std::move(model)),
+      m_maxCopied(maxCopied),
+      m_interval(interval),
+      m_health(HEALTH_WORDS * sizeof(std::uint32_t)) {}
+
+void DivergenceWatch::frame(Subject& s) {
+  const StateStamp now = s.stamp();
+  const bool allowed = !m_report && now.count > 0;  // as the frame's steps left it, before any verdict
+  std::vector<std::byte> bytes;
+  if (m_readback.poll(bytes)) judge(s, words(bytes));
+  if (m_readback.pending() || ++m_frames < m_interval || !allowed) return;
+  m_frames = 0;
+  start(s, now);
+}
+
+void DivergenceWatch::start(Subject& s, const StateStamp& now) {
+  m_health.fillZero();
+  gl::Program& kernel = s.healthKernel();
+  kernel.set("uCount", GLuint(now.count));
+  m_health.bindBase(GL_SHADER_STORAGE_BUFFER, HEALTH_BINDING);
+  kernel.dispatchThreads(now.count);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  // The state this check judges, copied now: the buffers grow to the largest state seen.
+  m_pending.stamp = now;
+  m_pending.kept = now.count <= m_maxCopied;
+  if (m_pending.kept) {
+    const std::vector<StateBuffer> state = s.stateBuffers();
+    m_pending.buffers.resize(state.size());
+    m_pending.bytes.resize(state.size());
+    for (std::size_t k = 0; k < state.size(); ++k) {
+      gl::Buffer& copy = m_pending.buffers[k];
+      if (copy.size() < state[k].bytes) copy = gl::Buffer(state[k].bytes);
+      m_ops.copy(*state[k].buffer, copy, state[k].bytes);
+      m_pending.bytes[k] = state[k].bytes;
+    }
+  }
+  m_readback.request(m_health, m_health.size());
+}
+
+void DivergenceWatch::judge(Subject& s, const Words& w) {
+  const std::optional<std::string> what = s.unhealthy(w);
+  if (!what) {
+    std::swap(m_pending, m_good);
+    m_hasGood = m_good.kept;
+    return;
+  }
+  m_report = divergenceReport(m_model, m_pending.stamp.time, *what, s.method(), m_hasGood);
+}
+
+void DivergenceWatch::flush(Subject& s) {
   if (!m_readback.pending()) return;
   std::vector<std::byte> bytes;
   m_readback.wait(bytes);
-  judge(words(bytes), m_time);
+  judge(s, words(bytes));
 }
 
-void CheckCycle::restart() {
+bool DivergenceWatch::recover(Subject& s) {
+  if (!m_report || !m_hasGood) return false;
+  const std::vector<StateBuffer> state = s.stateBuffers();
+  for (std::size_t k = 0; k < m_good.buffers.size(); ++k)
+    m_ops.copy(m_good.buffers[k], *state[k].buffer, m_good.bytes[k]);
+  s.resume(m_good.stamp);
+  m_report.reset();
+  dropCheck();
+  return true;
+}
+
+void DivergenceWatch::restart() {
+  m_hasGood = false;
+  m_report.reset();
+  dropCheck();
+  m_pending = Copy();  // the copies are made again, at the new state's size
+  m_good = Copy();
+}
+
+void DivergenceWatch::dropCheck() {
   m_frames = 0;
   std::vector<std::byte> discard;
   m_readback.wait(discard);  // a check of the old state must not judge the new one
 }
 
+}  // namespace sim
 }  // namespace tidepool

@@ -1,33 +1,37 @@
-// Watching a simulation for divergence without stalling the GPU. A model reduces its state to a
-// few numbers on the GPU every few frames (NaN count, largest magnitudes) and hands them here
-// through an AsyncReadback; when they arrive one to two frames later they are judged. Healthy
-// results promote the state copied at that same moment to "last good state", so a blow-up can
-// be undone exactly.
+// Watching a simulation for divergence without stalling the GPU: one component serves every
+// model. Every few frames the model's health kernel reduces its state to four words on the GPU
+// (shaders/common/health.glsl: NaN count, largest magnitude, a flagged count) and the watch
+// copies the state buffers as they are at that moment ("pending"). The words come back one to two
+// frames later through an AsyncReadback and are judged: a healthy verdict promotes the pending
+// copies to "last good state"; a failed one becomes a report, and recover() puts the good copies
+// back so that the model resumes, with half its time step, exactly where it was judged good.
+//
+//   frame k:      reduce + copy (pending, t_k)     frame k+1/k+2: words back -> judged
+//     healthy:    good = pending (t_k)             failed: report "... by t = t_k ..."
+//     recover():  good copies -> the state buffers, the model takes t_k and halves its dt
+//
+// A model supplies only what it checks and how it words a failure (Subject): its state buffers,
+// its health kernel, the verdict on the words, its method; sim::Model (sim/model.h) wires it up.
 #pragma once
 
 #include <array>
 #include <cstdint>
-#include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "gl/async_readback.h"
+#include "gl/buffer.h"
+#include "gl/buffer_ops.h"
+#include "gl/program.h"
+#include "gl/shader_library.h"
 
 namespace tidepool {
-
-struct Health {
-  double time = 0;          // simulated seconds at the check
-  double nanCount = 0;      // non-finite values in the state
-  double maxMagnitude = 0;  // largest |value| of the watched quantity
-};
 
 struct DivergenceReport {
   std::string message;  // what failed, with method and time step, and what to do
   double time = 0;      // simulated seconds of the failed check
 };
-
-// A float the health reduction stored as its bits in one word (e.g. the largest speed).
-float healthFloat(std::uint32_t word);
 
 // The report of a failed check, worded alike for every model:
 //   "<model> diverged by t = <time> s: <what> (<method>); halve the time step and resume from the
@@ -35,27 +39,79 @@ float healthFloat(std::uint32_t word);
 DivergenceReport divergenceReport(const std::string& model, double time, const std::string& what,
                                   const std::string& method, bool hasGood);
 
-// The watch's timing, shared by the models: a check every `interval` frames, never two in flight,
-// none while `allowed` is false (after a divergence, with nothing to watch). A model's check
-// reduces its state into a health buffer whose first four 32-bit words come back here.
-class CheckCycle {
- public:
-  using Words = std::array<std::uint32_t, 4>;
-  using Judge = std::function<void(const Words& words, double time)>;  // time: of the state checked
+namespace sim {
 
-  explicit CheckCycle(int interval) : m_interval(interval) {}
-  // Once per frame: a finished check goes to judge(); then, when one is due, start() runs the
-  // model's reduction into `health` (and copies the state it judges) and the read-back begins.
-  void frame(double time, bool allowed, const Judge& judge, const std::function<void()>& start,
-             const gl::Buffer& health);
-  void flush(const Judge& judge);  // waits for the check in flight and judges it
-  void restart();                  // drops the check in flight (reset, recovery); counts from 0
-
- private:
-  gl::AsyncReadback m_readback;
-  double m_time = 0;  // of the state the check in flight judges
-  int m_interval;
-  int m_frames = 0;
+// One buffer of a model's state, by name: what a renderer reads, a check copies, a checkpoint saves.
+struct StateBuffer {
+  const char* name;    // "positions", "velocities", "state"
+  gl::Buffer* buffer;  // the live buffer (of double-buffered state: the current one)
+  std::size_t bytes;   // in use, from the start (the buffer may hold spare capacity)
 };
 
+// The scalars that go with a copy of the state buffers.
+struct StateStamp {
+  double time = 0;          // simulated s
+  std::size_t count = 0;    // particles or cells (what the health kernel checks)
+  std::uint64_t steps = 0;  // steps taken, for models that count them
+};
+
+class DivergenceWatch {
+ public:
+  using Words = std::array<std::uint32_t, 4>;  // indexed by HEALTH_* (common/health_layout.glsl)
+  // Reading the words: "<n> <elements> are NaN or infinite" (nullopt when none are), the largest
+  // watched magnitude (a speed, a height), the count the model flags.
+  static std::optional<std::string> nonFinite(const Words& words, const char* elements);
+  static float largest(const Words& words);
+  static std::uint32_t flagged(const Words& words);
+
+  // What a model supplies to its watch.
+  class Subject {
+   public:
+    virtual StateStamp stamp() const = 0;                 // now
+    virtual std::vector<StateBuffer> stateBuffers() = 0;  // what a check copies and recovery restores
+    // Its health.comp in use, with its state bound and its own uniforms set (the watch sets
+    // uCount and binds the words at HEALTH_BINDING, then dispatches one invocation per element).
+    virtual gl::Program& healthKernel() = 0;
+    virtual std::optional<std::string> unhealthy(const Words& words) = 0;  // what failed; nullopt: healthy
+    virtual std::string method() const = 0;                                // method and time step, for a report
+    virtual void resume(const StateStamp& good) = 0;  // after the copies are back: its clock, half its dt
+
+   protected:
+    ~Subject() = default;
+  };
+
+  // No copies of more than `maxCopied` elements (a blow-up is still reported, recovery refused).
+  DivergenceWatch(gl::ShaderLibrary& shaders, std::string model, std::size_t maxCopied, int interval = 8);
+
+  void frame(Subject& s);    // once per frame, after its steps: judges a check that came back, starts one when due
+  void flush(Subject& s);    // waits for the check in flight and judges it (end of a headless run, tests)
+  bool recover(Subject& s);  // back to the last good state (see above); false if nothing failed or none was kept
+  void restart();            // a new state (reset, upload): forgets the check in flight, the good state, the report
+  const std::optional<DivergenceReport>& report() const { return m_report; }
+
+ private:
+  // The state buffers copied at one check, and their stamp.
+  struct Copy {
+    std::vector<gl::Buffer> buffers;
+    std::vector<std::size_t> bytes;  // copied into each
+    StateStamp stamp;
+    bool kept = false;  // false: too large to copy
+  };
+  void start(Subject& s, const StateStamp& now);
+  void judge(Subject& s, const Words& words);
+  void dropCheck();  // waits out the check in flight without judging it; counts frames from 0
+
+  gl::BufferOps m_ops;
+  std::string m_model;
+  std::size_t m_maxCopied;
+  int m_interval;
+  int m_frames = 0;
+  gl::Buffer m_health;  // HEALTH_WORDS words
+  gl::AsyncReadback m_readback;
+  Copy m_pending, m_good;
+  bool m_hasGood = false;
+  std::optional<DivergenceReport> m_report;
+};
+
+}  // namespace sim
 }  // namespace tidepool

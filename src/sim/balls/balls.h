@@ -4,6 +4,10 @@
 // particles (shapes or voxelised triangle meshes, each moving rigidly: obstacles.h) complete the
 // scene. The model owns its buffers and passes; renderers read positions() / velocities() (foam
 // in velocity w) and obstacles() (bodies, poses, meshes).
+//
+// One step (stepOnce), a list of passes (balls_passes.cpp):
+//   symplectic / explicit Euler:  placeObstacles(t)      -> sortByCell -> collide (forces, integrate)
+//   velocity Verlet:              placeObstacles(t + dt) -> drift -> sortByCell -> collide (forces, kick)
 #pragma once
 
 #include <memory>
@@ -11,14 +15,13 @@
 #include <string>
 
 #include "gl/buffer.h"
-#include "gl/buffer_ops.h"
 #include "gl/gpu_profiler.h"
 #include "gl/shader_library.h"
 #include "grid/grid.h"
 #include "io/obj.h"
 #include "sim/balls/balls_params.h"
 #include "sim/balls/obstacles.h"
-#include "sim/divergence.h"
+#include "sim/model.h"
 
 namespace tidepool::balls {
 
@@ -37,32 +40,32 @@ struct Stats {
   double backHeight = 0;      // largest z of balls within 2r of the back (x min) wall, m (NaN: none)
 };
 
-class Balls {
+class Balls final : public sim::Model {
  public:
   Balls(gl::ShaderLibrary& shaders, const Params& params);  // throws Error (size, memory)
 
   Params& params() { return m_params; }  // engine edits apply at the next step
   const Params& params() const { return m_params; }
-  void reset();                          // particles from the parameters, t = 0
-  void step(gl::GpuProfiler& profiler);  // one frame: params().substeps steps
-  void stepOnce(gl::GpuProfiler* profiler = nullptr);
-  Stats stats();  // reduction on the GPU, read back (blocking)
+  // sim::Model. A frame is params().substeps steps of params().dt (frameSeconds is not used).
+  void reset() override;  // particles from the parameters, t = 0
+  void step(double frameSeconds, gl::GpuProfiler& profiler) override;
+  void step(gl::GpuProfiler& profiler) { step(0.0, profiler); }  // the same frame
+  double time() const override { return m_time; }
+  std::size_t count() const override { return m_count; }
+  std::string status() const override;                    // counts and radius (and a refused obstacle edit above them)
+  std::vector<sim::StateBuffer> stateBuffers() override;  // positions, velocities (m_count each)
 
-  std::size_t count() const { return m_count; }
+  void stepOnce(gl::GpuProfiler* profiler = nullptr);  // one step of params().dt
+  Stats stats();                                       // reduction on the GPU, read back (blocking)
+
   std::size_t obstacleCount() const { return m_obstacles.particles(); }  // fixed particles, all obstacles
   float radius() const { return m_radius; }                              // after lattice scaling
   glm::vec3 gravity() const;                                             // current, rotated with the domain
   glm::vec3 wallMin() const { return m_wallMin; }
   glm::vec3 wallMax() const { return m_wallMax; }
-  float domainRotation() const;  // radians about x
-  double time() const { return m_time; }
+  float domainRotation() const;                                       // radians about x
   std::size_t bytesPerBall() const;                                   // GPU memory per ball, grid included
   std::size_t cells() const { return m_grid ? m_grid->cells() : 0; }  // of the neighbour grid
-
-  // Divergence watch (sim/divergence.h): non-blocking checks every few frames (step()).
-  std::optional<DivergenceReport> divergence() const { return m_divergence; }
-  bool recover();             // back to the last good state with half the time step; false if none
-  void flushChecks();         // waits for the check in flight
   double speedBound() const;  // m/s: faster means more than 2r per step, balls can pass through each other
 
   const gl::Buffer& positions() const { return m_pos[m_posIndex]; }   // vec4 (m, w = 1)
@@ -79,24 +82,39 @@ class Balls {
   std::vector<GLuint> lastOrder() const;  // lastOrder()[k] = index before the step of ball k after it
 
  private:
+  // The divergence watch (sim::Model): NaN balls, balls outside the walls, speed above speedBound().
+  gl::Program& healthKernel() override;
+  std::optional<std::string> unhealthy(const sim::DivergenceWatch::Words& words) override;
+  std::string method() const override;
+  void resume(const sim::StateStamp& good) override;
+
+  // What a collide pass does after summing the accelerations (collide.comp).
+  enum class Collide {
+    Integrate,     // explicit or symplectic Euler: the whole step
+    VerletKick,    // velocity Verlet's second half: a(x + dt·v½), v += dt/2·a
+    VerletForces,  // a(x) alone, for the first drift of a run (or after a restore)
+  };
+
   void allocate(std::size_t count, std::size_t capacity);
-  void emitFromTap();  // appends a layer of balls when the jet has advanced one spacing
-  void watch();        // polls the check in flight, starts the next one
-  void judge(const GLuint values[4], double time);
-  CheckCycle::Judge judgeFn();  // judge() for the watch's CheckCycle
-  void updateWalls();
+  // The passes of stepOnce(), in order.
+  void updateWalls();       // the piston's wall positions and velocities at t
+  void rebuildObstacles();  // obstacles added, removed or reshaped since the last step
+  void emitFromTap();       // appends a layer of balls when the jet has advanced one spacing
+  void placeObstacles(double time, gl::GpuProfiler* profiler);  // their fixed particles, at `time`
+  void drift(gl::GpuProfiler* profiler);                        // Verlet: v½ = v + dt/2·a, x += dt·v½
+  void sortByCell(gl::GpuProfiler* profiler);             // grid count + scan, positions and velocities to cell order
+  void collide(gl::GpuProfiler* profiler, Collide what);  // contacts, walls, gravity on the sorted balls
   std::vector<gl::ShaderDefine> defines(bool verlet) const;
-  void bindCommon(gl::Program& p) const;
-  // Grid build + reorder, then the collide pass (Verlet: force and kick of `kick`·dt·a).
-  void gridAndCollide(gl::GpuProfiler* profiler, bool verlet, float kick);
+  gl::Program& useKernel(const char* file, bool verlet);  // in use, with the common uniforms set
 
   gl::ShaderLibrary& m_shaders;
-  gl::BufferOps m_ops;  // checkpoint copies of the divergence watch
   Params m_params;
   float m_radius = 0;
   std::size_t m_count = 0, m_capacity = 0;
   std::size_t m_tapEmitted = 0;
   double m_tapNextLayer = 0;  // simulated time of the next layer
+  // State: the current pos/vel are m_pos[m_posIndex] / m_vel[m_velIndex]; sortByCell writes the
+  // cell-ordered copies to the other ones, which collide reads.
   gl::Buffer m_pos[2], m_vel[2], m_acc, m_permutation, m_stats;
   int m_posIndex = 0, m_velIndex = 0;
   std::unique_ptr<grid::UniformGrid> m_grid;
@@ -105,13 +123,6 @@ class Balls {
   glm::vec3 m_wallMin{0.0f}, m_wallMax{1.0f}, m_wallMinVel{0.0f}, m_wallMaxVel{0.0f};
   double m_time = 0;
   bool m_trackOrder = false, m_accValid = false;
-  // Divergence watch: reduced values, the state copied at the check, the last state judged good.
-  gl::Buffer m_health, m_pendingPos, m_pendingVel, m_goodPos, m_goodVel;
-  CheckCycle m_checks{8};  // a check every 8 frames
-  double m_goodTime = 0;
-  std::size_t m_pendingCount = 0, m_goodCount = 0;
-  bool m_hasGood = false;
-  std::optional<DivergenceReport> m_divergence;
 };
 
 }  // namespace tidepool::balls

@@ -16,7 +16,7 @@ constexpr double kCellsPerStepBound = 10;  // the watch's speed bound, in grid c
 }  // namespace
 
 Life::Life(gl::ShaderLibrary& shaders, const Rules& rules, const Params& params)
-    : m_shaders(shaders), m_ops(shaders), m_params(params) {
+    : Model(shaders, "life", kMaxCheckpointParticles), m_shaders(shaders), m_params(params) {
   setRules(rules, true);
 }
 
@@ -71,8 +71,6 @@ void Life::allocate() {
   m_accel = gl::Buffer(m_count * sizeof(glm::vec2));
   m_accel.fillZero();
   m_groupPairs = gl::Buffer((m_count / LIFE_FORCES_GROUP + 1 + kMaxDispatchGroupsSpill) * sizeof(GLuint));
-  m_health = gl::Buffer(4 * sizeof(GLuint));
-  for (gl::Buffer* b : {&m_pendingPos, &m_pendingVel, &m_goodPos, &m_goodVel}) *b = gl::Buffer();  // made on use
 }
 
 void Life::uploadTable() {
@@ -116,9 +114,7 @@ void Life::upload(const std::vector<glm::vec4>& pos, const std::vector<glm::vec4
   }
   if (m_trackIds) resetIds();
   m_needAccel = true;
-  m_hasGood = false;  // a new state: nothing judged yet
-  m_divergence.reset();
-  m_checks.restart();
+  restartWatch();  // a new state: nothing judged yet
 }
 
 std::vector<glm::vec4> Life::downloadPositions() const {
@@ -259,69 +255,42 @@ double Life::speedBound() const {
   return kCellsPerStepBound * double(m_grid->params().cellSize) / double(m_lastDt > 0 ? m_lastDt : m_params.maxDt);
 }
 
-void Life::watch() {
-  m_checks.frame(
-      m_time, !m_divergence && m_count > 0, [this](const CheckCycle::Words& w, double time) { judge(w, time); },
-      [this] {
-        m_health.fillZero();
-        gl::Program& p = m_shaders.program({"life/health.comp"}, defines());
-        p.use();
-        p.set("uCount", GLuint(m_count));
-        positions().bindBase(GL_SHADER_STORAGE_BUFFER, LIFE_POSITIONS);
-        velocities().bindBase(GL_SHADER_STORAGE_BUFFER, LIFE_VELOCITIES);
-        m_health.bindBase(GL_SHADER_STORAGE_BUFFER, LIFE_HEALTH);
-        p.dispatchThreads(m_count);
-        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-        if (m_count <= kMaxCheckpointParticles) {
-          const std::size_t bytes = positions().size();
-          for (gl::Buffer* b : {&m_pendingPos, &m_pendingVel, &m_goodPos, &m_goodVel})
-            if (b->size() != bytes) *b = gl::Buffer(bytes);
-          m_ops.copy(positions(), m_pendingPos, bytes);
-          m_ops.copy(velocities(), m_pendingVel, velocities().size());
-        }
-        m_pendingSteps = m_steps;
-      },
-      m_health);
+std::vector<sim::StateBuffer> Life::stateBuffers() {
+  return {{"positions", &m_pos[m_current], m_pos[m_current].size()},
+          {"velocities", &m_vel[m_current], m_vel[m_current].size()}};
 }
 
-void Life::judge(const CheckCycle::Words& w, double time) {
-  const float maxSpeed = healthFloat(w[1]);
-  if (w[0] == 0 && maxSpeed <= speedBound()) {
-    std::swap(m_pendingPos, m_goodPos);
-    std::swap(m_pendingVel, m_goodVel);
-    m_goodTime = time;
-    m_goodSteps = m_pendingSteps;
-    m_hasGood = bool(m_goodPos);
-    return;
-  }
-  char what[200], method[160];
-  if (w[0] > 0)
-    std::snprintf(what, sizeof what, "%u particles are NaN or infinite", w[0]);
-  else
-    std::snprintf(what, sizeof what,
-                  "a particle moves at %.3g units/s, more than 10 grid cells per step (%.3g units/s)", double(maxSpeed),
-                  speedBound());
+gl::Program& Life::healthKernel() {
+  gl::Program& p = m_shaders.program({"life/health.comp"}, defines());
+  p.use();
+  positions().bindBase(GL_SHADER_STORAGE_BUFFER, LIFE_POSITIONS);
+  velocities().bindBase(GL_SHADER_STORAGE_BUFFER, LIFE_VELOCITIES);
+  return p;
+}
+
+std::optional<std::string> Life::unhealthy(const sim::DivergenceWatch::Words& w) {
+  if (auto what = sim::DivergenceWatch::nonFinite(w, "particles")) return what;
+  const float maxSpeed = sim::DivergenceWatch::largest(w);
+  if (maxSpeed <= speedBound()) return std::nullopt;
+  char what[200];
+  std::snprintf(what, sizeof what, "a particle moves at %.3g units/s, more than 10 grid cells per step (%.3g units/s)",
+                double(maxSpeed), speedBound());
+  return what;
+}
+
+std::string Life::method() const {
+  char method[160];
   std::snprintf(method, sizeof method, "%s, %s, dt = %.3g s", kIntegratorNames[int(m_params.integrator)],
                 kStorageNames[int(m_storage)], double(m_lastDt));
-  m_divergence = divergenceReport("life", time, what, method, m_hasGood);
+  return method;
 }
 
-bool Life::recover() {
-  if (!m_divergence || !m_hasGood) return false;
-  m_ops.copy(m_goodPos, m_pos[m_current], m_goodPos.size());
-  m_ops.copy(m_goodVel, m_vel[m_current], m_goodVel.size());
-  m_time = m_goodTime;
-  m_steps = m_goodSteps;
+void Life::resume(const sim::StateStamp& good) {
+  m_time = good.time;
+  m_steps = good.steps;
   m_needAccel = true;                                 // Verlet re-evaluates a(x) for the restored state
   m_params.maxDt = std::max(0.5f * m_lastDt, 1e-4f);  // each frame steps min(maxDt, frame): halve what ran
   m_lastDt = m_params.maxDt;
-  m_divergence.reset();
-  m_checks.restart();
-  return true;
-}
-
-void Life::flushChecks() {
-  m_checks.flush([this](const CheckCycle::Words& w, double time) { judge(w, time); });
 }
 
 std::uint64_t Life::countCandidatePairs() {

@@ -22,17 +22,16 @@
 #include <vector>
 
 #include "gl/buffer.h"
-#include "gl/buffer_ops.h"
 #include "gl/gpu_profiler.h"
 #include "gl/shader_library.h"
 #include "grid/grid.h"
-#include "sim/divergence.h"
 #include "sim/life/life_params.h"
 #include "sim/life/life_rules.h"
+#include "sim/model.h"
 
 namespace tidepool::life {
 
-class Life {
+class Life final : public sim::Model {
  public:
   Life(gl::ShaderLibrary& shaders, const Rules& rules, const Params& params = {});  // throws Error
 
@@ -43,10 +42,17 @@ class Life {
   // respawned when the count, box or species changed or `respawn` is set.
   void setRules(const Rules& rules, bool respawn = true);
 
-  void reset();                                               // the seed's initial particles
-  void step(double frameSeconds, gl::GpuProfiler& profiler);  // one step of min(maxDt, frame), then watch
-  void stepOnce(float dt);                                    // applies a storage change first
-  void computeForces() {                                      // at the current positions -> accelerations()
+  // sim::Model. A frame is one step of min(params().maxDt, frameSeconds).
+  void reset() override;  // the seed's initial particles
+  void step(double frameSeconds, gl::GpuProfiler& profiler) override;
+  double time() const override { return m_time; }
+  std::size_t count() const override { return m_count; }
+  std::string status() const override;
+  std::uint64_t stepCount() const override { return m_steps; }
+  std::vector<sim::StateBuffer> stateBuffers() override;  // positions, velocities (see storage())
+
+  void stepOnce(float dt);  // applies a storage change first
+  void computeForces() {    // at the current positions -> accelerations()
     sortByCell();
     evaluateForces();
   }
@@ -55,7 +61,6 @@ class Life {
   // Mouse brush for the next step: velocity (world units/s) added with a Gaussian of `radius`.
   void push(glm::vec2 point, glm::vec2 velocity, float radius);
 
-  std::size_t count() const { return m_count; }
   Storage storage() const { return m_storage; }                      // of the buffers now (params() may differ)
   const gl::Buffer& positions() const { return m_pos[m_current]; }   // (x, y, 0, species), see storage()
   const gl::Buffer& velocities() const { return m_vel[m_current]; }  // (vx, vy, ax, ay), see storage()
@@ -70,21 +75,21 @@ class Life {
   // ids()[k] = the index, at the last upload() or trackIds(true), of the particle now in slot k.
   void trackIds(bool on);
   std::vector<std::uint32_t> ids() const;
-  double time() const { return m_time; }
-  std::uint64_t stepCount() const { return m_steps; }
   // Candidate pairs the force pass examines at the current (sorted) positions: one extra
   // run of the counting variant (benchmarks).
   std::uint64_t countCandidatePairs();
-  std::string status() const;
 
-  // Divergence watch (sim/divergence.h): a non-blocking check every 8 frames of step().
-  std::optional<DivergenceReport> divergence() const { return m_divergence; }
-  bool recover();             // back to the last good state with half the last dt; false if none
-  void flushChecks();         // waits for the check in flight (end of a headless run)
+  // The divergence watch (sim::Model): recover() goes back to the last good state with half the last dt.
   double speedBound() const;  // world units/s: faster means more than 10 grid cells (>= max radius) per step
   float lastDt() const { return m_lastDt; }  // s, of the last step
 
  private:
+  // The divergence watch (sim::Model): NaN particles, speed above speedBound().
+  gl::Program& healthKernel() override;
+  std::optional<std::string> unhealthy(const sim::DivergenceWatch::Words& words) override;
+  std::string method() const override;
+  void resume(const sim::StateStamp& good) override;
+
   void allocate();
   void makeGrid();
   void applyStorage();  // converts the state when params().storage changed
@@ -93,11 +98,8 @@ class Life {
   void forcePass(bool countPairs);
   void integrate(const char* variant, float dt);
   std::vector<gl::ShaderDefine> defines() const;
-  void watch();  // polls the check in flight, starts the next one
-  void judge(const CheckCycle::Words& words, double time);
 
   gl::ShaderLibrary& m_shaders;
-  gl::BufferOps m_ops;  // checkpoint copies of the divergence watch
   Rules m_rules;
   Params m_params;
   std::size_t m_count = 0;
@@ -112,14 +114,6 @@ class Life {
   double m_time = 0;
   float m_lastDt = 0;
   std::uint64_t m_steps = 0;
-  // Divergence watch: reduced values, the state copied at the check, the last state judged good
-  // (no copies above kMaxCheckpointParticles: a blow-up is still reported, recovery is refused).
-  gl::Buffer m_health, m_pendingPos, m_pendingVel, m_goodPos, m_goodVel;
-  CheckCycle m_checks{8};  // a check every 8 frames
-  double m_goodTime = 0;
-  std::uint64_t m_pendingSteps = 0, m_goodSteps = 0;
-  bool m_hasGood = false;
-  std::optional<DivergenceReport> m_divergence;
 };
 
 }  // namespace tidepool::life

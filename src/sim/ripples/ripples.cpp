@@ -4,13 +4,13 @@
 #include <cstdio>
 #include <cstring>
 
+#include <limits>
+
 #include "base/log.h"
 #include "ripples/bindings.glsl"
 
 namespace tidepool::ripples {
 namespace {
-constexpr int kTile = 16;  // work-group edge of step.comp and touch.comp
-
 std::string fmt(const char* format, double a, double b = 0) {
   char buf[512];
   std::snprintf(buf, sizeof buf, format, a, b);
@@ -19,7 +19,7 @@ std::string fmt(const char* format, double a, double b = 0) {
 }  // namespace
 
 Ripples::Ripples(gl::ShaderLibrary& shaders, const Params& params)
-    : m_shaders(shaders), m_ops(shaders), m_params(params) {
+    : Model(shaders, "ripples", std::numeric_limits<std::size_t>::max()), m_shaders(shaders), m_params(params) {
   allocate();
 }
 
@@ -32,9 +32,6 @@ void Ripples::allocate() {
                 " grid needs " + std::to_string(bytes >> 20) + " MiB per state buffer, more than this GPU's " +
                 std::to_string(maxBlock >> 20) + " MiB storage-buffer limit");
   for (gl::Buffer& b : m_state) b = gl::Buffer(bytes);
-  m_pending = gl::Buffer(bytes);
-  m_good = gl::Buffer(bytes);
-  m_health = gl::Buffer(4 * sizeof(GLuint));
   m_width = m_params.width;
   m_height = m_params.height;
   reset();
@@ -44,9 +41,13 @@ void Ripples::reset() {
   for (gl::Buffer& b : m_state) b.fillZero();
   m_current = 0;
   m_time = 0;
-  m_hasGood = false;
-  m_divergence.reset();
-  m_checks.restart();
+  restartWatch();
+}
+
+void Ripples::dispatchCells() const {
+  glDispatchCompute(GLuint((m_width + RIPPLES_TILE - 1) / RIPPLES_TILE),
+                    GLuint((m_height + RIPPLES_TILE - 1) / RIPPLES_TILE), 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
 gl::Program& Ripples::stepProgram() {
@@ -65,8 +66,7 @@ void Ripples::pushBody(double dt) {
   p.set("uCellSize", m_params.cellSize);
   p.set("uCoupling", m_params.sphereCoupling);
   m_state[m_current].bindBase(GL_SHADER_STORAGE_BUFFER, RIPPLES_STATE_OUT);
-  glDispatchCompute(GLuint((m_width + kTile - 1) / kTile), GLuint((m_height + kTile - 1) / kTile), 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  dispatchCells();
 }
 
 void Ripples::stepOnce(double dt) {
@@ -96,8 +96,7 @@ void Ripples::stepOnce(double dt) {
   p.set("uSpongeDecay", float(std::exp(-q.spongeDamping * dt)));
   m_state[m_current].bindBase(GL_SHADER_STORAGE_BUFFER, RIPPLES_STATE_IN);
   m_state[1 - m_current].bindBase(GL_SHADER_STORAGE_BUFFER, RIPPLES_STATE_OUT);
-  glDispatchCompute(GLuint((m_width + kTile - 1) / kTile), GLuint((m_height + kTile - 1) / kTile), 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  dispatchCells();
   m_current = 1 - m_current;
   m_time += dt;
   m_lastDt = dt;
@@ -131,63 +130,38 @@ double Ripples::heightBound() const {
   return m_params.rule == Rule::Seed ? 1e4 : 0.5 * m_width * double(m_params.cellSize);
 }
 
-void Ripples::watch() {
-  m_checks.frame(
-      m_time, !m_divergence, judgeFn(),
-      [this] {
-        m_health.fillZero();
-        gl::Program& p = m_shaders.program({"ripples/health.comp"});
-        p.use();
-        p.set("uCells", GLuint(m_width * m_height));
-        m_state[m_current].bindBase(GL_SHADER_STORAGE_BUFFER, RIPPLES_STATE_IN);
-        m_health.bindBase(GL_SHADER_STORAGE_BUFFER, RIPPLES_HEALTH);
-        p.dispatchThreads(std::size_t(m_width) * m_height);
-        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-        m_ops.copy(m_state[m_current], m_pending, m_pending.size());  // the state this check judges
-      },
-      m_health);
+std::vector<sim::StateBuffer> Ripples::stateBuffers() {
+  return {{"state", &m_state[m_current], m_state[m_current].size()}};
 }
 
-CheckCycle::Judge Ripples::judgeFn() {
-  return [this](const CheckCycle::Words& v, double time) { judge({time, double(v[2]), double(healthFloat(v[0]))}); };
+gl::Program& Ripples::healthKernel() {
+  gl::Program& p = m_shaders.program({"ripples/health.comp"});
+  p.use();
+  m_state[m_current].bindBase(GL_SHADER_STORAGE_BUFFER, RIPPLES_STATE_IN);
+  return p;
 }
 
-void Ripples::judge(const Health& h) {
-  m_lastMaxHeight = h.maxMagnitude;
-  if (h.nanCount == 0 && h.maxMagnitude <= heightBound()) {
-    std::swap(m_pending, m_good);
-    m_goodTime = h.time;
-    m_hasGood = true;
-    return;
-  }
+std::optional<std::string> Ripples::unhealthy(const sim::DivergenceWatch::Words& w) {
+  m_lastMaxHeight = sim::DivergenceWatch::largest(w);
+  if (auto what = sim::DivergenceWatch::nonFinite(w, "cells")) return what;
+  if (!(m_lastMaxHeight <= heightBound())) return fmt("max |h| = %.3g exceeds %.3g", m_lastMaxHeight, heightBound());
+  return std::nullopt;
+}
+
+std::string Ripples::method() const {
   const Params& q = m_params;
-  std::string what = h.nanCount > 0 ? std::to_string(long(h.nanCount)) + " cells are NaN or infinite"
-                                    : fmt("max |h| = %.3g exceeds %.3g", h.maxMagnitude, heightBound());
-  std::string method = q.rule == Rule::Seed ? fmt("seed rule, dt = %.4g seed units", q.seedTimeScale * m_lastDt)
-                                            : fmt("wave rule, dt = %.4g s", m_lastDt);
-  if (q.rule == Rule::Wave)
-    method += fmt(", C = %.3f", m_lastCourant) +
-              (m_lastCourant > kCourantLimit2D ? fmt(" above the limit 1/sqrt(2) = %.3f", kCourantLimit2D) : "");
-  m_divergence = DivergenceReport{"ripples diverged by t = " + fmt("%.3f s: ", h.time) + what + " (" + method +
-                                      "); halve the time step and resume from the last good state" +
-                                      (m_hasGood ? fmt(" (t = %.3f s)", m_goodTime) : ""),
-                                  h.time};
+  if (q.rule == Rule::Seed) return fmt("seed rule, dt = %.4g seed units", q.seedTimeScale * m_lastDt);
+  return fmt("wave rule, dt = %.4g s", m_lastDt) + fmt(", C = %.3f", m_lastCourant) +
+         (m_lastCourant > kCourantLimit2D ? fmt(" above the limit 1/sqrt(2) = %.3f", kCourantLimit2D) : "");
 }
 
-bool Ripples::recover() {
-  if (!m_divergence || !m_hasGood) return false;
-  m_ops.copy(m_good, m_state[m_current], m_good.size());
-  m_time = m_goodTime;
+void Ripples::resume(const sim::StateStamp& good) {
+  m_time = good.time;
   if (m_params.autoSubsteps && m_params.rule == Rule::Wave)
     m_params.courantTarget *= 0.5f;
   else
     m_params.substeps = std::min(m_params.substeps * 2, 256);
-  m_divergence.reset();
-  m_checks.restart();
-  return true;
 }
-
-void Ripples::flushChecks() { m_checks.flush(judgeFn()); }
 
 void Ripples::touch(float x, float y, float radius, float depth) {
   gl::Program& p = m_shaders.program({"ripples/touch.comp"});
@@ -197,8 +171,7 @@ void Ripples::touch(float x, float y, float radius, float depth) {
   p.set("uRadius", std::max(radius * m_width, 0.5f));
   p.set("uDepth", depth);
   m_state[m_current].bindBase(GL_SHADER_STORAGE_BUFFER, RIPPLES_STATE_OUT);
-  glDispatchCompute(GLuint((m_width + kTile - 1) / kTile), GLuint((m_height + kTile - 1) / kTile), 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  dispatchCells();
 }
 
 void Ripples::upload(const std::vector<float>& hv) {

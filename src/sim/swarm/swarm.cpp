@@ -72,7 +72,7 @@ void visit(ParamVisitor& v, SwarmParams& p) {
 }
 
 Swarm::Swarm(gl::ShaderLibrary& shaders, const SwarmParams& params)
-    : m_shaders(shaders), m_ops(shaders), m_params(params) {
+    : Model(shaders, "swarm", kMaxCheckpointParticles), m_shaders(shaders), m_params(params) {
   reset();
 }
 
@@ -84,18 +84,13 @@ void Swarm::allocate(std::size_t count, Storage storage) {
   m_state = gl::Buffer(count * swarmBytesPerParticle(storage));
   m_count = count;
   m_storage = storage;
-  m_pending = gl::Buffer();  // checkpoints are made on use, at the new size
-  m_good = gl::Buffer();
 }
 
 void Swarm::reset() {
   allocate(std::size_t(m_params.particles), m_params.storage);
   m_time = 0.0;
-  m_hasGood = false;
-  m_divergence.reset();
-  m_checks.restart();
-  gl::Program& init =
-      m_shaders.program({"swarm/swarm_init.comp"}, {{"STORAGE_FP16", m_storage == Storage::Fp16 ? "1" : "0"}});
+  restartWatch();
+  gl::Program& init = m_shaders.program({"swarm/swarm_init.comp"}, {{"STORAGE_FP16", storageDefine()}});
   init.use();
   init.set("uCount", unsigned(m_count));
   init.set("uSeed", unsigned(m_params.seed));
@@ -108,9 +103,7 @@ void Swarm::upload(std::span<const SwarmParticle> particles) {
   allocate(particles.size(), m_params.storage);
   m_params.particles = int(particles.size());  // a later reset() keeps this count
   m_time = 0.0;
-  m_hasGood = false;
-  m_divergence.reset();
-  m_checks.restart();
+  restartWatch();
   if (m_storage == Storage::Fp32) {
     m_state.upload(particles);
     return;
@@ -140,10 +133,10 @@ std::vector<Attractor> Swarm::attractorsAt(double t) const {
 
 gl::Program& Swarm::stepProgram() const {
   return m_shaders.program({"swarm/swarm_step.comp"}, {{"INTEGRATOR", std::to_string(int(m_params.integrator))},
-                                                       {"STORAGE_FP16", m_storage == Storage::Fp16 ? "1" : "0"}});
+                                                       {"STORAGE_FP16", storageDefine()}});
 }
 
-void Swarm::step(double dt) {
+void Swarm::stepOnce(double dt) {
   // Forces at the start, middle and end of the step: RK4 needs all three, Verlet the first and last.
   const double times[3] = {m_time, m_time + 0.5 * dt, m_time + dt};
   std::vector<glm::vec4> attractors(3 * SWARM_MAX_ATTRACTORS, glm::vec4(0.0f));
@@ -181,63 +174,57 @@ double Swarm::speedBound() const {
   return kSpeedBoundFactor * std::sqrt(fall);
 }
 
-void Swarm::watch() {
-  if (!m_health) m_health = gl::Buffer(4 * sizeof(GLuint));
-  m_checks.frame(
-      m_time, !m_divergence && m_count > 0, [this](const CheckCycle::Words& w, double time) { judge(w, time); },
-      [this] {
-        m_health.fillZero();
-        gl::Program& p =
-            m_shaders.program({"swarm/health.comp"}, {{"STORAGE_FP16", m_storage == Storage::Fp16 ? "1" : "0"}});
-        p.use();
-        p.set("uCount", unsigned(m_count));
-        m_state.bindBase(GL_SHADER_STORAGE_BUFFER, SWARM_STATE_BINDING);
-        m_health.bindBase(GL_SHADER_STORAGE_BUFFER, SWARM_HEALTH_BINDING);
-        p.dispatchThreads(m_count);
-        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-        if (m_count > kMaxCheckpointParticles) return;
-        for (gl::Buffer* b : {&m_pending, &m_good})
-          if (b->size() != m_state.size()) *b = gl::Buffer(m_state.size());
-        m_ops.copy(m_state, m_pending, m_state.size());  // the state this check judges
-      },
-      m_health);
+void Swarm::step(double frameSeconds, gl::GpuProfiler& profiler) {
+  {
+    auto scope = profiler.scope("swarm.step");
+    const int substeps = swarmSubsteps(m_params, frameSeconds);
+    const double dt = double(m_params.speed) * frameSeconds / substeps;
+    for (int s = 0; s < substeps; ++s) stepOnce(dt);
+  }
+  watch();
 }
 
-void Swarm::judge(const CheckCycle::Words& w, double time) {
-  const float maxSpeed = healthFloat(w[1]);
-  if (w[0] == 0 && maxSpeed <= speedBound()) {
-    std::swap(m_pending, m_good);
-    m_goodTime = time;
-    m_hasGood = bool(m_good);
-    return;
-  }
-  char what[200], method[160];
-  if (w[0] > 0)
-    std::snprintf(what, sizeof what, "%u particles are NaN or infinite", w[0]);
-  else
-    std::snprintf(what, sizeof what,
-                  "a particle moves at %.3g units/s, ten times what the attractors can give one at rest (%.3g units/s)",
-                  double(maxSpeed), speedBound());
+std::string Swarm::status() const {
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "%zu particles, %s, %s, %.0f MiB state", m_count,
+                kStorageNames[std::size_t(m_storage)], kIntegratorNames[std::size_t(m_params.integrator)],
+                double(stateBytes()) / 1048576.0);
+  return buf;
+}
+
+std::vector<StateBuffer> Swarm::stateBuffers() { return {{"state", &m_state, stateBytes()}}; }
+
+gl::Program& Swarm::healthKernel() {
+  gl::Program& p = m_shaders.program({"swarm/health.comp"}, {{"STORAGE_FP16", storageDefine()}});
+  p.use();
+  m_state.bindBase(GL_SHADER_STORAGE_BUFFER, SWARM_STATE_BINDING);
+  return p;
+}
+
+std::optional<std::string> Swarm::unhealthy(const DivergenceWatch::Words& w) {
+  if (auto what = DivergenceWatch::nonFinite(w, "particles")) return what;
+  const float maxSpeed = DivergenceWatch::largest(w);
+  if (maxSpeed <= speedBound()) return std::nullopt;
+  char what[200];
+  std::snprintf(what, sizeof what,
+                "a particle moves at %.3g units/s, ten times what the attractors can give one at rest (%.3g units/s)",
+                double(maxSpeed), speedBound());
+  return what;
+}
+
+std::string Swarm::method() const {
+  char method[160];
   std::snprintf(method, sizeof method, "%s, %s, dt = %.3g s", kIntegratorNames[std::size_t(m_params.integrator)],
                 kStorageNames[std::size_t(m_storage)], m_lastDt);
-  m_divergence = divergenceReport("swarm", time, what, method, m_hasGood);
+  return method;
 }
 
-bool Swarm::recover() {
-  if (!m_divergence || !m_hasGood) return false;
-  m_ops.copy(m_good, m_state, m_good.size());
-  m_time = m_goodTime;
+void Swarm::resume(const StateStamp& good) {
+  m_time = good.time;
   if (m_params.substeps < kMaxSubsteps)
     m_params.substeps *= 2;  // same simulated time per frame, half the step
   else
     m_params.speed *= 0.5f;
-  m_divergence.reset();
-  m_checks.restart();
-  return true;
-}
-
-void Swarm::flushChecks() {
-  m_checks.flush([this](const CheckCycle::Words& w, double time) { judge(w, time); });
 }
 
 }  // namespace tidepool::sim

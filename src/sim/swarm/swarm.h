@@ -5,8 +5,9 @@
 //
 //   Swarm swarm(shaders, params);   // allocates params.particles and scatters them (reset)
 //   swarm.setAspect(16.0 / 9.0);    // world = ndc * (aspect, 1)
-//   swarm.step(1.0 / 120.0);        // one integrator step of simulated time
-//   swarm.watch();                  // once per frame: the divergence watch (non-blocking)
+//   swarm.step(1.0 / 60, profiler); // one frame: swarmSubsteps() steps of speed * frame, then the watch
+//   swarm.stepOnce(1.0 / 120.0);    // or one integrator step of simulated time ...
+//   swarm.watch();                  // ... and the divergence watch once per frame (non-blocking)
 //
 // Step: world x = pos * (aspect, 1); integrate (x, v) with forces evaluated at the right times
 // (t, t + dt/2, t + dt); v *= exp(-friction dt); back to NDC; mirror at the walls if bouncing.
@@ -18,9 +19,9 @@
 #include <vector>
 
 #include "gl/buffer.h"
-#include "gl/buffer_ops.h"
+#include "gl/gpu_profiler.h"
 #include "gl/shader_library.h"
-#include "sim/divergence.h"
+#include "sim/model.h"
 #include "sim/swarm/attractors.h"
 #include "sim/swarm/swarm_params.h"
 
@@ -37,37 +38,40 @@ std::size_t swarmBytesPerParticle(Storage storage);  // 16 or 8
 // more than GL_MAX_SHADER_STORAGE_BLOCK_SIZE, or more than the free memory where the driver says.
 void checkSwarmFits(std::size_t count, Storage storage, std::size_t extraBytesPerParticle = 0);
 
-class Swarm {
+class Swarm final : public Model {
  public:
   Swarm(gl::ShaderLibrary& shaders, const SwarmParams& params);
 
   SwarmParams& params() { return m_params; }  // read at the next step; count/storage at reset()
   const SwarmParams& params() const { return m_params; }
 
-  void reset();                                           // (re)allocates if needed, scatters uniformly, v = 0, t = 0
+  // sim::Model. A frame is swarmSubsteps() steps of speed * frameSeconds in all.
+  void reset() override;  // (re)allocates if needed, scatters uniformly, v = 0, t = 0
+  void step(double frameSeconds, gl::GpuProfiler& profiler) override;
+  double time() const override { return m_time; }         // simulated seconds since reset
+  std::size_t count() const override { return m_count; }  // particles
+  std::string status() const override;                    // count, storage, integrator, state size
+  std::vector<sim::StateBuffer> stateBuffers() override;  // the state (pos, vel) per particle
+
+  void stepOnce(double dt);                               // one integrator step of dt simulated seconds
+  void step(double dt) { stepOnce(dt); }                  // the same (benchmarks and studies call it so)
   void upload(std::span<const SwarmParticle> particles);  // replaces the state (count = size), t = 0
   std::vector<SwarmParticle> download() const;            // reads back (tests, tools)
-  void step(double dt);                                   // one integrator step of dt simulated seconds
 
   void setAspect(double aspect) { m_aspect = aspect; }                           // image width / height
   void setMouse(std::optional<glm::dvec2> worldPos) { m_mouse = worldPos; }      // strength from params
   void setExtraAttractors(std::vector<Attractor> a) { m_extra = std::move(a); }  // fixed, after the preset's
   std::vector<Attractor> attractorsAt(double t) const;                           // preset(t) + extra + mouse, at most 8
 
-  double time() const { return m_time; }  // simulated seconds since reset
   double aspect() const { return m_aspect; }
-  std::size_t count() const { return m_count; }
   Storage storage() const { return m_storage; }
   const gl::Buffer& state() const { return m_state; }
   std::size_t stateBytes() const { return m_count * swarmBytesPerParticle(m_storage); }
 
-  // Divergence watch (sim/divergence.h). watch() once per frame, after the frame's steps: a
-  // non-blocking check every 8 calls. recover() goes back to the last good state with half the
-  // time step (twice the substeps, or half the speed at 64 substeps); false if there is none.
-  void watch();
-  std::optional<DivergenceReport> divergence() const { return m_divergence; }
-  bool recover();
-  void flushChecks();  // waits for the check in flight (end of a headless run)
+  // The divergence watch (sim::Model). watch() once per frame after stepOnce() calls (step()
+  // calls it itself): a non-blocking check every 8 calls. recover() goes back to the last good
+  // state with half the time step (twice the substeps, or half the speed at 64 substeps).
+  using Model::watch;
   // World units/s: ten times the fastest a particle starting at rest anywhere in the box can
   // move in the static field of the attractors now (preset, extra and mouse at full strength):
   // sqrt(S·ln((D² + ε')/ε') + 2·g·2), S = Σ|s_k|, D = the box diagonal, ε' = max(ε, 10⁻⁶).
@@ -75,12 +79,17 @@ class Swarm {
   double lastDt() const { return m_lastDt; }  // s, of the last step
 
  private:
+  // The divergence watch (sim::Model): NaN particles, speed above speedBound().
+  gl::Program& healthKernel() override;
+  std::optional<std::string> unhealthy(const DivergenceWatch::Words& words) override;
+  std::string method() const override;
+  void resume(const StateStamp& good) override;
+
   void allocate(std::size_t count, Storage storage);
   gl::Program& stepProgram() const;
-  void judge(const CheckCycle::Words& words, double time);
+  const char* storageDefine() const { return m_storage == Storage::Fp16 ? "1" : "0"; }  // STORAGE_FP16
 
   gl::ShaderLibrary& m_shaders;
-  gl::BufferOps m_ops;  // checkpoint copies
   SwarmParams m_params;
   gl::Buffer m_state;
   std::size_t m_count = 0;
@@ -89,13 +98,6 @@ class Swarm {
   std::optional<glm::dvec2> m_mouse;
   std::vector<Attractor> m_extra;
   double m_lastDt = 0;
-  // Divergence watch: reduced values, the state copied at the check, the last state judged good
-  // (no copies above kMaxCheckpointParticles: a blow-up is still reported, recovery is refused).
-  gl::Buffer m_health, m_pending, m_good;
-  CheckCycle m_checks{8};
-  double m_goodTime = 0;
-  bool m_hasGood = false;
-  std::optional<DivergenceReport> m_divergence;
 };
 
 }  // namespace tidepool::sim

@@ -45,7 +45,7 @@ void placeRing(Swarm& swarm) {
 
 void runFrames(Swarm& swarm, int frames, double dt) {
   for (int i = 0; i < frames && !swarm.divergence(); ++i) {
-    swarm.step(dt);
+    swarm.stepOnce(dt);
     swarm.watch();
     if (i % 8 == 7) swarm.flushChecks();  // keeps the test short; the app never blocks
   }
@@ -86,7 +86,7 @@ TEST_F(SwarmDivergence, BlowUpIsReportedAndRecoveredWithHalfTheStep) {
   const double goodTime = swarm.time();
   EXPECT_LT(goodTime, failedAt);
   EXPECT_NEAR(goodTime, 40 * dt, 1e-9) << "the newest state judged good: the last one before the long steps";
-  while (twin.time() < goodTime - 1e-9) twin.step(dt);
+  while (twin.time() < goodTime - 1e-9) twin.stepOnce(dt);
   const std::vector<SwarmParticle> restored = swarm.download(), replay = twin.download();
   ASSERT_EQ(restored.size(), replay.size());
   for (std::size_t i = 0; i < restored.size(); ++i) {

@@ -1,0 +1,207 @@
+// The balls step as a list of passes, and the statistics pass. Each pass binds what its kernel
+// reads and writes and ends with the barrier its readers need; stepOnce() only names them.
+#include <cmath>
+#include <cstddef>
+
+#include "balls/bindings.glsl"
+#include "balls/stats_layout.glsl"
+#include "sim/balls/balls.h"
+
+namespace tidepool::balls {
+namespace {
+
+// One work group's partial statistics as stats.comp writes them (balls/stats_layout.glsl).
+struct GroupStats {
+  float kinetic;     // sum, m²/s² per unit mass
+  float potential;   // sum
+  float overlap;     // sum of overlap / r over contacts
+  float contacts;    // sum
+  float maxOverlap;  // max, fraction of r
+  float maxSpeed;    // max, m/s
+  float nonFinite;   // sum, balls
+  float outside;     // sum, balls
+  float front;       // max, m (< -1e29: no ball near the floor)
+  float backHeight;  // max, m (< -1e29: no ball near the back wall)
+};
+static_assert(sizeof(GroupStats) == BALLS_STATS_VALUES * sizeof(float));
+static_assert(offsetof(GroupStats, kinetic) == BALLS_STATS_KINETIC * sizeof(float));
+static_assert(offsetof(GroupStats, potential) == BALLS_STATS_POTENTIAL * sizeof(float));
+static_assert(offsetof(GroupStats, overlap) == BALLS_STATS_OVERLAP * sizeof(float));
+static_assert(offsetof(GroupStats, contacts) == BALLS_STATS_CONTACTS * sizeof(float));
+static_assert(offsetof(GroupStats, maxOverlap) == BALLS_STATS_MAX_OVERLAP * sizeof(float));
+static_assert(offsetof(GroupStats, maxSpeed) == BALLS_STATS_MAX_SPEED * sizeof(float));
+static_assert(offsetof(GroupStats, nonFinite) == BALLS_STATS_NON_FINITE * sizeof(float));
+static_assert(offsetof(GroupStats, outside) == BALLS_STATS_OUTSIDE * sizeof(float));
+static_assert(offsetof(GroupStats, front) == BALLS_STATS_FRONT * sizeof(float));
+static_assert(offsetof(GroupStats, backHeight) == BALLS_STATS_BACK_HEIGHT * sizeof(float));
+
+gl::GpuProfiler::Scope timed(gl::GpuProfiler* profiler, const char* name) {
+  return profiler ? profiler->scope(name) : gl::GpuProfiler::Scope(nullptr);
+}
+
+}  // namespace
+
+void Balls::stepOnce(gl::GpuProfiler* profiler) {
+  updateWalls();
+  rebuildObstacles();
+  emitFromTap();
+  // Obstacles are placed where they are when the forces act: at t, or at t + dt for Verlet's
+  // forces on the drifted positions.
+  const bool verlet = m_params.integrator == Integrator::VelocityVerlet;
+  if (verlet && !m_accValid && m_count > 0) {  // a(x0) for the first drift
+    placeObstacles(m_time, nullptr);
+    sortByCell(nullptr);
+    collide(nullptr, Collide::VerletForces);
+  }
+  placeObstacles(verlet ? m_time + m_params.dt : m_time, profiler);
+  if (m_count > 0) {
+    if (verlet) drift(profiler);
+    sortByCell(profiler);
+    collide(profiler, verlet ? Collide::VerletKick : Collide::Integrate);
+    m_accValid = verlet;
+  }
+  m_time += m_params.dt;
+}
+
+void Balls::step(double, gl::GpuProfiler& profiler) {
+  for (int i = 0; i < m_params.substeps; ++i) stepOnce(&profiler);
+  watch();
+}
+
+void Balls::rebuildObstacles() {
+  if (std::string error; m_obstacles.update(m_params.obstacles, m_radius, error)) m_obstacleError = error;
+}
+
+void Balls::placeObstacles(double time, gl::GpuProfiler* profiler) {
+  m_obstacles.place(m_params.obstacles, time, m_params.domainMin, m_params.domainMax, profiler);
+}
+
+std::vector<gl::ShaderDefine> Balls::defines(bool verlet) const {
+  std::vector<gl::ShaderDefine> d;
+  switch (m_params.contact) {
+    case Contact::Penalty: d.push_back({"CONTACT_PENALTY", ""}); break;
+    case Contact::CudaSample: d.push_back({"CONTACT_CUDA", ""}); break;
+    case Contact::SpringDashpot: d.push_back({"CONTACT_SPRING", ""}); break;
+  }
+  if (verlet)
+    d.push_back({"INTEGRATOR_VERLET", ""});
+  else if (m_params.integrator == Integrator::ExplicitEuler)
+    d.push_back({"INTEGRATOR_EXPLICIT", ""});
+  if (m_obstacles.active()) d.push_back({"HAS_OBSTACLE", ""});
+  return d;
+}
+
+gl::Program& Balls::useKernel(const char* file, bool verlet) {
+  gl::Program& p = m_shaders.program({file}, defines(verlet));
+  const Params& q = m_params;
+  p.use();
+  p.set("uCount", GLuint(m_count));
+  p.set("uRadius", m_radius);
+  p.set("uDt", q.dt);
+  p.set("uGravity", gravity());
+  p.set("uDecay", std::exp(-q.damping * q.dt));
+  p.set("uPenaltyFactor", q.penaltyFactor);
+  p.set("uSpringK1", springPerMass(q));
+  p.set("uDashpotG1", dashpotPerMass(q));
+  p.set("uFriction", q.friction);
+  p.set("uCudaSpring", q.cudaSpring);
+  p.set("uCudaDamping", q.cudaDamping);
+  p.set("uCudaShear", q.cudaShear);
+  p.set("uBoundaryDamping", q.cudaBoundaryDamping);
+  p.set("uWallMin", m_wallMin);
+  p.set("uWallMax", m_wallMax);
+  p.set("uWallMinVel", m_wallMinVel);
+  p.set("uWallMaxVel", m_wallMaxVel);
+  p.set("uFoamGain", q.foamGain);
+  p.set("uFoamDecay", std::pow(q.foamDecay, q.dt / 0.0005f));  // the seed's decay per 0.5 ms
+  m_grid->setUniforms(p);
+  if (m_obstacles.active()) m_obstacles.bind(p);
+  m_grid->cellStart().bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_CELL_START);
+  return p;
+}
+
+void Balls::drift(gl::GpuProfiler* profiler) {
+  auto scope = timed(profiler, "balls.drift");
+  gl::Program& p = useKernel("balls/drift.comp", false);
+  m_pos[m_posIndex].bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_POS_OUT);
+  m_vel[m_velIndex].bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VEL_OUT);
+  m_acc.bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_ACC);
+  p.dispatchThreads(m_count);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+void Balls::sortByCell(gl::GpuProfiler* profiler) {
+  const int p = m_posIndex, v = m_velIndex;
+  {
+    auto scope = timed(profiler, "balls.count");
+    m_grid->countParticles(m_pos[p], m_count);
+  }
+  {
+    auto scope = timed(profiler, "balls.scan");
+    m_grid->scanCells();
+  }
+  auto scope = timed(profiler, "balls.reorder");
+  m_grid->setReorderMode(m_params.gridReorder);  // may change while running
+  m_grid->reorder(m_pos[p], {{&m_pos[p], &m_pos[1 - p]}, {&m_vel[v], &m_vel[1 - v]}},
+                  m_trackOrder ? &m_permutation : nullptr);
+}
+
+void Balls::collide(gl::GpuProfiler* profiler, Collide what) {
+  auto scope = timed(profiler, "balls.collide");
+  const bool verlet = what != Collide::Integrate;
+  const int p = m_posIndex, v = m_velIndex;
+  gl::Program& collide = useKernel("balls/collide.comp", verlet);
+  m_pos[1 - p].bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_POS_IN);  // the cell-ordered copies
+  m_vel[1 - v].bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VEL_IN);
+  m_vel[v].bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VEL_OUT);
+  if (verlet) {
+    collide.set("uKick", what == Collide::VerletKick ? 0.5f : 0.0f);
+    m_acc.bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_ACC);
+    m_posIndex = 1 - p;  // positions stay in cell order; velocities come back to v
+  } else {
+    m_pos[p].bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_POS_OUT);
+  }
+  collide.dispatchThreads(m_count);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+Stats Balls::stats() {
+  Stats st;
+  st.time = m_time;
+  st.count = m_count;
+  if (m_count == 0) return st;
+  // The stats pass needs the balls in cell order: sort copies into the scratch buffers, leaving
+  // the state (and Verlet's accelerations, which follow its order) untouched.
+  const int p = m_posIndex, v = m_velIndex;
+  m_grid->build(m_pos[p], m_count);
+  m_grid->reorder(m_pos[p], {{&m_pos[p], &m_pos[1 - p]}, {&m_vel[v], &m_vel[1 - v]}});
+  gl::Program& prog = useKernel("balls/stats.comp", false);
+  prog.set("uDomainMin", m_params.domainMin);
+  m_pos[1 - p].bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_POS_IN);
+  m_vel[1 - v].bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VEL_IN);
+  m_stats.bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_STATS);
+  prog.dispatchThreads(m_count);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  const std::size_t groups = (m_count + BALLS_GROUP_SIZE - 1) / BALLS_GROUP_SIZE;
+  double front = -1e30, height = -1e30;
+  double contacts = 0, overlapSum = 0;
+  for (const GroupStats& g : m_stats.read<GroupStats>(groups)) {
+    front = std::max(front, double(g.front));
+    height = std::max(height, double(g.backHeight));
+    st.kinetic += g.kinetic;
+    st.potential += g.potential;
+    overlapSum += g.overlap;
+    contacts += g.contacts;
+    st.maxOverlap = std::max(st.maxOverlap, double(g.maxOverlap));
+    st.maxSpeed = std::max(st.maxSpeed, double(g.maxSpeed));
+    st.nonFinite += std::size_t(g.nonFinite);
+    st.outside += std::size_t(g.outside);
+  }
+  st.meanOverlap = contacts > 0 ? overlapSum / contacts : 0.0;
+  st.front = front > -1e29 ? front : std::nan("");
+  st.backHeight = height > -1e29 ? height : std::nan("");
+  st.contactsPerBall = contacts / double(m_count);
+  return st;
+}
+
+}  // namespace tidepool::balls

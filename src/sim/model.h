@@ -1,0 +1,54 @@
+// The one surface every model offers (balls, life, ripples, swarm), so that stages, benchmarks,
+// studies and checkpoints treat models alike: a frame of stepping, the clock and the size, a
+// status line, the state buffers by name, and the divergence watch (sim/divergence.h), which
+// this base owns and serves for every model.
+//
+//   model.step(1.0 / 60, profiler);   // one frame: the model's substeps, then the watch
+//   if (model.divergence()) model.recover();
+//
+// A model implements the public virtuals below and, privately, what its watch needs
+// (DivergenceWatch::Subject: its health kernel, the verdict on the words, its method, and how it
+// resumes from a good state with half its time step); it calls watch() once per frame.
+// Model-specific stepping stays on the model: stepOnce() is one step of the model's own kind.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "gl/gpu_profiler.h"
+#include "sim/divergence.h"
+
+namespace tidepool::sim {
+
+class Model : private DivergenceWatch::Subject {
+ public:
+  virtual ~Model() = default;
+
+  virtual void step(double frameSeconds, gl::GpuProfiler& profiler) = 0;  // one frame: substeps, then watch()
+  virtual void reset() = 0;                                               // the initial state, t = 0
+  virtual double time() const = 0;                                        // simulated s since reset
+  virtual std::size_t count() const = 0;                                  // particles or cells
+  virtual std::string status() const = 0;                                 // one line for the UI
+  virtual std::uint64_t stepCount() const { return 0; }                   // steps taken, where the model counts them
+  using Subject::stateBuffers;  // the live state, named, with the bytes in use (renderers, checkpoints)
+
+  // The divergence watch: a non-blocking check every 8 frames, a frame or two late.
+  std::optional<DivergenceReport> divergence() const { return m_watch.report(); }
+  bool recover() { return m_watch.recover(*this); }  // last good state, half the time step; false if none
+  void flushChecks() { m_watch.flush(*this); }       // waits for the check in flight (end of a headless run)
+
+ protected:
+  // `name` words the reports ("balls diverged by ..."); no copies of more than maxCopied elements.
+  Model(gl::ShaderLibrary& shaders, const char* name, std::size_t maxCopied) : m_watch(shaders, name, maxCopied) {}
+  void watch() { m_watch.frame(*this); }      // once per frame, after its steps
+  void restartWatch() { m_watch.restart(); }  // a new state (reset, upload): nothing judged yet
+
+ private:
+  StateStamp stamp() const final { return {time(), count(), stepCount()}; }
+
+  DivergenceWatch m_watch;
+};
+
+}  // namespace tidepool::sim
