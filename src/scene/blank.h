@@ -11,6 +11,8 @@ struct BlankParams {
 };
 void visit(ParamVisitor& v, BlankParams& p);
 
-std::unique_ptr<Stage> createBlankStage(const io::Json& params, const std::string& where, gl::ShaderLibrary& shaders);
+SceneParams parseBlankParams(const io::Json& params, const std::string& where);
+std::unique_ptr<Stage> createBlankStage(const SceneParams& params, const std::string& where,
+                                        gl::ShaderLibrary& shaders);
 
 }  // namespace tidepool

@@ -10,6 +10,7 @@
 
 namespace tidepool {
 
-std::unique_ptr<Stage> createLifeStage(const io::Json& params, const std::string& where, gl::ShaderLibrary& shaders);
+SceneParams parseLifeParams(const io::Json& params, const std::string& where);
+std::unique_ptr<Stage> createLifeStage(const SceneParams& params, const std::string& where, gl::ShaderLibrary& shaders);
 
 }  // namespace tidepool

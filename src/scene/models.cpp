@@ -10,13 +10,15 @@ namespace tidepool {
 
 const std::vector<ModelEntry>& models() {
   static const std::vector<ModelEntry> table = {
-      {"blank", "no simulation: clears to a colour (the shell before any model)", createBlankStage},
+      {"blank", "no simulation: clears to a colour (the shell before any model)", parseBlankParams, createBlankStage},
       {"balls", "water as equal balls colliding: grid neighbours, three contact laws, three integrators",
-       createBallsStage},
-      {"ripples", "heightfield water: wave equation or the seed's spring model, 2D refraction view",
+       parseBallsParams, createBallsStage},
+      {"ripples", "heightfield water: wave equation or the seed's spring model, 2D refraction view", parseRipplesParams,
        createRipplesStage},
-      {"swarm", "millions of 2D particles pulled by animated attractors, one following the mouse", createSwarmStage},
-      {"life", "particle life: species with asymmetric forces, glow + HDR view, shareable rules", createLifeStage},
+      {"swarm", "millions of 2D particles pulled by animated attractors, one following the mouse", parseSwarmParams,
+       createSwarmStage},
+      {"life", "particle life: species with asymmetric forces, glow + HDR view, shareable rules", parseLifeParams,
+       createLifeStage},
   };
   return table;
 }

@@ -3,9 +3,15 @@
 #pragma once
 
 #include "scene/stage.h"
+#include "sim/ripples/ripples_params.h"
 
 namespace tidepool {
 
-std::unique_ptr<Stage> createRipplesStage(const io::Json& params, const std::string& where, gl::ShaderLibrary& shaders);
+SceneParams parseRipplesParams(const io::Json& params, const std::string& where);
+std::unique_ptr<Stage> createRipplesStage(const SceneParams& params, const std::string& where,
+                                          gl::ShaderLibrary& shaders);
+
+ripples::Params& ripplesParams(SceneParams& params);  // the model's part (method auto edits it)
+const ripples::Params& ripplesParams(const SceneParams& params);
 
 }  // namespace tidepool
