@@ -7,9 +7,9 @@
 #include <sstream>
 
 #include "base/error.h"
-#include "scene/balls_stage.h"
-#include "scene/ripples_stage.h"
-#include "scene/swarm_stage.h"
+#include "sim/balls/balls_params.h"
+#include "sim/ripples/ripples_params.h"
+#include "sim/swarm/swarm_params.h"
 
 namespace tidepool::automethod {
 namespace {
@@ -32,16 +32,16 @@ int indexOf(const std::array<const char*, N>& names, const std::string& name) {
   return it == names.end() ? -1 : int(it - names.begin());
 }
 
-// A setting of one field of a model's params, reached through the model's accessor:
-// pick(ballsParams, "engine.contact", &balls::Params::contact, balls::Contact::SpringDashpot).
+// A setting of one field of the model's params, by its key in scene files and its member:
+// pick("engine.contact", &balls::Params::contact, balls::Contact::SpringDashpot).
 template <class Model, class T>
-Setting pick(Model& (*model)(SceneParams&), const char* key, T Model::*field, std::type_identity_t<T> value) {
-  return {key, false, [model, field, value](SceneParams& p) { model(p).*field = value; }};
+Setting pick(const char* key, T Model::*field, std::type_identity_t<T> value) {
+  return {key, false, [field, value](SceneParams& p) { p.model<Model>().*field = value; }};
 }
 // One the scene may state too: the pick rescales it (the frame's time, the pool's size).
 template <class Model, class T>
-Setting rescale(Model& (*model)(SceneParams&), const char* key, T Model::*field, std::type_identity_t<T> value) {
-  Setting s = pick(model, key, field, value);
+Setting rescale(const char* key, T Model::*field, std::type_identity_t<T> value) {
+  Setting s = pick(key, field, value);
   s.rescaled = true;
   return s;
 }
@@ -112,9 +112,9 @@ std::vector<Candidate> swarmCandidates(const ModelInput& in) {
       c.family = integrator + " " + storage;
       c.step = dt;
       c.label = c.family + ", dt <= " + formatValue(dt) + " s";
-      c.settings = {pick(swarmParams, "integrator", &sim::SwarmParams::integrator, sim::Integrator(integratorIndex)),
-                    pick(swarmParams, "storage", &sim::SwarmParams::storage, sim::Storage(storageIndex)),
-                    pick(swarmParams, "max_dt", &sim::SwarmParams::maxDt, float(dt))};
+      c.settings = {pick("integrator", &sim::SwarmParams::integrator, sim::Integrator(integratorIndex)),
+                    pick("storage", &sim::SwarmParams::storage, sim::Storage(storageIndex)),
+                    pick("max_dt", &sim::SwarmParams::maxDt, float(dt))};
       out.push_back(std::move(c));
     }
   return out;
@@ -124,7 +124,7 @@ std::vector<Candidate> swarmCandidates(const ModelInput& in) {
 // the scene's and only C is picked (from rows at the largest measured N not above it); with
 // "wavelength" (m) the pick also sets the cell size to wavelength / N, keeping the pool's size.
 std::vector<Candidate> ripplesCandidates(const ModelInput& in) {
-  const ripples::Params& scene = ripplesParams(in.params);
+  const ripples::Params& scene = in.params.model<ripples::Params>();
   if (scene.rule != ripples::Rule::Wave)
     throw Error(in.where + ": the dispersion data measures the wave rule; this scene uses rule '" +
                 ripples::kRuleNames[int(scene.rule)] + "'");
@@ -162,17 +162,16 @@ std::vector<Candidate> ripplesCandidates(const ModelInput& in) {
     Candidate c = basics(in, t, r);
     c.family = formatValue(n) + " cells per wavelength";
     c.step = courant;
-    c.settings = {pick(ripplesParams, "auto_substeps", &ripples::Params::autoSubsteps, true),
-                  pick(ripplesParams, "courant_target", &ripples::Params::courantTarget,
-                       float(courant / ripples::kCourantLimit2D))};
+    c.settings = {pick("auto_substeps", &ripples::Params::autoSubsteps, true),
+                  pick("courant_target", &ripples::Params::courantTarget, float(courant / ripples::kCourantLimit2D))};
     c.label = "C <= " + formatValue(courant) + " at " + c.family;
     if (!fixedGrid) {
       const double dx = in.accuracy.at("wavelength").get<double>() / n;
       const int w = int(std::lround(width * cellSize / dx)), h = int(std::lround(height * cellSize / dx));
       if (w < 16 || h < 16 || w > 4096 || h > 4096 || dx < 1e-4 || dx > 10) continue;  // the grid's ranges
-      c.settings.push_back(rescale(ripplesParams, "cell_size", &ripples::Params::cellSize, float(dx)));
-      c.settings.push_back(rescale(ripplesParams, "width", &ripples::Params::width, w));
-      c.settings.push_back(rescale(ripplesParams, "height", &ripples::Params::height, h));
+      c.settings.push_back(rescale("cell_size", &ripples::Params::cellSize, float(dx)));
+      c.settings.push_back(rescale("width", &ripples::Params::width, w));
+      c.settings.push_back(rescale("height", &ripples::Params::height, h));
       c.label += " (" + std::to_string(w) + "x" + std::to_string(h) + " cells of " + formatValue(dx) + " m)";
     }
     out.push_back(std::move(c));
@@ -186,7 +185,7 @@ std::vector<Candidate> ripplesCandidates(const ModelInput& in) {
 // contact time to K dt). The frame keeps its simulated time (the scene's dt x substeps): substeps
 // grow until a step is at most the picked dt.
 std::vector<Candidate> ballsCandidates(const ModelInput& in) {
-  const balls::Params& scene = ballsParams(in.params);
+  const balls::Params& scene = in.params.model<balls::Params>();
   const double sceneContactTime = decimal(scene.contactTime);
   const double frame = decimal(scene.dt) * scene.substeps;
   std::vector<Candidate> out;
@@ -229,14 +228,13 @@ std::vector<Candidate> ballsCandidates(const ModelInput& in) {
       if (substeps > 1000) continue;  // the param's range
       c.family = method;
       c.label = contact + (integrator.empty() ? "" : ", " + integrator) + ", " + stepWords;
-      c.settings = {pick(ballsParams, "engine.contact", &balls::Params::contact, balls::Contact(contactIndex)),
-                    rescale(ballsParams, "engine.dt", &balls::Params::dt, float(frame / substeps)),
-                    rescale(ballsParams, "engine.substeps", &balls::Params::substeps, substeps)};
+      c.settings = {pick("engine.contact", &balls::Params::contact, balls::Contact(contactIndex)),
+                    rescale("engine.dt", &balls::Params::dt, float(frame / substeps)),
+                    rescale("engine.substeps", &balls::Params::substeps, substeps)};
       if (!integrator.empty())
-        c.settings.push_back(
-            pick(ballsParams, "engine.integrator", &balls::Params::integrator, balls::Integrator(integratorIndex)));
+        c.settings.push_back(pick("engine.integrator", &balls::Params::integrator, balls::Integrator(integratorIndex)));
       if (stepsPerContact > 0 && contact == "spring-dashpot")
-        c.settings.push_back(pick(ballsParams, "engine.contact_time", &balls::Params::contactTime, float(contactTime)));
+        c.settings.push_back(pick("engine.contact_time", &balls::Params::contactTime, float(contactTime)));
       out.push_back(std::move(c));
     }
   return out;

@@ -102,19 +102,18 @@ void visit(ParamVisitor& v, BallsViewSettings& s) {
 
 void visit(ParamVisitor& v, BallsSceneParams& p) { visitAll(v, p.model, p.view); }
 
-SceneParams parseBallsParams(const io::Json& params, const std::string& where) {
-  return readSceneParams<BallsSceneParams>(params, where);
-}
-
-balls::Params& ballsParams(SceneParams& params) { return params.as<BallsSceneParams>().model; }
-const balls::Params& ballsParams(const SceneParams& params) { return params.as<BallsSceneParams>().model; }
-
 const BallsSceneParams& ballsScene(const Scene& scene) {
   if (scene.model != "balls") throw Error(scene.file.string() + ": not a balls scene (model " + scene.model + ")");
   return scene.params.as<BallsSceneParams>();
 }
 
 balls::Params ballsParams(const Scene& scene) { return ballsScene(scene).model; }
+
+namespace {
+
+SceneParams parseBallsParams(const io::Json& params, const std::string& where) {
+  return readSceneParams<BallsSceneParams>(params, where);
+}
 
 std::unique_ptr<Stage> createBallsStage(const SceneParams& params, const std::string& where,
                                         gl::ShaderLibrary& shaders) {
@@ -124,6 +123,13 @@ std::unique_ptr<Stage> createBallsStage(const SceneParams& params, const std::st
   } catch (const Error& e) {  // e.g. a missing or open obstacle mesh: say which scene asked for it
     throw Error(where + ": " + e.what());
   }
+}
+
+}  // namespace
+
+ModelEntry ballsModel() {
+  return {"balls", "water as equal balls colliding: grid neighbours, three contact laws, three integrators",
+          parseBallsParams, createBallsStage};
 }
 
 }  // namespace tidepool

@@ -29,12 +29,8 @@ struct BallsSceneParams {
 void visit(ParamVisitor& v, BallsViewSettings& s);
 void visit(ParamVisitor& v, BallsSceneParams& p);
 
-SceneParams parseBallsParams(const io::Json& params, const std::string& where);
-std::unique_ptr<Stage> createBallsStage(const SceneParams& params, const std::string& where,
-                                        gl::ShaderLibrary& shaders);
+ModelEntry ballsModel();  // "balls" in scene files
 
-balls::Params& ballsParams(SceneParams& params);  // the model's part (method auto edits it)
-const balls::Params& ballsParams(const SceneParams& params);
 // A balls scene's params; throws Error naming the file when the scene is another model's.
 const BallsSceneParams& ballsScene(const Scene& scene);
 balls::Params ballsParams(const Scene& scene);  // ballsScene(scene).model

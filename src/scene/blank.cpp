@@ -28,12 +28,21 @@ class BlankStage final : public Stage {
 
 void visit(ParamVisitor& v, BlankParams& p) { v.color({"color", "Colour", "clear colour, linear RGB"}, p.color); }
 
+namespace {
+
 SceneParams parseBlankParams(const io::Json& params, const std::string& where) {
   return readSceneParams<BlankParams>(params, where);
 }
 
 std::unique_ptr<Stage> createBlankStage(const SceneParams& params, const std::string&, gl::ShaderLibrary&) {
   return std::make_unique<BlankStage>(params.as<BlankParams>());
+}
+
+}  // namespace
+
+ModelEntry blankModel() {
+  return {"blank", "no simulation: clears to a colour (the shell before any model)", parseBlankParams,
+          createBlankStage};
 }
 
 }  // namespace tidepool

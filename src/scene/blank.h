@@ -11,8 +11,6 @@ struct BlankParams {
 };
 void visit(ParamVisitor& v, BlankParams& p);
 
-SceneParams parseBlankParams(const io::Json& params, const std::string& where);
-std::unique_ptr<Stage> createBlankStage(const SceneParams& params, const std::string& where,
-                                        gl::ShaderLibrary& shaders);
+ModelEntry blankModel();  // "blank" in scene files
 
 }  // namespace tidepool

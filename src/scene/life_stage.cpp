@@ -225,10 +225,6 @@ class LifeStage final : public Stage {
   bool m_cameraPlaced = false;
 };
 
-}  // namespace
-
-namespace {
-
 // A life scene's "params": the setup's keys, "model" (stepping) and "view".
 struct LifeSceneParams {
   Setup setup;
@@ -248,8 +244,6 @@ void visit(ParamVisitor& v, LifeSceneParams& p) {
   }
 }
 
-}  // namespace
-
 SceneParams parseLifeParams(const io::Json& params, const std::string& where) {
   return readSceneParams<LifeSceneParams>(params, where);
 }
@@ -267,6 +261,13 @@ std::unique_ptr<Stage> createLifeStage(const SceneParams& params, const std::str
     life::validateRules(rules, where);
   }
   return std::make_unique<LifeStage>(shaders, rules, setup, p.model, p.view);
+}
+
+}  // namespace
+
+ModelEntry lifeModel() {
+  return {"life", "particle life: species with asymmetric forces, glow + HDR view, shareable rules", parseLifeParams,
+          createLifeStage};
 }
 
 }  // namespace tidepool

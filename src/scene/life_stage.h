@@ -10,7 +10,6 @@
 
 namespace tidepool {
 
-SceneParams parseLifeParams(const io::Json& params, const std::string& where);
-std::unique_ptr<Stage> createLifeStage(const SceneParams& params, const std::string& where, gl::ShaderLibrary& shaders);
+ModelEntry lifeModel();  // "life" in scene files
 
 }  // namespace tidepool

@@ -118,18 +118,12 @@ class RipplesStage final : public Stage {
   bool m_pressed = false;
 };
 
-}  // namespace
-
-namespace {
-
 // A ripples scene's "params": the model's keys, "view" and "drops" (sorted by time).
 struct RipplesSceneParams {
   ripples::Params model;
   ViewSettings view;
   std::vector<Drop> drops;
 };
-
-}  // namespace
 
 SceneParams parseRipplesParams(const io::Json& params, const std::string& where) {
   RipplesSceneParams p;
@@ -167,12 +161,16 @@ SceneParams parseRipplesParams(const io::Json& params, const std::string& where)
   return SceneParams(std::move(p));
 }
 
-ripples::Params& ripplesParams(SceneParams& params) { return params.as<RipplesSceneParams>().model; }
-const ripples::Params& ripplesParams(const SceneParams& params) { return params.as<RipplesSceneParams>().model; }
-
 std::unique_ptr<Stage> createRipplesStage(const SceneParams& params, const std::string&, gl::ShaderLibrary& shaders) {
   const RipplesSceneParams& p = params.as<RipplesSceneParams>();
   return std::make_unique<RipplesStage>(shaders, p.model, p.view, p.drops);
+}
+
+}  // namespace
+
+ModelEntry ripplesModel() {
+  return {"ripples", "heightfield water: wave equation or the seed's spring model, 2D refraction view",
+          parseRipplesParams, createRipplesStage};
 }
 
 }  // namespace tidepool

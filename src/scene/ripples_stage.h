@@ -3,15 +3,9 @@
 #pragma once
 
 #include "scene/stage.h"
-#include "sim/ripples/ripples_params.h"
 
 namespace tidepool {
 
-SceneParams parseRipplesParams(const io::Json& params, const std::string& where);
-std::unique_ptr<Stage> createRipplesStage(const SceneParams& params, const std::string& where,
-                                          gl::ShaderLibrary& shaders);
-
-ripples::Params& ripplesParams(SceneParams& params);  // the model's part (method auto edits it)
-const ripples::Params& ripplesParams(const SceneParams& params);
+ModelEntry ripplesModel();  // "ripples" in scene files
 
 }  // namespace tidepool

@@ -141,18 +141,20 @@ class SwarmStage final : public Stage {
   double m_clock = 0.0;  // real seconds of frames shown: drives the hue cycle
 };
 
-}  // namespace
-
 SceneParams parseSwarmParams(const io::Json& params, const std::string& where) {
   return readSceneParams<SwarmSceneParams>(params, where);
 }
 
-sim::SwarmParams& swarmParams(SceneParams& params) { return params.as<SwarmSceneParams>().model; }
-const sim::SwarmParams& swarmParams(const SceneParams& params) { return params.as<SwarmSceneParams>().model; }
-
 std::unique_ptr<Stage> createSwarmStage(const SceneParams& params, const std::string&, gl::ShaderLibrary& shaders) {
   const SwarmSceneParams& p = params.as<SwarmSceneParams>();
   return std::make_unique<SwarmStage>(p.model, p.view, shaders);
+}
+
+}  // namespace
+
+ModelEntry swarmModel() {
+  return {"swarm", "millions of 2D particles pulled by animated attractors, one following the mouse", parseSwarmParams,
+          createSwarmStage};
 }
 
 }  // namespace tidepool

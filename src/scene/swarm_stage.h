@@ -7,15 +7,9 @@
 #pragma once
 
 #include "scene/stage.h"
-#include "sim/swarm/swarm_params.h"
 
 namespace tidepool {
 
-SceneParams parseSwarmParams(const io::Json& params, const std::string& where);
-std::unique_ptr<Stage> createSwarmStage(const SceneParams& params, const std::string& where,
-                                        gl::ShaderLibrary& shaders);
-
-sim::SwarmParams& swarmParams(SceneParams& params);  // the model's part (method auto edits it)
-const sim::SwarmParams& swarmParams(const SceneParams& params);
+ModelEntry swarmModel();  // "swarm" in scene files
 
 }  // namespace tidepool

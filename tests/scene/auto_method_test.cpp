@@ -9,11 +9,11 @@
 #include "base/error.h"
 #include "scene/auto_models.h"
 #include "scene/auto_select.h"
-#include "scene/balls_stage.h"
 #include "scene/param_json.h"
-#include "scene/ripples_stage.h"
 #include "scene/scene.h"
-#include "scene/swarm_stage.h"
+#include "sim/balls/balls_params.h"
+#include "sim/ripples/ripples_params.h"
+#include "sim/swarm/swarm_params.h"
 #include "support/gl_test.h"
 #include "support/run_process.h"
 #include "support/scene_error.h"
@@ -43,9 +43,9 @@ std::string swarmScene(const std::string& extra) {
 // The model's part of a scene's typed params as JSON (its keys as scene files name them).
 io::Json modelJson(const std::string& model, SceneParams params) {
   return writeParams([&](ParamVisitor& v) {
-    if (model == "balls") balls::visit(v, ballsParams(params));
-    if (model == "ripples") ripples::visit(v, ripplesParams(params));
-    if (model == "swarm") sim::visit(v, swarmParams(params));
+    if (model == "balls") balls::visit(v, params.model<balls::Params>());
+    if (model == "ripples") ripples::visit(v, params.model<ripples::Params>());
+    if (model == "swarm") sim::visit(v, params.model<sim::SwarmParams>());
   });
 }
 
@@ -197,7 +197,7 @@ TEST(AutoScene, FixedGridRipplesPickOnlyTheCourantNumber) {
                                            "s.json"),
                              "s.json");
   ASSERT_TRUE(s.autoChoice);
-  const ripples::Params& p = ripplesParams(s.params);
+  const ripples::Params& p = s.params.model<ripples::Params>();
   EXPECT_EQ(p.width, 64);  // the scene's grid stays
   EXPECT_EQ(p.cellSize, ripples::Params{}.cellSize);
   for (const Setting& setting : s.autoChoice->settings) EXPECT_NE(setting.key, "cell_size");

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "io/json.h"
-#include "scene/life_stage.h"
+#include "scene/scene.h"
 #include "sim/life/life_rules.h"
 #include "support/gl_test.h"
 #include "support/null_visitor.h"
@@ -38,7 +38,9 @@ io::Json smallScene() {
 }
 
 std::unique_ptr<Stage> lifeStage(const io::Json& params, gl::ShaderLibrary& shaders) {
-  return createLifeStage(parseLifeParams(params, "s.json: params"), "s.json: params", shaders);
+  Scene scene = parseScene({{"model", "life"}, {"params", params}}, "s.json");
+  scene.file = "s.json";
+  return createStage(scene, shaders);
 }
 }  // namespace
 

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "io/png.h"
-#include "scene/swarm_stage.h"
+#include "scene/scene.h"
 #include "sim/swarm/swarm_params.h"
 #include "support/gl_test.h"
 #include "support/null_visitor.h"
@@ -28,8 +28,8 @@ class SetInteger final : public test::NullVisitor {
 };
 
 std::unique_ptr<Stage> smallSwarm(gl::ShaderLibrary& shaders, const std::string& extra = "") {
-  const io::Json params = io::parseJson("{\"particles\": 5000" + extra + "}", "test");
-  return createSwarmStage(parseSwarmParams(params, "test: params"), "test: params", shaders);
+  const std::string scene = "{\"model\": \"swarm\", \"params\": {\"particles\": 5000" + extra + "}}";
+  return createStage(parseScene(io::parseJson(scene, "test"), "test"), shaders);
 }
 
 }  // namespace

@@ -9,9 +9,7 @@
 #include <numbers>
 
 #include "scene/balls_stage.h"
-#include "scene/ripples_stage.h"
 #include "scene/scene.h"
-#include "scene/swarm_stage.h"
 #include "sim/balls/balls_measure.h"
 #include "sim/ripples/ripples_measure.h"
 #include "sim/swarm/swarm.h"
@@ -40,7 +38,7 @@ TEST_F(AutoRealRun, SwarmPickMeetsItsEnergyDriftAndMovesLessStateThanTheMostAccu
   const Scene scene = loadScene(file);
   ASSERT_TRUE(scene.autoChoice);
   const double bound = scene.accuracy["energyDrift"];
-  const sim::SwarmParams& picked = swarmParams(scene.params);
+  const sim::SwarmParams& picked = scene.params.model<sim::SwarmParams>();
   ASSERT_GT(picked.maxDt, 0.0f);
   // At the picked step (a row of the study: a whole number of steps per orbit) ...
   const int stepsPerOrbit = int(std::lround(sim::orbitPeriod() / picked.maxDt));
@@ -54,7 +52,7 @@ TEST_F(AutoRealRun, SwarmPickMeetsItsEnergyDriftAndMovesLessStateThanTheMostAccu
 
   // Cost: the step is bound by memory traffic (shaders/swarm/swarm_step.comp reads and writes
   // each particle once), so state bytes per simulated second rank the settings.
-  const sim::SwarmParams& best = swarmParams(scene.autoChoice->mostAccurateParams);
+  const sim::SwarmParams& best = scene.autoChoice->mostAccurateParams.model<sim::SwarmParams>();
   auto bytesPerSimSecond = [](const sim::SwarmParams& p, double dt) {
     return 2.0 * double(sim::swarmBytesPerParticle(p.storage)) / dt;
   };
@@ -69,7 +67,7 @@ TEST_F(AutoRealRun, RipplesPickMeetsItsPhaseErrorAndUpdatesFewerCellsThanTheMost
   const Scene scene = loadScene(file);
   ASSERT_TRUE(scene.autoChoice);
   const double bound = scene.accuracy["phaseError"], wavelength = scene.accuracy["wavelength"];
-  const ripples::Params& picked = ripplesParams(scene.params);
+  const ripples::Params& picked = scene.params.model<ripples::Params>();
   const int cells = int(std::lround(wavelength / picked.cellSize));
   const double k = 2 * std::numbers::pi / cells;
   const double pickedCourant = picked.courantTarget * ripples::kCourantLimit2D;
@@ -80,7 +78,7 @@ TEST_F(AutoRealRun, RipplesPickMeetsItsPhaseErrorAndUpdatesFewerCellsThanTheMost
   EXPECT_LE(sceneCourant, pickedCourant * (1 + 1e-6));
   EXPECT_LE(std::abs(ripples::measuredPhaseRatio(shaders(), 2 * cells, 8, k, 0.0, sceneCourant, 3.0) - 1.0), bound);
 
-  const ripples::Params& best = ripplesParams(scene.autoChoice->mostAccurateParams);
+  const ripples::Params& best = scene.autoChoice->mostAccurateParams.model<ripples::Params>();
   auto cellUpdatesPerSimSecond = [&](const ripples::Params& p) {
     return double(p.width) * p.height * ripples::substepsFor(p, frame) / frame;
   };
@@ -100,7 +98,7 @@ TEST_F(AutoRealRun, BallsPickMeetsItsRestitutionErrorInFewerStepsThanTheMostAccu
       balls::measureBounce(shaders(), picked.integrator, picked.restitution, picked.contactTime / picked.dt);
   EXPECT_LE(std::abs(b.restitution / picked.restitution - 1.0), bound);
 
-  const balls::Params& best = ballsParams(scene.autoChoice->mostAccurateParams);
+  const balls::Params& best = scene.autoChoice->mostAccurateParams.model<balls::Params>();
   EXPECT_NEAR(picked.dt * picked.substeps, best.dt * best.substeps, 1e-6);  // the frame's simulated time is kept
   EXPECT_LT(scene.autoChoice->costMsPerSimS, scene.autoChoice->mostAccurateCost);
   EXPECT_LT(1.0 / picked.dt, 1.0 / best.dt);  // steps per simulated second
