@@ -74,11 +74,7 @@ int run(Env& env, const Options& o) {
         table.add(row);
       }
   }
-  table.print();
-  if (const std::string caveat = timingCaveat(env.device); !caveat.empty())
-    std::printf("%s; frame ms is the wall clock there\n", caveat.c_str());
-  if (!env.common.csv.empty()) table.writeCsv(env.common.csv);
-  return 0;
+  return finish(env, table, "; frame ms is the wall clock there");
 }
 
 }  // namespace
