@@ -1,4 +1,5 @@
-// The table of models a scene can name. Each model adds one line here when it lands.
+// The table of models a scene can name. Each model adds its entry here when it lands (ballsModel() ...:
+// name, summary, and how its params are read and its stage built, from its stage file).
 #include "scene/balls_stage.h"
 #include "scene/blank.h"
 #include "scene/life_stage.h"

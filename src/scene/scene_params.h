@@ -1,8 +1,8 @@
 // A scene's "params", typed: one struct per model holding the model's Params and its view's
 // (BallsSceneParams: balls::Params + the look and camera). The scene file's "params" object is read
-// into it once, when the scene loads (the model's parse in scene/models.cpp, through its
-// ParamVisitor declaration, so errors name the key); "method": "auto" writes its pick into the
-// typed fields; the stage is built from it. Held by value, so a Scene copies like any struct.
+// into it once, when the scene loads (ModelEntry::parse, scene/stage.h: the model's ParamVisitor
+// declaration, so errors name the key); "method": "auto" writes its pick into the typed fields;
+// the stage is built from it. Held by value, so a Scene copies like any struct.
 //
 //   const Scene scene = loadScene("assets/scenes/balls-auto.json");
 //   const balls::Params& p = scene.params.model<balls::Params>();  // engine.dt, substeps as auto picked

@@ -13,8 +13,8 @@ namespace tidepool::test {
 
 // Runs tidepool with `args` (and `env`); expects exit status `code`, no crash, and a single
 // stderr line containing `expected`. Returns the run for further checks.
-inline ProcessResult expectOneLineError(const std::vector<std::string>& args, const std::string& expected,
-                                        int code = 1, const std::vector<std::string>& env = {}) {
+inline ProcessResult expectOneLineError(const std::vector<std::string>& args, const std::string& expected, int code = 1,
+                                        const std::vector<std::string>& env = {}) {
   std::string command = "tidepool";
   for (const std::string& a : args) command += " " + a;
   const ProcessResult r = runTidepool(args, env);
