@@ -53,11 +53,7 @@ int run(Env& env, const std::string& sceneName, const std::string& sizes, const 
                  fixed(t.median("balls.obstacles"), 4), fixed(perStep, 4),
                  fixed(perStep > 0 ? 1000.0 / perStep : 0.0, 0), std::to_string(model.bytesPerBall())});
     }
-  table.print();
-  if (const std::string caveat = timingCaveat(env.device); !caveat.empty())
-    std::printf("%s; its per-pass timer queries read 0\n", caveat.c_str());
-  if (!env.common.csv.empty()) table.writeCsv(env.common.csv);
-  return 0;
+  return finish(env, table, "; its per-pass timer queries read 0");
 }
 
 }  // namespace

@@ -69,15 +69,12 @@ bool softwareRenderer() {  // declared in bench.h
   return renderer.find("llvmpipe") != std::string::npos || renderer.find("softpipe") != std::string::npos;
 }
 
-double gpuMedianMs(const Common& c, const std::function<void()>& work) {
-  // A software renderer's timer queries do not measure its execution: time it on the wall clock
-  // between two glFinish calls instead.
-  static const bool software = softwareRenderer();
+double medianMs(const Common& c, bool wallClock, const std::function<void()>& work) {
   gl::Query query = gl::Query::create();
   for (int i = 0; i < c.warmup; ++i) work();
   std::vector<double> ms;
   for (int i = 0; i < c.repeats; ++i) {
-    if (software) {
+    if (wallClock) {
       glFinish();
       const auto start = std::chrono::steady_clock::now();
       work();
@@ -93,6 +90,11 @@ double gpuMedianMs(const Common& c, const std::function<void()>& work) {
     ms.push_back(double(ns) * 1e-6);
   }
   return median(ms);
+}
+
+double gpuMedianMs(const Common& c, const std::function<void()>& work) {
+  static const bool software = softwareRenderer();  // its timer queries do not measure its execution
+  return medianMs(c, software, work);
 }
 
 double PassTimes::median(const std::string& pass) const {
@@ -141,6 +143,25 @@ std::string timingCaveat(const std::string& device) {
          "only (GPU figures: docs/PERFORMANCE.md)";
 }
 
+int finish(const Env& env, const Table& table, const std::string& note) {
+  table.print();
+  return finishPrinted(env, table, note);
+}
+
+int finishPrinted(const Env& env, const Table& table, const std::string& note) {
+  if (const std::string caveat = timingCaveat(env.device); !caveat.empty())
+    std::printf("%s%s\n", caveat.c_str(), note.c_str());
+  if (!env.common.csv.empty()) table.writeCsv(env.common.csv);
+  return 0;
+}
+
+std::vector<std::string> splitCommas(const std::string& text) {
+  std::vector<std::string> out;
+  std::stringstream ss(text);
+  for (std::string item; std::getline(ss, item, ',');) out.push_back(item);
+  return out;
+}
+
 std::string fixed(double value, int decimals) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.*f", decimals, value);
@@ -165,8 +186,7 @@ std::vector<std::size_t> parseSizes(const std::string& text) {
     throw Error("size '" + token + "' is not a number like 65536, 64k, 16M, 1G or 2^20");
   };
   std::vector<std::size_t> out;
-  std::stringstream ss(text);
-  for (std::string token; std::getline(ss, token, ',');) {
+  for (const std::string& token : splitCommas(text)) {
     std::smatch m;
     if (std::regex_match(token, m, range)) {
       for (int k = std::stoi(m[1]); k <= std::stoi(m[2]) && k < 40; ++k) out.push_back(std::size_t(1) << k);
@@ -182,16 +202,13 @@ std::vector<std::size_t> parseSizes(const std::string& text) {
 }
 
 std::vector<grid::ReorderMode> parseReorderModes(const std::string& text) {
-  std::vector<grid::ReorderMode> out;
-  std::stringstream ss(text);
-  for (std::string token; std::getline(ss, token, ',');) {
+  auto one = [](const std::string& token) {
     const auto& names = grid::kReorderModeNames;
     const auto it = std::find(names.begin(), names.end(), token);
     if (it == names.end()) throw Error("--reorder '" + token + "' is not scatter or gather");
-    out.push_back(grid::ReorderMode(it - names.begin()));
-  }
-  if (out.empty()) throw Error("--reorder: no modes given (scatter, gather or scatter,gather)");
-  return out;
+    return grid::ReorderMode(it - names.begin());
+  };
+  return parseList(text, one, "--reorder: no modes given (scatter, gather or scatter,gather)");
 }
 
 }  // namespace tidepool::bench

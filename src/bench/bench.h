@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "base/error.h"
 #include "gl/context.h"
 #include "gl/gpu_profiler.h"
 #include "gl/shader_library.h"
@@ -55,9 +56,12 @@ class Table {
 
 double median(std::vector<double> values);
 
-// Median GPU milliseconds (GL_TIME_ELAPSED) of `work` over common.repeats runs, after
-// common.warmup untimed runs. `work` must not open GpuProfiler scopes (queries cannot nest).
-// On a software renderer (llvmpipe) the wall clock around glFinish is used instead.
+// Median milliseconds of `work` over common.repeats runs, after common.warmup untimed runs: GPU
+// time from a GL_TIME_ELAPSED query around each run, or with `wallClock` the wall clock between
+// two glFinish calls (for drivers whose timer queries do not measure execution: llvmpipe reports
+// 1 ns). `work` must not open GpuProfiler scopes (queries cannot nest).
+double medianMs(const Common& common, bool wallClock, const std::function<void()>& work);
+// medianMs on the wall clock on a software renderer (softwareRenderer()), else GPU time.
 double gpuMedianMs(const Common& common, const std::function<void()>& work);
 
 // Per-pass times of a run of profiled frames (balls steps, renderer frames): `frame` is called
@@ -84,7 +88,23 @@ bool softwareRenderer();
 
 // A line to print under tables measured on a software renderer (empty for hardware).
 std::string timingCaveat(const std::string& device);
+// A benchmark's last lines: `table`, the timing caveat (followed by `note`, e.g. "; frame ms is the
+// wall clock there") and `table` as CSV when --csv asks for it. Returns 0, the exit status.
+int finish(const Env& env, const Table& table, const std::string& note = "");
+// The same after `table` was printed (life prints its crossover table between the two).
+int finishPrinted(const Env& env, const Table& table, const std::string& note = "");
 std::string fixed(double value, int decimals);
+// "a,b" -> {"a", "b"}; an empty item stays (",b" -> {"", "b"}) for the parser to refuse.
+std::vector<std::string> splitCommas(const std::string& text);
+// Each item of a comma list read by `one` (which throws Error naming a bad item); throws
+// Error(`none`) when there is no item.
+template <class One>
+auto parseList(const std::string& text, One&& one, const std::string& none) {
+  std::vector<decltype(one(std::string()))> out;
+  for (const std::string& item : splitCommas(text)) out.push_back(one(item));
+  if (out.empty()) throw Error(none);
+  return out;
+}
 // "65536,1M,16M", "2^16..2^24" or "512..4096" (doubling) -> sizes; throws Error naming the bad token.
 std::vector<std::size_t> parseSizes(const std::string& text);
 // "scatter,gather" -> grid reorder modes in that order; throws Error naming the bad token.

@@ -18,18 +18,15 @@
 // Every number is the median of --repeats GL_TIME_ELAPSED queries after --warmup untimed runs.
 #include <algorithm>
 #include <cctype>
-#include <chrono>
 #include <cmath>
 #include <iterator>
 #include <memory>
 #include <random>
-#include <sstream>
 
 #include "base/error.h"
 #include "bench/bench.h"
 #include "gl/buffer.h"
 #include "gl/buffer_ops.h"
-#include "gl/framebuffer.h"  // gl::Query
 #include "grid/grid.h"
 #include "grid/prefix_scan.h"
 
@@ -45,36 +42,6 @@ struct GridOptions {
   bool noCheck = false;              // skip comparing every row's results with the CPU
 };
 
-// Median time (ms) of `work` over the common repeats after the warmup runs. GPU time from
-// GL_TIME_ELAPSED queries, read after all are issued; on drivers whose timer queries are not
-// meaningful (llvmpipe reports 1 ns) wall-clock time around glFinish() instead.
-template <class F>
-double medianMs(const Common& common, bool wallClock, F&& work) {
-  for (int i = 0; i < common.warmup; ++i) work();
-  std::vector<double> ms;
-  std::vector<gl::Query> queries;
-  for (int r = 0; r < common.repeats; ++r) {
-    if (wallClock) {
-      glFinish();
-      const auto start = std::chrono::steady_clock::now();
-      work();
-      glFinish();
-      ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-      continue;
-    }
-    queries.push_back(gl::Query::create());
-    glBeginQuery(GL_TIME_ELAPSED, queries.back().id());
-    work();
-    glEndQuery(GL_TIME_ELAPSED);
-  }
-  for (const gl::Query& q : queries) {
-    GLuint64 ns = 0;
-    glGetQueryObjectui64v(q.id(), GL_QUERY_RESULT, &ns);
-    ms.push_back(double(ns) * 1e-6);
-  }
-  return median(ms);
-}
-
 // True when GL_TIME_ELAPSED reports under 1% of the wall-clock time of a 64 MiB copy.
 bool timerQueriesAreBroken() {
   gl::Buffer a(64 << 20), b(64 << 20);
@@ -89,24 +56,19 @@ bool timerQueriesAreBroken() {
 double gbps(double bytes, double ms) { return ms > 0 ? bytes / (ms * 1e6) : 0; }
 
 std::vector<double> parsePerCell(const std::string& text) {
-  std::vector<double> out;
-  std::stringstream ss(text);
-  for (std::string token; std::getline(ss, token, ',');) {
+  auto one = [](const std::string& token) {
     char* end = nullptr;
     const double v = std::strtod(token.c_str(), &end);
     if (end == token.c_str() || *end || !(v > 0)) throw Error("--ppc '" + token + "' is not a positive number");
-    out.push_back(v);
-  }
-  if (out.empty()) throw Error("--ppc: no values given");
-  return out;
+    return v;
+  };
+  return parseList(text, one, "--ppc: no values given");
 }
 
 // "256x4,512x8,256x4p,256x4f0" -> scan shapes (invocations x uvec4 per invocation; p: scan-then-propagate;
 // f<B>: fuse the offsets into the block scan for levels of up to B blocks, f0 never; default ScanConfig's).
 std::vector<grid::ScanConfig> parseShapes(const std::string& text) {
-  std::vector<grid::ScanConfig> out;
-  std::stringstream ss(text);
-  for (std::string token; std::getline(ss, token, ',');) {
+  auto one = [](const std::string& token) {
     unsigned g = 0, v = 0, fuse = 0;
     int end = 0, fuseEnd = 0;
     grid::ScanConfig config;
@@ -126,10 +88,9 @@ std::vector<grid::ScanConfig> parseShapes(const std::string& text) {
                   "p: scan-then-propagate, f<B>: sum the block offsets in the block scan up to B blocks)");
     config.groupSize = g;
     config.vecsPerThread = v;
-    out.push_back(config);
-  }
-  if (out.empty()) throw Error("--scan-shapes: no shapes given");
-  return out;
+    return config;
+  };
+  return parseList(text, one, "--scan-shapes: no shapes given");
 }
 
 std::string shapeText(const grid::ScanConfig& c) {

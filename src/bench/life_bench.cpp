@@ -141,9 +141,7 @@ int run(Env& env, const LifeOptions& o) {
     else
       std::printf("crossover: the brute force was faster at every size measured\n");
   }
-  if (const std::string caveat = timingCaveat(env.device); !caveat.empty()) std::printf("%s\n", caveat.c_str());
-  if (!env.common.csv.empty()) table.writeCsv(env.common.csv);
-  return 0;
+  return finishPrinted(env, table);
 }
 
 }  // namespace

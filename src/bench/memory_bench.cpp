@@ -44,10 +44,7 @@ int run(Env& env, const std::string& sizes) {
     table.add({sizeText(bytes), fixed(copyMs, 4), gbps(2.0 * bytes, copyMs), gbps(2.0 * bytes, glCopyMs),
                gbps(double(bytes), fillMs), gbps(double(bytes), clearMs)});
   }
-  table.print();
-  if (const std::string caveat = timingCaveat(env.device); !caveat.empty()) std::printf("%s\n", caveat.c_str());
-  if (!env.common.csv.empty()) table.writeCsv(env.common.csv);
-  return 0;
+  return finish(env, table);
 }
 
 }  // namespace

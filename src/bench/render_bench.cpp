@@ -42,10 +42,8 @@ std::vector<BallsRaster> parseRaster(const std::string& text) {
 
 int run(Env& env, const Options& o) {
   const Scene scene = loadScene(resolveScenePath(o.scene));
-  const balls::Params base = ballsParams(scene);
-  BallsViewParams look;
-  OrbitCameraParams camera;
-  ballsView(scene, look, camera);
+  const BallsSceneParams& params = ballsScene(scene);
+  const balls::Params& base = params.model;
   const glm::ivec2 image = parseImage(o.image);
   const std::vector<BallsRaster> rasters = parseRaster(o.raster);
   const bool lattice = base.fill == balls::Fill::Lattice;
@@ -61,8 +59,8 @@ int run(Env& env, const Options& o) {
     for (int i = 0; i < o.settle; ++i) model.stepOnce();
     RenderTarget target(image.x, image.y);
     BallsView view(env.shaders);
-    view.params() = look;
-    view.camera().params() = camera;
+    view.params() = params.view.look;
+    view.camera().params() = params.view.camera;
     for (BallsRaster raster : rasters)
       for (BallsMode mode : {BallsMode::Balls, BallsMode::Water}) {
         view.params().raster = raster;
@@ -76,11 +74,7 @@ int run(Env& env, const Options& o) {
         table.add(row);
       }
   }
-  table.print();
-  if (const std::string caveat = timingCaveat(env.device); !caveat.empty())
-    std::printf("%s; frame ms is the wall clock there\n", caveat.c_str());
-  if (!env.common.csv.empty()) table.writeCsv(env.common.csv);
-  return 0;
+  return finish(env, table, "; frame ms is the wall clock there");
 }
 
 }  // namespace

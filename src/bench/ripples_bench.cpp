@@ -53,10 +53,7 @@ int run(Env& env, const std::string& sizes, bool raster) {
     table.add({std::to_string(size) + "^2", fixed(stepMs, 4), fixed(gbps, 1), fixed(copyGbps, 1),
                fixed(100.0 * gbps / copyGbps, 1), fixed(viewMs, 4), fixed(view3dMs, 4)});
   }
-  table.print();
-  if (const std::string caveat = timingCaveat(env.device); !caveat.empty()) std::printf("%s\n", caveat.c_str());
-  if (!env.common.csv.empty()) table.writeCsv(env.common.csv);
-  return 0;
+  return finish(env, table);
 }
 
 }  // namespace

@@ -9,7 +9,6 @@
 #include <cstdio>
 #include <functional>
 #include <memory>
-#include <sstream>
 
 #include "base/error.h"
 #include "bench/bench.h"
@@ -29,11 +28,9 @@ struct SwarmBenchOptions {
   bool render = true;
 };
 
-std::vector<std::string> splitList(const std::string& text) {
-  std::vector<std::string> out;
-  std::stringstream ss(text);
-  for (std::string token; std::getline(ss, token, ',');)
-    if (!token.empty()) out.push_back(token);
+std::vector<std::string> splitList(const std::string& text) {  // empty items are skipped
+  std::vector<std::string> out = splitCommas(text);
+  std::erase(out, std::string());
   return out;
 }
 
@@ -123,10 +120,7 @@ int runSwarmBench(Env& env, const SwarmBenchOptions& o) {
       }
     }
   }
-  table.print();
-  if (const std::string caveat = timingCaveat(env.device); !caveat.empty()) std::printf("%s\n", caveat.c_str());
-  if (!env.common.csv.empty()) table.writeCsv(env.common.csv);
-  return 0;
+  return finish(env, table);
 }
 
 }  // namespace

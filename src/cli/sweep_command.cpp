@@ -65,7 +65,7 @@ Command addSweep(CLI::App& app) {
         for (const auto& [app, study] : *chosen) {
           if (!app->parsed()) continue;
           std::printf("sweep %s on %s%s\n", study->name, env.device.c_str(), o->quick ? " (quick)" : "");
-          const sweep::Result result = study->run(env);
+          const sweep::Result result = sweep::runStudy(*study, env);
           const std::filesystem::path csv = std::filesystem::path(o->csvDir) / (std::string(study->name) + ".csv");
           sweep::writeCsv(result, study->name, env.device, csv);
           sweep::writeChartSpec(result, std::filesystem::path(o->csvDir) / (std::string(study->name) + ".chart.json"));

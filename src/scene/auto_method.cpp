@@ -65,22 +65,30 @@ Tables readTables(const Source& source) {
   return tables;
 }
 
-// A key the pick sets that the scene sets too (other than the ones the pick rescales) would be
-// silently overridden: refuse it instead.
-void checkConflicts(const io::Json& params, const io::Json& settings, const std::string& model,
-                    const std::string& where, const std::string& prefix = "") {
-  if (!params.is_object()) return;
-  const std::vector<std::string> rescaled = rescaledParams(model);
-  for (const auto& [key, value] : settings.items()) {
-    const std::string pointer = prefix + "/" + key;
-    if (value.is_object() && params.contains(key)) {
-      checkConflicts(params.at(key), value, model, where, pointer);
-    } else if (params.contains(key) && std::find(rescaled.begin(), rescaled.end(), pointer) == rescaled.end()) {
-      std::string dotted = pointer.substr(1);
-      std::replace(dotted.begin(), dotted.end(), '/', '.');
-      throw Error(where + ": params." + dotted + " is picked by \"method\": \"auto\"; remove it (or the auto method)");
-    }
+// Whether the scene's "params" object as written states `key` ("engine.dt"): the typed params
+// cannot tell a stated value from a default.
+bool states(const io::Json& params, const std::string& key) {
+  const io::Json* at = &params;
+  for (std::size_t start = 0;;) {
+    const std::size_t dot = key.find('.', start);
+    const std::string name = key.substr(start, dot - start);
+    if (!at->is_object() || !at->contains(name)) return false;
+    at = &at->at(name);
+    if (dot == std::string::npos) return true;
+    start = dot + 1;
   }
+}
+
+// A key the pick sets that the scene sets too (other than the ones the pick rescales) would be
+// silently overridden: refuse it instead, naming the first in key order.
+void checkConflicts(const io::Json& stated, const Settings& settings, const std::string& where) {
+  std::vector<std::string> keys;
+  for (const Setting& s : settings)
+    if (!s.rescaled) keys.push_back(s.key);
+  std::sort(keys.begin(), keys.end());
+  for (const std::string& key : keys)
+    if (states(stated, key))
+      throw Error(where + ": params." + key + " is picked by \"method\": \"auto\"; remove it (or the auto method)");
 }
 
 }  // namespace
@@ -134,7 +142,7 @@ fs::path shipStudy(const std::string& study, const fs::path& csv) {
   return dest;
 }
 
-void resolveAutoMethod(Scene& scene, const std::string& sceneWhere) {
+void resolveAutoMethod(Scene& scene, const io::Json& stated, const std::string& sceneWhere) {
   const std::string where = sceneWhere + ": scene.accuracy";
   if (scene.method != MethodMode::Auto) {
     if (!scene.accuracy.is_null())
@@ -159,9 +167,9 @@ void resolveAutoMethod(Scene& scene, const std::string& sceneWhere) {
                                       : scene.model == "ripples" ? ripplesCandidates(in)
                                                                  : ballsCandidates(in);
   const Selection s = selectCheapest(candidates, bounds, where);
-  checkConflicts(scene.params, s.chosen->settings, scene.model, sceneWhere);
-  if (!scene.params.is_object()) scene.params = io::Json::object();
-  scene.params.merge_patch(s.chosen->settings);
+  checkConflicts(stated, s.chosen->settings, sceneWhere);
+  const SceneParams asStated = scene.params;
+  write(s.chosen->settings, scene.params);
 
   AutoChoice c;
   std::set<std::string> devices;
@@ -179,7 +187,8 @@ void resolveAutoMethod(Scene& scene, const std::string& sceneWhere) {
   c.mostAccurate = s.mostAccurate->label;
   c.mostAccurateCost = s.mostAccurate->cost;
   c.settings = s.chosen->settings;
-  c.mostAccurateSettings = s.mostAccurate->settings;
+  c.mostAccurateParams = asStated;
+  write(s.mostAccurate->settings, c.mostAccurateParams);
   log::info(c.summary());
   scene.autoChoice = c;
 }

@@ -11,7 +11,7 @@
 //   balls    energyDrift        balls-settle                       energy_drift
 //   balls    restitutionError   balls-restitution                  restitution_error
 //
-// The pick is written into the scene's params (integrator, storage, dt, substeps, Courant
+// The pick is written into the scene's typed params (integrator, storage, dt, substeps, Courant
 // target, grid), logged at load and shown in the window's parameter panel.
 #pragma once
 
@@ -21,6 +21,8 @@
 #include <vector>
 
 #include "io/json.h"
+#include "scene/auto_select.h"
+#include "scene/scene_params.h"
 
 namespace tidepool {
 
@@ -32,24 +34,25 @@ inline constexpr std::array<const char*, 2> kMethodModeNames = {"params", "auto"
 
 // What "method": "auto" picked, for the log and the UI.
 struct AutoChoice {
-  std::string accuracy;           // the bounds as stated: "energyDrift <= 0.001"
-  std::string picked;             // the settings in words: "rk4 fp32, dt <= 0.0628 s"
-  std::string errors;             // its measured (worst-case) errors: "energyDrift 3.74e-05"
-  double costMsPerSimS = 0;       // its cost in the study's column
-  std::string mostAccurate;       // the most accurate measured setting, in words
-  double mostAccurateCost = 0;    // and its cost
-  std::string studies, device;    // where the numbers come from
-  io::Json settings;              // the keys written into the scene's params
-  io::Json mostAccurateSettings;  // what the most accurate would have written (tests compare costs)
-  std::string summary() const;    // one line: "auto: picked ... (...; most accurate ... costs ...)"
+  std::string accuracy;            // the bounds as stated: "energyDrift <= 0.001"
+  std::string picked;              // the settings in words: "rk4 fp32, dt <= 0.0628 s"
+  std::string errors;              // its measured (worst-case) errors: "energyDrift 3.74e-05"
+  double costMsPerSimS = 0;        // its cost in the study's column
+  std::string mostAccurate;        // the most accurate measured setting, in words
+  double mostAccurateCost = 0;     // and its cost
+  std::string studies, device;     // where the numbers come from
+  automethod::Settings settings;   // the fields it wrote into the scene's params
+  SceneParams mostAccurateParams;  // the scene's params as the most accurate would have set them (tests compare)
+  std::string summary() const;     // one line: "auto: picked ... (...; most accurate ... costs ...)"
 };
 
 // Resolves "method": "auto" in place: validates scene.accuracy, picks from the shipped data,
-// writes the pick into scene.params and sets scene.autoChoice. A scene without "method": "auto"
-// must not state accuracy. Throws Error (one line naming the key) for unknown keys, keys of
-// another model, out-of-range values, missing data and bounds no measured setting meets.
+// writes the pick into the typed scene.params and sets scene.autoChoice. A scene without
+// "method": "auto" must not state accuracy. Throws Error (one line naming the key) for unknown
+// keys, keys of another model, out-of-range values, missing data, bounds no measured setting
+// meets, and params the pick would override that `stated` (the file's "params" object) states.
 // `where` prefixes messages (the scene file).
-void resolveAutoMethod(Scene& scene, const std::string& where);
+void resolveAutoMethod(Scene& scene, const io::Json& stated, const std::string& where);
 
 // Studies whose CSVs method auto reads: the ones `tidepool sweep <study> --ship` accepts.
 std::vector<std::string> shippedStudies();

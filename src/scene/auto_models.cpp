@@ -1,6 +1,7 @@
 #include "scene/auto_models.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -13,21 +14,36 @@
 namespace tidepool::automethod {
 namespace {
 
-// A number from the scene's params, or the model's default when absent (a wrong type is left
-// for the stage's own validation to report).
-double param(const io::Json& params, const char* pointer, double fallback) {
-  const io::Json::json_pointer p(pointer);
-  return params.is_object() && params.contains(p) && params.at(p).is_number() ? params.at(p).get<double>() : fallback;
-}
-std::string param(const io::Json& params, const char* pointer, const std::string& fallback) {
-  const io::Json::json_pointer p(pointer);
-  return params.is_object() && params.contains(p) && params.at(p).is_string() ? params.at(p).get<std::string>()
-                                                                              : fallback;
+// The number a scene wrote for a float parameter: the shortest decimal that reads back as that
+// float (0.0002f -> 0.0002), so that the frame's simulated time dt x substeps is the scene's
+// 0.0002 x 25 = 0.005 s, which the picked substeps then divide.
+double decimal(float value) {
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text, value).ptr;
+  double d = value;
+  std::from_chars(text, end, d);
+  return d;
 }
 
+// Index of `name` in a model's names, or -1.
 template <std::size_t N>
-bool known(const std::array<const char*, N>& names, const std::string& name) {
-  return std::find_if(names.begin(), names.end(), [&](const char* n) { return name == n; }) != names.end();
+int indexOf(const std::array<const char*, N>& names, const std::string& name) {
+  const auto it = std::find_if(names.begin(), names.end(), [&](const char* n) { return name == n; });
+  return it == names.end() ? -1 : int(it - names.begin());
+}
+
+// A setting of one field of the model's params, by its key in scene files and its member:
+// pick("engine.contact", &balls::Params::contact, balls::Contact::SpringDashpot).
+template <class Model, class T>
+Setting pick(const char* key, T Model::*field, std::type_identity_t<T> value) {
+  return {key, false, [field, value](SceneParams& p) { p.model<Model>().*field = value; }};
+}
+// One the scene may state too: the pick rescales it (the frame's time, the pool's size).
+template <class Model, class T>
+Setting rescale(const char* key, T Model::*field, std::type_identity_t<T> value) {
+  Setting s = pick(key, field, value);
+  s.rescaled = true;
+  return s;
 }
 
 // What every row holds: cost, stability and the metric columns of the stated bounds.
@@ -77,12 +93,6 @@ std::vector<std::string> extraKeys(const std::string& model) {
   return {};
 }
 
-std::vector<std::string> rescaledParams(const std::string& model) {
-  if (model == "ripples") return {"/width", "/height", "/cell_size"};
-  if (model == "balls") return {"/engine/dt", "/engine/substeps"};
-  return {};
-}
-
 // Swarm rows: method "<integrator>" (fp32) or "<integrator> <precision>"; dt is absolute. The
 // stage keeps each step at most max_dt by adding substeps.
 std::vector<Candidate> swarmCandidates(const ModelInput& in) {
@@ -93,14 +103,18 @@ std::vector<Candidate> swarmCandidates(const ModelInput& in) {
       std::string integrator, storage = "fp32", extra;
       words >> integrator;
       words >> storage;
-      if (words >> extra || !known(sim::kIntegratorNames, integrator) || !known(sim::kStorageNames, storage))
+      const int integratorIndex = indexOf(sim::kIntegratorNames, integrator);
+      const int storageIndex = indexOf(sim::kStorageNames, storage);
+      if (words >> extra || integratorIndex < 0 || storageIndex < 0)
         throw Error(t.where(r) + ": method '" + t.text(r, "method") + "' is not '<swarm integrator> [fp32|fp16]'");
       Candidate c = basics(in, t, r);
       const double dt = t.number(r, "dt");
       c.family = integrator + " " + storage;
       c.step = dt;
       c.label = c.family + ", dt <= " + formatValue(dt) + " s";
-      c.settings = {{"integrator", integrator}, {"storage", storage}, {"max_dt", dt}};
+      c.settings = {pick("integrator", &sim::SwarmParams::integrator, sim::Integrator(integratorIndex)),
+                    pick("storage", &sim::SwarmParams::storage, sim::Storage(storageIndex)),
+                    pick("max_dt", &sim::SwarmParams::maxDt, float(dt))};
       out.push_back(std::move(c));
     }
   return out;
@@ -110,18 +124,16 @@ std::vector<Candidate> swarmCandidates(const ModelInput& in) {
 // the scene's and only C is picked (from rows at the largest measured N not above it); with
 // "wavelength" (m) the pick also sets the cell size to wavelength / N, keeping the pool's size.
 std::vector<Candidate> ripplesCandidates(const ModelInput& in) {
-  const ripples::Params defaults;
-  const std::string rule = param(in.params, "/rule", std::string(ripples::kRuleNames[int(defaults.rule)]));
-  if (rule != "wave")
-    throw Error(in.where + ": the dispersion data measures the wave rule; this scene uses rule '" + rule + "'");
+  const ripples::Params& scene = in.params.model<ripples::Params>();
+  if (scene.rule != ripples::Rule::Wave)
+    throw Error(in.where + ": the dispersion data measures the wave rule; this scene uses rule '" +
+                ripples::kRuleNames[int(scene.rule)] + "'");
   const bool fixedGrid = in.accuracy.contains("wavelengthCells");
   if (fixedGrid == in.accuracy.contains("wavelength"))
     throw Error(in.where +
                 ": state the shortest wave that must keep its speed, as wavelength (m; the pick may change "
                 "the grid) or wavelengthCells (cells of the scene's grid), one of them");
-  const double width = param(in.params, "/width", defaults.width),
-               height = param(in.params, "/height", defaults.height);
-  const double cellSize = param(in.params, "/cell_size", defaults.cellSize);
+  const double width = scene.width, height = scene.height, cellSize = decimal(scene.cellSize);
   const double courantCap = kStabilityMargin * ripples::kCourantLimit2D;
   const io::CsvTable& t = in.tables.studies.at(0).second;
   double cells = 0;  // fixed grid: the measured N used for the scene
@@ -150,15 +162,16 @@ std::vector<Candidate> ripplesCandidates(const ModelInput& in) {
     Candidate c = basics(in, t, r);
     c.family = formatValue(n) + " cells per wavelength";
     c.step = courant;
-    c.settings = {{"auto_substeps", true}, {"courant_target", courant / ripples::kCourantLimit2D}};
+    c.settings = {pick("auto_substeps", &ripples::Params::autoSubsteps, true),
+                  pick("courant_target", &ripples::Params::courantTarget, float(courant / ripples::kCourantLimit2D))};
     c.label = "C <= " + formatValue(courant) + " at " + c.family;
     if (!fixedGrid) {
       const double dx = in.accuracy.at("wavelength").get<double>() / n;
       const int w = int(std::lround(width * cellSize / dx)), h = int(std::lround(height * cellSize / dx));
       if (w < 16 || h < 16 || w > 4096 || h > 4096 || dx < 1e-4 || dx > 10) continue;  // the grid's ranges
-      c.settings["cell_size"] = dx;
-      c.settings["width"] = w;
-      c.settings["height"] = h;
+      c.settings.push_back(rescale("cell_size", &ripples::Params::cellSize, float(dx)));
+      c.settings.push_back(rescale("width", &ripples::Params::width, w));
+      c.settings.push_back(rescale("height", &ripples::Params::height, h));
       c.label += " (" + std::to_string(w) + "x" + std::to_string(h) + " cells of " + formatValue(dx) + " m)";
     }
     out.push_back(std::move(c));
@@ -172,10 +185,9 @@ std::vector<Candidate> ripplesCandidates(const ModelInput& in) {
 // contact time to K dt). The frame keeps its simulated time (the scene's dt x substeps): substeps
 // grow until a step is at most the picked dt.
 std::vector<Candidate> ballsCandidates(const ModelInput& in) {
-  const balls::Params defaults;
-  const double sceneContactTime = param(in.params, "/engine/contact_time", defaults.contactTime);
-  const double frame =
-      param(in.params, "/engine/dt", defaults.dt) * param(in.params, "/engine/substeps", defaults.substeps);
+  const balls::Params& scene = in.params.model<balls::Params>();
+  const double sceneContactTime = decimal(scene.contactTime);
+  const double frame = decimal(scene.dt) * scene.substeps;
   std::vector<Candidate> out;
   for (const auto& [study, t] : in.tables.studies)
     for (std::size_t r = 0; r < t.rows(); ++r) {
@@ -191,8 +203,9 @@ std::vector<Candidate> ballsCandidates(const ModelInput& in) {
           stepsPerContact = -1;
         integrator = comma == std::string::npos ? "" : method.substr(comma + 2);
       }
-      if (!known(balls::kContactNames, contact) ||
-          (!integrator.empty() && !known(balls::kIntegratorNames, integrator)) || stepsPerContact < 0)
+      const int contactIndex = indexOf(balls::kContactNames, contact);
+      const int integratorIndex = integrator.empty() ? 0 : indexOf(balls::kIntegratorNames, integrator);
+      if (contactIndex < 0 || integratorIndex < 0 || stepsPerContact < 0)
         throw Error(t.where(r) + ": method '" + method + "' is not '<balls contact>[ tc = K dt][, <integrator>]'");
       Candidate c = basics(in, t, r);
       double dt = t.number(r, "dt"), contactTime = sceneContactTime;
@@ -215,9 +228,13 @@ std::vector<Candidate> ballsCandidates(const ModelInput& in) {
       if (substeps > 1000) continue;  // the param's range
       c.family = method;
       c.label = contact + (integrator.empty() ? "" : ", " + integrator) + ", " + stepWords;
-      c.settings = {{"engine", {{"contact", contact}, {"dt", frame / substeps}, {"substeps", substeps}}}};
-      if (!integrator.empty()) c.settings["engine"]["integrator"] = integrator;
-      if (stepsPerContact > 0 && contact == "spring-dashpot") c.settings["engine"]["contact_time"] = contactTime;
+      c.settings = {pick("engine.contact", &balls::Params::contact, balls::Contact(contactIndex)),
+                    rescale("engine.dt", &balls::Params::dt, float(frame / substeps)),
+                    rescale("engine.substeps", &balls::Params::substeps, substeps)};
+      if (!integrator.empty())
+        c.settings.push_back(pick("engine.integrator", &balls::Params::integrator, balls::Integrator(integratorIndex)));
+      if (stepsPerContact > 0 && contact == "spring-dashpot")
+        c.settings.push_back(pick("engine.contact_time", &balls::Params::contactTime, float(contactTime)));
       out.push_back(std::move(c));
     }
   return out;

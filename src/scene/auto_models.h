@@ -1,5 +1,8 @@
 // The per-model half of "method": "auto" (scene/auto_method.h): which accuracy keys each model
-// states, which study measures them, and how a study row becomes settings for a scene.
+// states, which study measures them, and how a study row becomes settings for a scene: writes to
+// fields of the model's typed params (Setting), some of them rescaled rather than chosen (the
+// balls' dt and substeps keep the frame's simulated time; the ripples' grid keeps the pool's size),
+// which a scene may state without conflicting with "method": "auto".
 #pragma once
 
 #include <string>
@@ -28,7 +31,7 @@ struct Tables {
 };
 
 struct ModelInput {
-  const io::Json& params;              // the scene's params (absent keys: the model's defaults)
+  const SceneParams& params;           // the scene's typed params, as read from the file
   const io::Json& accuracy;            // the scene's accuracy object (extra keys such as wavelength)
   std::vector<const Source*> metrics;  // one per bound, in order
   const Tables& tables;
@@ -43,8 +46,5 @@ std::vector<Candidate> ballsCandidates(const ModelInput& in);
 
 // Accuracy keys that are not bounds but describe the scene (ripples: wavelength, wavelengthCells).
 std::vector<std::string> extraKeys(const std::string& model);
-// Params the pick rescales rather than chooses: a scene may set them (they say how much simulated
-// time a frame covers, or how large the pool is) without conflicting with "method": "auto".
-std::vector<std::string> rescaledParams(const std::string& model);  // JSON pointers, e.g. "/engine/dt"
 
 }  // namespace tidepool::automethod

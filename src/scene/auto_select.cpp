@@ -14,6 +14,10 @@ std::string formatValue(double v) {
   return buf;
 }
 
+void write(const Settings& settings, SceneParams& params) {
+  for (const Setting& s : settings) s.write(params);
+}
+
 Selection selectCheapest(std::vector<Candidate>& candidates, const std::vector<Bound>& bounds,
                          const std::string& where) {
   if (candidates.empty()) throw Error(where + ": no measured setting applies to this scene");

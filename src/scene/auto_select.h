@@ -12,14 +12,24 @@
 //    bound divided by kMetricMargin.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
-#include "io/json.h"
+#include "scene/scene_params.h"
 
 namespace tidepool::automethod {
 
 inline constexpr double kMetricMargin = 2.0;  // measured error x 2 must meet the bound
+
+// One parameter a pick sets: a field of the model's typed params, named by its key in scene files.
+struct Setting {
+  std::string key;                          // as the scene file names it: "engine.dt"
+  bool rescaled = false;                    // rescaled rather than chosen: the scene may state it too
+  std::function<void(SceneParams&)> write;  // sets the field to the picked value
+};
+using Settings = std::vector<Setting>;
+void write(const Settings& settings, SceneParams& params);
 
 struct Bound {
   std::string key;  // accuracy key, e.g. "energyDrift"
@@ -33,7 +43,7 @@ struct Candidate {
   double cost = 0;             // GPU ms per simulated second (the study's column)
   std::vector<double> errors;  // measured, one per bound
   bool stable = true;
-  io::Json settings;               // what the pick writes into the scene's params
+  Settings settings;               // what the pick writes into the scene's params
   std::vector<double> guaranteed;  // worst error of the family at this step or below (filled by selectCheapest)
 };
 

@@ -6,25 +6,13 @@
 
 #include "io/obj.h"
 #include "render/balls_view.h"
-#include "scene/param_json.h"
 
 namespace tidepool {
 namespace {
 
 constexpr int kStatsInterval = 30;  // frames between statistics read-backs
 
-struct ViewSettings {
-  BallsViewParams look;
-  OrbitCameraParams camera{glm::vec3(0.5f, 0.5f, 0.35f), 2.4f, -1.0f, 0.45f, 45.0f};
-};
-
-void visit(ParamVisitor& v, ViewSettings& s) {
-  visit(v, s.look);
-  if (v.beginGroup({"camera", "Camera", "left drag rotates, right drag pans, wheel zooms"})) {
-    visit(v, s.camera);
-    v.endGroup();
-  }
-}
+using ViewSettings = BallsViewSettings;
 
 void visitAll(ParamVisitor& v, balls::Params& model, ViewSettings& view) {
   balls::visit(v, model);
@@ -96,34 +84,44 @@ class BallsStage final : public ModelStage<balls::Balls> {
 
 }  // namespace
 
-balls::Params ballsParams(const Scene& scene) {
+void visit(ParamVisitor& v, BallsViewSettings& s) {
+  visit(v, s.look);
+  if (v.beginGroup({"camera", "Camera", "left drag rotates, right drag pans, wheel zooms"})) {
+    visit(v, s.camera);
+    v.endGroup();
+  }
+}
+
+void visit(ParamVisitor& v, BallsSceneParams& p) { visitAll(v, p.model, p.view); }
+
+const BallsSceneParams& ballsScene(const Scene& scene) {
   if (scene.model != "balls") throw Error(scene.file.string() + ": not a balls scene (model " + scene.model + ")");
-  balls::Params model;
-  ViewSettings view;
-  readParams(
-      scene.params, [&](ParamVisitor& v) { visitAll(v, model, view); }, scene.file.string() + ": params");
-  return model;
+  return scene.params.as<BallsSceneParams>();
 }
 
-void ballsView(const Scene& scene, BallsViewParams& look, OrbitCameraParams& camera) {
-  balls::Params model;
-  ViewSettings view;
-  readParams(
-      scene.params, [&](ParamVisitor& v) { visitAll(v, model, view); }, scene.file.string() + ": params");
-  look = view.look;
-  camera = view.camera;
+balls::Params ballsParams(const Scene& scene) { return ballsScene(scene).model; }
+
+namespace {
+
+SceneParams parseBallsParams(const io::Json& params, const std::string& where) {
+  return readSceneParams<BallsSceneParams>(params, where);
 }
 
-std::unique_ptr<Stage> createBallsStage(const io::Json& params, const std::string& where, gl::ShaderLibrary& shaders) {
-  balls::Params model;
-  ViewSettings view;
-  readParams(
-      params, [&](ParamVisitor& v) { visitAll(v, model, view); }, where);
+std::unique_ptr<Stage> createBallsStage(const SceneParams& params, const std::string& where,
+                                        gl::ShaderLibrary& shaders) {
+  const BallsSceneParams& p = params.as<BallsSceneParams>();
   try {
-    return std::make_unique<BallsStage>(shaders, model, view);
+    return std::make_unique<BallsStage>(shaders, p.model, p.view);
   } catch (const Error& e) {  // e.g. a missing or open obstacle mesh: say which scene asked for it
     throw Error(where + ": " + e.what());
   }
+}
+
+}  // namespace
+
+ModelEntry ballsModel() {
+  return {"balls", "water as equal balls colliding: grid neighbours, three contact laws, three integrators",
+          parseBallsParams, createBallsStage};
 }
 
 }  // namespace tidepool

@@ -1,5 +1,9 @@
 // The balls scene: the ball model, its renderer and an orbit camera (left drag rotates, right
 // drag pans, wheel zooms). Live statistics are refreshed every few frames for the status line.
+//
+//   { "model": "balls",
+//     "params": { "particles": {...}, "engine": {"dt": 0.0005, ...}, "obstacles": [...],
+//                 "view": { "mode": "water", "camera": {"distance": 2.4} } } }
 #pragma once
 
 #include "render/balls_view_params.h"
@@ -10,12 +14,25 @@
 
 namespace tidepool {
 
-// The balls model's parameters of a scene (its "view" group is read and dropped).
-balls::Params ballsParams(const Scene& scene);
+// The "view" group: how the balls are drawn and seen (benchmarks render without a stage).
+struct BallsViewSettings {
+  BallsViewParams look;
+  OrbitCameraParams camera{glm::vec3(0.5f, 0.5f, 0.35f), 2.4f, -1.0f, 0.45f, 45.0f};
+};
 
-// The look and camera of a balls scene's "view" group (benchmarks render without a stage).
-void ballsView(const Scene& scene, BallsViewParams& look, OrbitCameraParams& camera);
+// A balls scene's "params": the model's keys, and "view".
+struct BallsSceneParams {
+  balls::Params model;
+  BallsViewSettings view;
+};
 
-std::unique_ptr<Stage> createBallsStage(const io::Json& params, const std::string& where, gl::ShaderLibrary& shaders);
+void visit(ParamVisitor& v, BallsViewSettings& s);
+void visit(ParamVisitor& v, BallsSceneParams& p);
+
+ModelEntry ballsModel();  // "balls" in scene files
+
+// A balls scene's params; throws Error naming the file when the scene is another model's.
+const BallsSceneParams& ballsScene(const Scene& scene);
+balls::Params ballsParams(const Scene& scene);  // ballsScene(scene).model
 
 }  // namespace tidepool

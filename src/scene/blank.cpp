@@ -1,7 +1,5 @@
 #include "scene/blank.h"
 
-#include "scene/param_json.h"
-
 namespace tidepool {
 namespace {
 
@@ -30,11 +28,21 @@ class BlankStage final : public Stage {
 
 void visit(ParamVisitor& v, BlankParams& p) { v.color({"color", "Colour", "clear colour, linear RGB"}, p.color); }
 
-std::unique_ptr<Stage> createBlankStage(const io::Json& params, const std::string& where, gl::ShaderLibrary&) {
-  BlankParams p;
-  readParams(
-      params, [&](ParamVisitor& v) { visit(v, p); }, where);
-  return std::make_unique<BlankStage>(p);
+namespace {
+
+SceneParams parseBlankParams(const io::Json& params, const std::string& where) {
+  return readSceneParams<BlankParams>(params, where);
+}
+
+std::unique_ptr<Stage> createBlankStage(const SceneParams& params, const std::string&, gl::ShaderLibrary&) {
+  return std::make_unique<BlankStage>(params.as<BlankParams>());
+}
+
+}  // namespace
+
+ModelEntry blankModel() {
+  return {"blank", "no simulation: clears to a colour (the shell before any model)", parseBlankParams,
+          createBlankStage};
 }
 
 }  // namespace tidepool

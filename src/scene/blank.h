@@ -11,6 +11,6 @@ struct BlankParams {
 };
 void visit(ParamVisitor& v, BlankParams& p);
 
-std::unique_ptr<Stage> createBlankStage(const io::Json& params, const std::string& where, gl::ShaderLibrary& shaders);
+ModelEntry blankModel();  // "blank" in scene files
 
 }  // namespace tidepool

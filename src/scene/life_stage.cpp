@@ -5,7 +5,6 @@
 
 #include "base/log.h"
 #include "render/life_view.h"
-#include "scene/param_json.h"
 #include "scene/scene.h"
 #include "sim/life/life.h"
 
@@ -219,26 +218,33 @@ class LifeStage final : public ModelStage<life::Life> {
   bool m_cameraPlaced = false;
 };
 
-}  // namespace
-
-std::unique_ptr<Stage> createLifeStage(const io::Json& params, const std::string& where, gl::ShaderLibrary& shaders) {
+// A life scene's "params": the setup's keys, "model" (stepping) and "view".
+struct LifeSceneParams {
   Setup setup;
   life::Params model;
   ViewSettings view;
-  readParams(
-      params,
-      [&](ParamVisitor& v) {
-        visit(v, setup, true);
-        if (v.beginGroup({"model", "Stepping", ""})) {
-          life::visit(v, model);
-          v.endGroup();
-        }
-        if (v.beginGroup({"view", "View", ""})) {
-          visit(v, view);
-          v.endGroup();
-        }
-      },
-      where);
+};
+
+void visit(ParamVisitor& v, LifeSceneParams& p) {
+  visit(v, p.setup, true);
+  if (v.beginGroup({"model", "Stepping", ""})) {
+    life::visit(v, p.model);
+    v.endGroup();
+  }
+  if (v.beginGroup({"view", "View", ""})) {
+    visit(v, p.view);
+    v.endGroup();
+  }
+}
+
+SceneParams parseLifeParams(const io::Json& params, const std::string& where) {
+  return readSceneParams<LifeSceneParams>(params, where);
+}
+
+std::unique_ptr<Stage> createLifeStage(const SceneParams& params, const std::string& where,
+                                       gl::ShaderLibrary& shaders) {
+  const LifeSceneParams& p = params.as<LifeSceneParams>();
+  Setup setup = p.setup;
   life::Rules rules;
   if (!setup.rules.empty()) {
     rules = resolveRules(setup.rules, where);
@@ -247,7 +253,14 @@ std::unique_ptr<Stage> createLifeStage(const io::Json& params, const std::string
     rules = rulesFor(setup);
     life::validateRules(rules, where);
   }
-  return std::make_unique<LifeStage>(shaders, rules, setup, model, view);
+  return std::make_unique<LifeStage>(shaders, rules, setup, p.model, p.view);
+}
+
+}  // namespace
+
+ModelEntry lifeModel() {
+  return {"life", "particle life: species with asymmetric forces, glow + HDR view, shareable rules", parseLifeParams,
+          createLifeStage};
 }
 
 }  // namespace tidepool

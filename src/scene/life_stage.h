@@ -10,6 +10,6 @@
 
 namespace tidepool {
 
-std::unique_ptr<Stage> createLifeStage(const io::Json& params, const std::string& where, gl::ShaderLibrary& shaders);
+ModelEntry lifeModel();  // "life" in scene files
 
 }  // namespace tidepool

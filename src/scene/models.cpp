@@ -1,4 +1,5 @@
-// The table of models a scene can name. Each model adds one line here when it lands.
+// The table of models a scene can name. Each model adds its entry here when it lands (ballsModel() ...:
+// name, summary, and how its params are read and its stage built, from its stage file).
 #include "scene/balls_stage.h"
 #include "scene/blank.h"
 #include "scene/life_stage.h"
@@ -9,15 +10,7 @@
 namespace tidepool {
 
 const std::vector<ModelEntry>& models() {
-  static const std::vector<ModelEntry> table = {
-      {"blank", "no simulation: clears to a colour (the shell before any model)", createBlankStage},
-      {"balls", "water as equal balls colliding: grid neighbours, three contact laws, three integrators",
-       createBallsStage},
-      {"ripples", "heightfield water: wave equation or the seed's spring model, 2D refraction view",
-       createRipplesStage},
-      {"swarm", "millions of 2D particles pulled by animated attractors, one following the mouse", createSwarmStage},
-      {"life", "particle life: species with asymmetric forces, glow + HDR view, shareable rules", createLifeStage},
-  };
+  static const std::vector<ModelEntry> table = {blankModel(), ballsModel(), ripplesModel(), swarmModel(), lifeModel()};
   return table;
 }
 

@@ -112,13 +112,15 @@ class RipplesStage final : public ModelStage<ripples::Ripples> {
   bool m_pressed = false;
 };
 
-}  // namespace
-
-std::unique_ptr<Stage> createRipplesStage(const io::Json& params, const std::string& where,
-                                          gl::ShaderLibrary& shaders) {
+// A ripples scene's "params": the model's keys, "view" and "drops" (sorted by time).
+struct RipplesSceneParams {
   ripples::Params model;
   ViewSettings view;
   std::vector<Drop> drops;
+};
+
+SceneParams parseRipplesParams(const io::Json& params, const std::string& where) {
+  RipplesSceneParams p;
   io::Json rest = params.is_object() ? params : io::Json::object();
   // "drops": [{"time": 0.2, "x": 0.3, "y": 0.6, "radius": 0.04, "depth": -0.05}, ...]
   if (auto it = rest.find("drops"); it != rest.end()) {
@@ -134,23 +136,35 @@ std::unique_ptr<Stage> createRipplesStage(const io::Json& params, const std::str
                    v.real({"depth", "Depth", "m"}, d.depth, -1.0f, 1.0f);
                  },
                  where + ".drops[" + std::to_string(i) + "]");
-      drops.push_back(d);
+      p.drops.push_back(d);
     }
-    std::sort(drops.begin(), drops.end(), [](const Drop& a, const Drop& b) { return a.time < b.time; });
+    std::sort(p.drops.begin(), p.drops.end(), [](const Drop& a, const Drop& b) { return a.time < b.time; });
     rest.erase("drops");
   }
   if (params.is_null()) rest = nullptr;
   readParams(
       rest,
       [&](ParamVisitor& v) {
-        ripples::visit(v, model);
+        ripples::visit(v, p.model);
         if (v.beginGroup({"view", "View", ""})) {
-          visit(v, view);
+          visit(v, p.view);
           v.endGroup();
         }
       },
       where);
-  return std::make_unique<RipplesStage>(shaders, model, view, std::move(drops));
+  return SceneParams(std::move(p));
+}
+
+std::unique_ptr<Stage> createRipplesStage(const SceneParams& params, const std::string&, gl::ShaderLibrary& shaders) {
+  const RipplesSceneParams& p = params.as<RipplesSceneParams>();
+  return std::make_unique<RipplesStage>(shaders, p.model, p.view, p.drops);
+}
+
+}  // namespace
+
+ModelEntry ripplesModel() {
+  return {"ripples", "heightfield water: wave equation or the seed's spring model, 2D refraction view",
+          parseRipplesParams, createRipplesStage};
 }
 
 }  // namespace tidepool

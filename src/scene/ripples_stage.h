@@ -6,6 +6,6 @@
 
 namespace tidepool {
 
-std::unique_ptr<Stage> createRipplesStage(const io::Json& params, const std::string& where, gl::ShaderLibrary& shaders);
+ModelEntry ripplesModel();  // "ripples" in scene files
 
 }  // namespace tidepool

@@ -5,10 +5,27 @@
 namespace tidepool {
 namespace fs = std::filesystem;
 
+namespace {
+
+std::string modelNames() {
+  std::string names;
+  for (const ModelEntry& m : models()) names += (names.empty() ? "" : ", ") + std::string(m.name);
+  return names;
+}
+
+const ModelEntry& modelNamed(const std::string& name, const std::string& where) {
+  for (const ModelEntry& m : models())
+    if (name == m.name) return m;
+  throw Error(where + ": scene.model = '" + name + "' is not a model (known: " + modelNames() + ")");
+}
+
+}  // namespace
+
 void visit(ParamVisitor& v, Scene& s) {
+  static const std::string models = "the model the scene runs: " + modelNames();
   v.text({"name", "Name", "shown in the window title"}, s.name);
   v.text({"description", "Description", "what the scene shows"}, s.description);
-  v.text({"model", "Model", "blank (more models land with their issues)"}, s.model);
+  v.text({"model", "Model", models.c_str()}, s.model);
   v.choice({"method", "Method", "params: as the params say; auto: the cheapest measured method meeting accuracy"},
            s.method, kMethodModeNames);
   if (v.beginGroup({"clip", "Clip", "default headless clip"})) {
@@ -33,49 +50,44 @@ fs::path resolveScenePath(const std::string& arg) {
 }
 
 namespace {
-// The header's keys; "params" and "accuracy" are objects read by the model and by auto.
-Scene parseHeader(const io::Json& json, const std::string& where) {
+// The header's keys; then "params" (with the overrides merged in) read once into the model's typed
+// struct; then method auto, which edits that struct and reads "params" as written only to refuse
+// keys it would override.
+Scene readScene(const io::Json& json, const std::string& where, const io::Json& overrides) {
   if (!json.is_object()) throw Error(where + ": a scene must be a JSON object {...}");
   Scene scene;
-  io::Json header = json;
-  for (auto [key, target] : {std::pair{"params", &scene.params}, std::pair{"accuracy", &scene.accuracy}})
+  io::Json header = json, params;
+  for (auto [key, target] : {std::pair{"params", &params}, std::pair{"accuracy", &scene.accuracy}})
     if (auto it = header.find(key); it != header.end()) {
       *target = *it;
       header.erase(it);
     }
   readParams(
       header, [&](ParamVisitor& v) { visit(v, scene); }, where + ": scene");
+  if (overrides.is_object() && !overrides.empty()) {
+    if (!params.is_object()) params = io::Json::object();
+    params.merge_patch(overrides);
+  }
+  scene.params = modelNamed(scene.model, where).parse(params, where + ": params");
+  resolveAutoMethod(scene, params, where);  // after the overrides, which it must not silently undo
   return scene;
 }
 }  // namespace
 
-Scene parseScene(const io::Json& json, const std::string& where) {
-  Scene scene = parseHeader(json, where);
-  resolveAutoMethod(scene, where);
-  return scene;
-}
+Scene parseScene(const io::Json& json, const std::string& where) { return readScene(json, where, io::Json()); }
 
 Scene loadScene(const fs::path& file) { return loadScene(file, io::Json()); }
 
 Scene loadScene(const fs::path& file, const io::Json& overrides) {
-  Scene scene = parseHeader(io::readJsonFile(file), file.string());
+  Scene scene = readScene(io::readJsonFile(file), file.string(), overrides);
   scene.file = file;
   if (scene.name.empty()) scene.name = file.stem().string();
-  if (overrides.is_object() && !overrides.empty()) {
-    if (!scene.params.is_object()) scene.params = io::Json::object();
-    for (const auto& [key, value] : overrides.items()) scene.params[key] = value;
-  }
-  resolveAutoMethod(scene, file.string());  // after the overrides, which it must not silently undo
   return scene;
 }
 
 std::unique_ptr<Stage> createStage(const Scene& scene, gl::ShaderLibrary& shaders) {
-  std::string known;
-  for (const ModelEntry& m : models()) {
-    if (scene.model == m.name) return m.create(scene.params, scene.file.string() + ": params", shaders);
-    known += (known.empty() ? "" : ", ") + std::string(m.name);
-  }
-  throw Error(scene.file.string() + ": scene.model = '" + scene.model + "' is not a model (known: " + known + ")");
+  const std::string where = scene.file.string();
+  return modelNamed(scene.model, where).create(scene.params, where + ": params", shaders);
 }
 
 }  // namespace tidepool

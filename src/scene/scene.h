@@ -18,6 +18,7 @@
 #include "io/assets.h"
 #include "io/json.h"
 #include "scene/auto_method.h"
+#include "scene/scene_params.h"
 #include "scene/stage.h"
 
 namespace tidepool {
@@ -32,7 +33,7 @@ struct Scene {
   std::filesystem::path file;  // where it was loaded from
   std::string name, description;
   std::string model = "blank";
-  io::Json params;  // the model's parameters, validated when the stage is created
+  SceneParams params;  // the model's typed parameters, read from "params" at load (scene/scene_params.h)
   ClipSettings clip;
   MethodMode method = MethodMode::Params;  // "auto": pick the method from `accuracy` (scene/auto_method.h)
   io::Json accuracy;                       // e.g. {"energyDrift": 1e-3}; null when not stated
@@ -46,13 +47,15 @@ using io::findAssetDir;  // assets/ (io/assets.h)
 // A path as given, or a bare name such as "blank" looked up as assets/scenes/<name>.json.
 std::filesystem::path resolveScenePath(const std::string& nameOrPath);
 
-Scene loadScene(const std::filesystem::path& file);  // throws Error naming file and key
-// Loads the scene with command-line overrides of its params (e.g. --rules sets params.rules);
-// the stage validates them like the file's own keys.
+// Reads the header, then "params" into the model's typed struct, then resolves "method": "auto";
+// throws Error naming the file and the key (an unknown model lists the known ones).
+Scene loadScene(const std::filesystem::path& file);
+// Loads the scene with overrides of its params merged into the file's (a JSON merge patch: e.g.
+// --rules sets params.rules), read and validated like the file's own keys.
 Scene loadScene(const std::filesystem::path& file, const io::Json& paramOverrides);
-Scene parseScene(const io::Json& json, const std::string& where);
+Scene parseScene(const io::Json& json, const std::string& where);  // `where` names it in messages
 
-// Builds the named model's stage; unknown models list the known ones.
+// Builds the scene's model's stage from its typed params.
 std::unique_ptr<Stage> createStage(const Scene& scene, gl::ShaderLibrary& shaders);
 
 }  // namespace tidepool

@@ -18,6 +18,7 @@
 #include "gl/shader_library.h"
 #include "io/json.h"
 #include "render/target.h"
+#include "scene/scene_params.h"
 #include "sim/divergence.h"
 #include "sim/model.h"
 
@@ -73,8 +74,11 @@ class ModelStage : public Stage {
 struct ModelEntry {
   const char* name;
   const char* summary;
-  // Builds the stage from the scene's "params" object (validated; `where` prefixes errors).
-  std::function<std::unique_ptr<Stage>(const io::Json& params, const std::string& where, gl::ShaderLibrary&)> create;
+  // Reads the scene's "params" object into the model's typed parameters, validated (errors name
+  // the key after `where`, e.g. "scenes/dam.json: params.engine.dt = 0 is out of range ...").
+  std::function<SceneParams(const io::Json& params, const std::string& where)> parse;
+  // Builds the stage from them; `where` prefixes what only the build finds (a missing mesh file).
+  std::function<std::unique_ptr<Stage>(const SceneParams& params, const std::string& where, gl::ShaderLibrary&)> create;
 };
 
 const std::vector<ModelEntry>& models();  // every model a scene may name

@@ -4,7 +4,6 @@
 
 #include "base/log.h"
 #include "render/swarm_renderer.h"
-#include "scene/param_json.h"
 #include "scene/scene.h"
 #include "sim/swarm/swarm.h"
 
@@ -18,6 +17,13 @@ void visitAll(ParamVisitor& v, sim::SwarmParams& simParams, SwarmViewParams& vie
     v.endGroup();
   }
 }
+
+// A swarm scene's "params": the model's keys, and "view".
+struct SwarmSceneParams {
+  sim::SwarmParams model;
+  SwarmViewParams view;
+};
+void visit(ParamVisitor& v, SwarmSceneParams& p) { visitAll(v, p.model, p.view); }
 
 // "colors" -> assets/textures/colors.png; anything else is a path to a PNG (or JPEG, BMP...).
 io::Image loadSwarmImage(const std::string& nameOrPath) {
@@ -119,14 +125,20 @@ class SwarmStage final : public ModelStage<sim::Swarm> {
   double m_clock = 0.0;  // real seconds of frames shown: drives the hue cycle
 };
 
+SceneParams parseSwarmParams(const io::Json& params, const std::string& where) {
+  return readSceneParams<SwarmSceneParams>(params, where);
+}
+
+std::unique_ptr<Stage> createSwarmStage(const SceneParams& params, const std::string&, gl::ShaderLibrary& shaders) {
+  const SwarmSceneParams& p = params.as<SwarmSceneParams>();
+  return std::make_unique<SwarmStage>(p.model, p.view, shaders);
+}
+
 }  // namespace
 
-std::unique_ptr<Stage> createSwarmStage(const io::Json& params, const std::string& where, gl::ShaderLibrary& shaders) {
-  sim::SwarmParams simParams;
-  SwarmViewParams view;
-  readParams(
-      params, [&](ParamVisitor& v) { visitAll(v, simParams, view); }, where);
-  return std::make_unique<SwarmStage>(simParams, view, shaders);
+ModelEntry swarmModel() {
+  return {"swarm", "millions of 2D particles pulled by animated attractors, one following the mouse", parseSwarmParams,
+          createSwarmStage};
 }
 
 }  // namespace tidepool

@@ -10,6 +10,6 @@
 
 namespace tidepool {
 
-std::unique_ptr<Stage> createSwarmStage(const io::Json& params, const std::string& where, gl::ShaderLibrary& shaders);
+ModelEntry swarmModel();  // "swarm" in scene files
 
 }  // namespace tidepool

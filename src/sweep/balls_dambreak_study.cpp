@@ -107,9 +107,8 @@ Result dambreak(Env& env) {
     throw Error("balls-dambreak: the reference run (" + reference + ", t_c/dt = " + std::to_string(finest) +
                 ") is not stable");
 
-  Result r;
-  r.model = "balls";
-  r.metrics = {"steps_per_contact", "rms_deviation", "max_deviation", "rms_deviation_early", "max_overlap_r"};
+  Result r = emptyResult(
+      "balls", {"steps_per_contact", "rms_deviation", "max_deviation", "rms_deviation_early", "max_overlap_r"});
   for (const Method& m : methods)
     for (int perContact : m.stepsPerContact) {
       const balls::Params p = withStep(m.integrator, perContact);
@@ -131,9 +130,7 @@ Result dambreak(Env& env) {
       row.stable = c.stable && std::isfinite(rms);
       row.metrics = {double(perContact), rms, c.stable ? worst : nan, c.stable ? std::sqrt(sumEarly / early) : nan,
                      c.maxOverlap};
-      row.x = row.costMsPerSimS;
-      row.y = rms;
-      r.rows.push_back(row);
+      addCostRow(r, row, rms);
       std::printf("  %-18s t_c/dt = %3d: RMS front deviation %.3g a (to T* = 1.2: %.3g a), %s\n", m.name.c_str(),
                   perContact, rms, row.metrics[3], row.stable ? "stable" : "UNSTABLE");
       std::fflush(stdout);
@@ -144,7 +141,6 @@ Result dambreak(Env& env) {
   r.chart.title = "balls-dambreak: surge-front deviation from the finest-dt run against cost (to T* = 2.5)";
   r.chart.xLabel = label;
   r.chart.yLabel = "RMS deviation of the front x/a";
-  markPareto(r.rows);
   return r;
 }
 

@@ -113,9 +113,8 @@ Row settle(gl::ShaderLibrary& shaders, int across, const Method& m, double dt) {
 }
 
 Result settleStudy(Env& env) {
-  Result r;
-  r.model = "balls";
-  r.metrics = {"max_overlap_r", "mean_overlap_r", "energy_drift", "kinetic_per_ball", "contact_time"};
+  Result r =
+      emptyResult("balls", {"max_overlap_r", "mean_overlap_r", "energy_drift", "kinetic_per_ball", "contact_time"});
   const int across = env.quick ? 7 : 200;
   using C = balls::Contact;
   using I = balls::Integrator;
@@ -137,7 +136,6 @@ Result settleStudy(Env& env) {
   r.chart.title = "balls-settle: overlap of a settled water block against cost, per contact law and integrator";
   r.chart.xLabel = "GPU ms per simulated second (" + r.rows.front().resolution + ", r = 1 cm, g = 9.81 m/s^2)";
   r.chart.yLabel = "max overlap / r after 0.25 s";
-  markPareto(r.rows);
   return r;
 }
 

@@ -53,12 +53,11 @@ namespace {
 
 Result restitution(Env& env) {
   constexpr float kE = 0.5f, kContactTime = 0.01f;
-  Result r;
-  r.model = "balls";
-  r.metrics = {"steps_per_contact", "restitution", "restitution_error", "contact_steps"};
-  r.chart.title = "balls-restitution: spring-dashpot restitution error against cost (e = 0.5, t_c = 10 ms)";
-  r.chart.xLabel = "GPU ms per simulated second (65k-ball column; t_c/dt from 5 to 100)";
-  r.chart.yLabel = "restitution error |e_{measured} / e - 1|";
+  Result r = emptyResult("balls", {"steps_per_contact", "restitution", "restitution_error", "contact_steps"},
+                         {.title = "balls-restitution: spring-dashpot restitution error against cost (e = 0.5, t_c "
+                                   "= 10 ms)",
+                          .xLabel = "GPU ms per simulated second (65k-ball column; t_c/dt from 5 to 100)",
+                          .yLabel = "restitution error |e_{measured} / e - 1|"});
   const int columnBalls = env.quick ? 4096 : 65536;
   const std::vector<float> ratios =
       env.quick ? std::vector<float>{10, 50} : std::vector<float>{5, 7, 10, 14, 20, 30, 50, 70, 100};
@@ -76,12 +75,9 @@ Result restitution(Env& env) {
       const double error = b.restitution > 0 ? std::abs(b.restitution / kE - 1.0) : INFINITY;
       row.stable = std::isfinite(error);
       row.metrics = {ratio, b.restitution, error, double(b.contactSteps)};
-      row.x = row.costMsPerSimS;
-      row.y = error;
-      r.rows.push_back(row);
+      addCostRow(r, row, error);
     }
   }
-  markPareto(r.rows);
   return r;
 }
 

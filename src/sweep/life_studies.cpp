@@ -62,16 +62,15 @@ double msPerStep(gl::ShaderLibrary& shaders, const life::Rules& rules, life::Sto
 Result precision(Env& env) {
   const int settle = env.quick ? 20 : 100, steps = env.quick ? 10 : 40;
   const double seconds = steps * double(kDt);
-  Result r;
-  r.model = "life";
-  r.metrics = {"particles", "sim_seconds", "rms_position_error", "max_position_error", "rms_error_over_max_radius"};
   char title[200];
   std::snprintf(title, sizeof title,
                 "life-precision: fp16 against fp32 state, position error after %.2g s against cost (one point per N)",
                 seconds);
-  r.chart.title = title;
-  r.chart.xLabel = "GPU ms per simulated second (article defaults, looping, dt = 0.025 s)";
-  r.chart.yLabel = "RMS position error vs a double-precision run (world units)";
+  Result r = emptyResult(
+      "life", {"particles", "sim_seconds", "rms_position_error", "max_position_error", "rms_error_over_max_radius"},
+      {.title = title,
+       .xLabel = "GPU ms per simulated second (article defaults, looping, dt = 0.025 s)",
+       .yLabel = "RMS position error vs a double-precision run (world units)"});
   const std::vector<std::size_t> sizes =
       env.quick ? std::vector<std::size_t>{1024, 4096} : std::vector<std::size_t>{16384, 65536, 262144, 1048576};
   for (std::size_t n : sizes) {
@@ -101,14 +100,11 @@ Result precision(Env& env) {
       row.costMsPerSimS = msPerStep(env.shaders, rules, storage, pos, vel) / kDt;
       row.metrics = {double(n), seconds, d.rms, d.max, d.rms / double(rules.maxRadius())};
       row.stable = std::isfinite(d.rms);
-      row.x = row.costMsPerSimS;
-      row.y = d.rms;
-      r.rows.push_back(row);
+      addCostRow(r, row, d.rms);
       std::printf("  N = %zu %s: rms %.3g, max %.3g world units, %.4g ms per simulated s\n", n, row.method.c_str(),
                   d.rms, d.max, row.costMsPerSimS);
     }
   }
-  markPareto(r.rows);
   return r;
 }
 

@@ -36,12 +36,11 @@ double msPerStep(gl::ShaderLibrary& shaders, int n, double courant) {
 Result dispersion(Env& env) {
   // The physical problem: waves of length 1 m at c = 1 m/s in an 8 m x 8 m pool. N cells per
   // wavelength means an 8N x 8N grid and dt = C/N s, so a simulated second costs N/C steps.
-  Result r;
-  r.model = "ripples";
-  r.metrics = {"cells_per_wavelength", "courant", "phase_error", "predicted_error"};
-  r.chart.title = "ripples-dispersion: phase-speed error against cost (wave rule, 5-point Laplacian, leapfrog)";
-  r.chart.xLabel = "GPU ms per simulated second (8 m pool, 1 m waves)";
-  r.chart.yLabel = "phase-speed error |c̃/c - 1|";
+  Result r = emptyResult("ripples", {"cells_per_wavelength", "courant", "phase_error", "predicted_error"},
+                         {.title = "ripples-dispersion: phase-speed error against cost (wave rule, 5-point "
+                                   "Laplacian, leapfrog)",
+                          .xLabel = "GPU ms per simulated second (8 m pool, 1 m waves)",
+                          .yLabel = "phase-speed error |c̃/c - 1|"});
   const std::vector<double> courants =
       env.quick ? std::vector<double>{0.25, 0.5} : std::vector<double>{0.1, 0.25, 0.5, 0.7};
   const std::vector<int> cells = env.quick ? std::vector<int>{8, 16} : std::vector<int>{4, 6, 8, 12, 16, 24, 32};
@@ -56,25 +55,21 @@ Result dispersion(Env& env) {
       row.resolution = std::to_string(n) + " cells/wavelength";
       row.costMsPerSimS = msPerStep(env.shaders, 8 * n, c) * n / c;
       row.metrics = {double(n), c, std::abs(measured - 1.0), std::abs(predicted - 1.0)};
-      row.x = row.costMsPerSimS;
-      row.y = std::abs(measured - 1.0);
-      r.rows.push_back(row);
+      addCostRow(r, row, std::abs(measured - 1.0));
     }
-  markPareto(r.rows);
   return r;
 }
 
 Result stability(Env& env) {
-  Result r;
-  r.model = "ripples";
-  r.metrics = {"courant", "noise_growth", "phase_error_10_cells"};
-  r.chart.title = "ripples-stability: what the Courant number costs in accuracy, and where it blows up";
-  r.chart.xLabel = "Courant number C = c dt / dx";
-  r.chart.yLabel = "noise growth after 2000 steps / phase-speed error";
-  r.chart.logX = false;
-  r.chart.pareto = false;
-  r.chart.markerX = 1.0 / std::sqrt(2.0);
-  r.chart.markerLabel = "1/√2";
+  Result r =
+      emptyResult("ripples", {"courant", "noise_growth", "phase_error_10_cells"},
+                  {.title = "ripples-stability: what the Courant number costs in accuracy, and where it blows up",
+                   .xLabel = "Courant number C = c dt / dx",
+                   .yLabel = "noise growth after 2000 steps / phase-speed error",
+                   .logX = false,
+                   .pareto = false,
+                   .markerX = 1.0 / std::sqrt(2.0),
+                   .markerLabel = "1/√2"});
   std::vector<double> courants;
   for (double c = 0.05; c < 0.86; c += env.quick ? 0.2 : 0.05) courants.push_back(c);
   if (!env.quick)

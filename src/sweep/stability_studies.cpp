@@ -55,17 +55,14 @@ void addCurve(Result& r, const std::string& method, double theory, double limit,
 }
 
 Result chartFrame(const std::string& model, const std::string& title, double marker, const std::string& label) {
-  Result r;
-  r.model = model;
-  r.metrics = {"omega_dt", "growth", "measured_limit", "theory_limit"};
-  r.chart.title = title;
-  r.chart.xLabel = "{/Symbol w} dt";
-  r.chart.yLabel = "largest amplitude / start over 50 periods (blow-ups at the bound)";
-  r.chart.logX = false;
-  r.chart.pareto = false;
-  r.chart.markerX = marker;
-  r.chart.markerLabel = label;
-  return r;
+  return emptyResult(model, {"omega_dt", "growth", "measured_limit", "theory_limit"},
+                     {.title = title,
+                      .xLabel = "{/Symbol w} dt",
+                      .yLabel = "largest amplitude / start over 50 periods (blow-ups at the bound)",
+                      .logX = false,
+                      .pareto = false,
+                      .markerX = marker,
+                      .markerLabel = label});
 }
 
 Result swarmStability(Env& env) {

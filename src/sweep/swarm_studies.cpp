@@ -34,21 +34,16 @@ void addOrbitCurve(Env& env, Result& r, int n, sim::Integrator integrator, sim::
     row.costMsPerSimS = stepMs / row.dt;
     row.stable = std::isfinite(error);
     row.metrics = {double(steps), error};
-    row.x = row.costMsPerSimS;
-    row.y = error;
-    r.rows.push_back(row);
+    addCostRow(r, row, error);
   }
 }
 
 // Both studies chart the orbit's energy error against the cost of 1M particles (16k when quick).
 Result orbitFrame(const std::string& title) {
-  Result r;
-  r.model = "swarm";
-  r.metrics = {"steps_per_orbit", "energy_error"};
-  r.chart.title = title;
-  r.chart.xLabel = "GPU ms per simulated second (1M particles)";
-  r.chart.yLabel = "max |{/Symbol D}E| / s over 10 orbits";
-  return r;
+  return emptyResult("swarm", {"steps_per_orbit", "energy_error"},
+                     {.title = title,
+                      .xLabel = "GPU ms per simulated second (1M particles)",
+                      .yLabel = "max |{/Symbol D}E| / s over 10 orbits"});
 }
 
 Result orbit(Env& env) {
@@ -58,7 +53,6 @@ Result orbit(Env& env) {
   for (sim::Integrator integrator : {sim::Integrator::ExplicitEuler, sim::Integrator::SymplecticEuler,
                                      sim::Integrator::Verlet, sim::Integrator::Rk4})
     addOrbitCurve(env, r, n, integrator, sim::Storage::Fp32, steps, sim::kIntegratorNames[int(integrator)]);
-  markPareto(r.rows);
   return r;
 }
 
@@ -70,7 +64,6 @@ Result precision(Env& env) {
     for (sim::Storage storage : {sim::Storage::Fp32, sim::Storage::Fp16})
       addOrbitCurve(env, r, n, integrator, storage, steps,
                     std::string(sim::kIntegratorNames[int(integrator)]) + " " + sim::kStorageNames[int(storage)]);
-  markPareto(r.rows);
   return r;
 }
 

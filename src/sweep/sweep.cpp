@@ -51,6 +51,22 @@ std::string quoted(const std::string& s) {
 }
 }  // namespace
 
+Result runStudy(const Study& study, Env& env) {
+  Result r = study.run(env);
+  if (r.chart.pareto) markPareto(r.rows);
+  return r;
+}
+
+Result emptyResult(std::string model, std::vector<std::string> metrics, ChartSpec chart) {
+  return {std::move(model), std::move(metrics), {}, std::move(chart)};
+}
+
+void addCostRow(Result& result, Row row, double error) {
+  row.x = row.costMsPerSimS;
+  row.y = error;
+  result.rows.push_back(std::move(row));
+}
+
 void markPareto(std::vector<Row>& rows) {
   for (Row& r : rows) {
     r.pareto = r.stable && std::isfinite(r.x) && std::isfinite(r.y);

@@ -31,7 +31,7 @@ struct ChartSpec {
   bool logX = true, logY = true;
   bool pareto = true;  // mark the Pareto front (cost-vs-error charts)
   double markerX = 0;  // a vertical line (e.g. a theoretical limit); 0: none
-  std::string markerLabel;
+  std::string markerLabel = "";
 };
 
 struct Result {
@@ -54,6 +54,14 @@ struct Study {
 };
 
 const std::vector<Study>& studies();
+
+// Runs the study; on a cost-against-error chart (chart.pareto) marks the rows on the Pareto front.
+Result runStudy(const Study& study, Env& env);
+// A result with no rows yet: the model, the CSV names of Row::metrics and the chart (by default a
+// cost-against-error chart: log axes, the Pareto front marked).
+Result emptyResult(std::string model, std::vector<std::string> metrics, ChartSpec chart = {});
+// Adds `row` to a cost-against-error chart: at its cost on x, `error` on y.
+void addCostRow(Result& result, Row row, double error);
 
 void markPareto(std::vector<Row>& rows);  // minimises (x, y) among stable rows
 void writeCsv(const Result& result, const std::string& study, const std::string& device,

@@ -2,25 +2,11 @@
 #include <gtest/gtest.h>
 
 #include "support/gl_test.h"
-#include "support/run_process.h"
+#include "support/one_line_error.h"
 
 using namespace tidepool;
+using test::expectOneLineError;
 using test::runTidepool;
-
-namespace {
-
-// Runs tidepool, expects a normal non-zero exit and a single stderr line containing `expected`.
-void expectOneLineError(const std::vector<std::string>& args, const std::string& expected, int code,
-                        const std::vector<std::string>& env = {}) {
-  auto r = runTidepool(args, env);
-  EXPECT_FALSE(r.signaled) << "crashed: " << r.err;
-  EXPECT_EQ(r.exitCode, code) << r.err;
-  const auto lines = r.errLines();
-  ASSERT_EQ(lines.size(), 1u) << "expected one line, got:\n" << r.err;
-  EXPECT_NE(lines[0].find(expected), std::string::npos) << lines[0];
-}
-
-}  // namespace
 
 TEST(BadInput, MissingSceneFile) {
   expectOneLineError({"render", "/nonexistent/scene.json", "--out", "/tmp/x"},

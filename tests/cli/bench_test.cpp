@@ -1,13 +1,14 @@
 // Benchmarks run end to end at tiny sizes (timings are never asserted) and reject bad sizes.
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <sstream>
 
+#include "io/json.h"
 #include "support/gl_test.h"
-#include "support/run_process.h"
+#include "support/one_line_error.h"
 
 using namespace tidepool;
+using test::expectOneLineError;
 using test::runTidepool;
 
 TEST(Bench, RipplesPrintsItsTableAndCsv) {
@@ -21,10 +22,7 @@ TEST(Bench, RipplesPrintsItsTableAndCsv) {
 }
 
 TEST(Bench, BadSizeIsAOneLineError) {
-  auto r = runTidepool({"bench", "ripples", "--size", "12x"});
-  EXPECT_EQ(r.exitCode, 1);
-  ASSERT_EQ(r.errLines().size(), 1u) << r.err;
-  EXPECT_NE(r.err.find("size '12x' is not a number"), std::string::npos) << r.err;
+  expectOneLineError({"bench", "ripples", "--size", "12x"}, "size '12x' is not a number");
   auto big = runTidepool({"bench", "ripples", "--size", "16384"});
   EXPECT_EQ(big.exitCode, 1);
   EXPECT_FALSE(big.signaled);
@@ -39,18 +37,11 @@ TEST(Bench, RenderPrintsMsPerPassInBothModes) {
   for (const char* column : {"scene ms", "gbuffer ms", "thickness ms", "splat ms", "id ms", "resolve ms", "blur ms",
                              "compose ms", "frame ms"})
     EXPECT_NE(r.out.find(column), std::string::npos) << column << "\n" << r.out;
-  std::ifstream csvFile(dir / "render.csv");
-  const std::string csv((std::istreambuf_iterator<char>(csvFile)), std::istreambuf_iterator<char>());
+  const std::string csv = io::readTextFile(dir / "render.csv");
   for (const char* row : {",balls,compute,", ",water,compute,", ",balls,fragment,", ",water,fragment,"})
     EXPECT_NE(csv.find(row), std::string::npos) << row << "\n" << csv;
-  auto bad = runTidepool({"bench", "render", "--size", "1920"});
-  EXPECT_EQ(bad.exitCode, 1);
-  ASSERT_EQ(bad.errLines().size(), 1u) << bad.err;
-  EXPECT_NE(bad.err.find("--size '1920' is not WIDTHxHEIGHT"), std::string::npos) << bad.err;
-  auto raster = runTidepool({"bench", "render", "--raster", "rops"});
-  EXPECT_EQ(raster.exitCode, 1);
-  ASSERT_EQ(raster.errLines().size(), 1u) << raster.err;
-  EXPECT_NE(raster.err.find("--raster 'rops' is not compute, fragment or both"), std::string::npos) << raster.err;
+  expectOneLineError({"bench", "render", "--size", "1920"}, "--size '1920' is not WIDTHxHEIGHT");
+  expectOneLineError({"bench", "render", "--raster", "rops"}, "--raster 'rops' is not compute, fragment or both");
 }
 
 TEST(Bench, GridGivesOneCheckedRowPerReorderMode) {
@@ -58,18 +49,15 @@ TEST(Bench, GridGivesOneCheckedRowPerReorderMode) {
   auto r = runTidepool({"bench", "grid", "--n", "4096", "--ppc", "4", "--reorder", "scatter,gather", "--repeats", "2",
                         "--warmup", "0", "--csv", (dir / "grid.csv").string()});
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  std::ifstream csvFile(dir / "grid.csv");
-  const std::string csv((std::istreambuf_iterator<char>(csvFile)), std::istreambuf_iterator<char>());
+  const std::string csv = io::readTextFile(dir / "grid.csv");
   EXPECT_EQ(csv.rfind("N,cells,ppc,reorder,count_ms,", 0), 0u) << csv;
   for (const char* mode : {",scatter,", ",gather,"}) {
     const std::size_t at = csv.find(mode);
     ASSERT_NE(at, std::string::npos) << mode << "\n" << csv;
     EXPECT_NE(csv.substr(at, csv.find('\n', at) - at).find(",checked"), std::string::npos) << csv;
   }
-  auto bad = runTidepool({"bench", "grid", "--n", "4096", "--reorder", "scatter,sideways"});
-  EXPECT_EQ(bad.exitCode, 1);
-  ASSERT_EQ(bad.errLines().size(), 1u) << bad.err;
-  EXPECT_NE(bad.err.find("--reorder 'sideways' is not scatter or gather"), std::string::npos) << bad.err;
+  expectOneLineError({"bench", "grid", "--n", "4096", "--reorder", "scatter,sideways"},
+                     "--reorder 'sideways' is not scatter or gather");
 }
 
 // The by-shape scan table names each shape with its fuse suffix and its dispatch count.
@@ -91,12 +79,9 @@ TEST(Bench, GridScanShapesCompareFusedAndScannedOffsets) {
   EXPECT_EQ(dispatchesOf("256x4f8"), "3") << r.out;  // 16 blocks: more than it fuses
   EXPECT_EQ(dispatchesOf("256x4"), "2") << r.out;    // the default fuses them
   EXPECT_EQ(dispatchesOf("256x4p"), "3") << r.out;
-  for (const char* shape : {"256x4q", "256x4f", "256x4f1x", "x4"}) {
-    auto bad = runTidepool({"bench", "grid", "--n", "4096", "--scan-shapes", shape});
-    EXPECT_EQ(bad.exitCode, 1) << shape;
-    ASSERT_EQ(bad.errLines().size(), 1u) << bad.err;
-    EXPECT_NE(bad.err.find("--scan-shapes '" + std::string(shape) + "' is not like"), std::string::npos) << bad.err;
-  }
+  for (const char* shape : {"256x4q", "256x4f", "256x4f1x", "x4"})
+    expectOneLineError({"bench", "grid", "--n", "4096", "--scan-shapes", shape},
+                       "--scan-shapes '" + std::string(shape) + "' is not like");
 }
 
 TEST(Bench, BallsRunsEachSizeInEachReorderMode) {
@@ -104,12 +89,9 @@ TEST(Bench, BallsRunsEachSizeInEachReorderMode) {
   auto r = runTidepool({"bench", "balls", "bench-lattice", "--n", "4096", "--steps", "1:3", "--reorder",
                         "scatter,gather", "--csv", (dir / "balls.csv").string()});
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  std::ifstream csvFile(dir / "balls.csv");
-  const std::string csv((std::istreambuf_iterator<char>(csvFile)), std::istreambuf_iterator<char>());
+  const std::string csv = io::readTextFile(dir / "balls.csv");
   for (const char* mode : {",scatter,", ",gather,"})
     EXPECT_NE(csv.find(mode), std::string::npos) << mode << "\n" << csv;
-  auto wrong = runTidepool({"bench", "balls", "bench-lattice", "--n", "4096", "--reorder", "scatterr"});
-  EXPECT_EQ(wrong.exitCode, 1);
-  ASSERT_EQ(wrong.errLines().size(), 1u) << wrong.err;
-  EXPECT_NE(wrong.err.find("--reorder 'scatterr' is not scatter or gather"), std::string::npos) << wrong.err;
+  expectOneLineError({"bench", "balls", "bench-lattice", "--n", "4096", "--reorder", "scatterr"},
+                     "--reorder 'scatterr' is not scatter or gather");
 }

@@ -4,7 +4,7 @@
 
 #include "io/png.h"
 #include "support/gl_test.h"
-#include "support/run_process.h"
+#include "support/one_line_error.h"
 
 using namespace tidepool;
 using test::runTidepool;
@@ -58,11 +58,8 @@ TEST(Cli, RunWithoutADisplayRendersTheClipHeadlessAndSaysWhere) {
 
 TEST(Cli, VideoWithoutFfmpegIsAClearError) {
   test::TempDir dir;
-  auto r =
-      runTidepool({"render", "blank", "--frames", "2", "--video", (dir / "c.mp4").string()}, {"PATH=/nonexistent"});
-  EXPECT_EQ(r.exitCode, 1);
-  ASSERT_EQ(r.errLines().size(), 1u) << r.err;
-  EXPECT_NE(r.err.find("--video needs ffmpeg"), std::string::npos) << r.err;
+  test::expectOneLineError({"render", "blank", "--frames", "2", "--video", (dir / "c.mp4").string()},
+                           "--video needs ffmpeg", 1, {"PATH=/nonexistent"});
 }
 
 TEST(Cli, HelpAndVersionSucceed) {

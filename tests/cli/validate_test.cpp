@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "support/gl_test.h"
-#include "support/run_process.h"
+#include "support/one_line_error.h"
 
 using namespace tidepool;
 
@@ -50,10 +50,7 @@ TEST(Validate, DamBreakProbesShowTheSurgeAndKeepEveryBall) {
 }
 
 TEST(Validate, BadProbesAndModelsAreOneLineErrors) {
-  auto bad = test::runTidepool({"validate", "dam-break", "--probe", "energy,speed"});
-  EXPECT_EQ(bad.exitCode, 1);
-  ASSERT_EQ(bad.errLines().size(), 1u) << bad.err;
-  EXPECT_NE(bad.err.find("--probe 'speed' is not one of"), std::string::npos) << bad.err;
+  test::expectOneLineError({"validate", "dam-break", "--probe", "energy,speed"}, "--probe 'speed' is not one of");
   auto ripples = test::runTidepool({"validate", "ripples"});
   EXPECT_EQ(ripples.exitCode, 1);
   EXPECT_NE(ripples.err.find("validate runs balls scenes"), std::string::npos) << ripples.err;

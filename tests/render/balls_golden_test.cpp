@@ -94,10 +94,9 @@ class BallsGolden : public test::GlTest, public ::testing::WithParamInterface<Go
  protected:
   // The scene after g.frames frames, with its "view" group edited by `tweak`.
   static io::Image render(const Golden& g, const std::function<void(io::Json&)>& tweak = {}) {
-    Scene scene = loadScene(resolveScenePath(g.scene));
-    scene.params["view"]["mode"] = g.mode;
-    scene.params["view"]["raster"] = g.raster;
-    if (tweak) tweak(scene.params["view"]);
+    io::Json view = {{"mode", g.mode}, {"raster", g.raster}};
+    if (tweak) tweak(view);
+    const Scene scene = loadScene(resolveScenePath(g.scene), {{"view", view}});  // merged into the file's view
     auto stage = createStage(scene, shaders());
     RenderTarget target(kWidth, kHeight);
     gl::GpuProfiler profiler;

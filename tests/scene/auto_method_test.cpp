@@ -9,13 +9,19 @@
 #include "base/error.h"
 #include "scene/auto_models.h"
 #include "scene/auto_select.h"
+#include "scene/param_json.h"
 #include "scene/scene.h"
+#include "sim/balls/balls_params.h"
+#include "sim/ripples/ripples_params.h"
+#include "sim/swarm/swarm_params.h"
 #include "support/gl_test.h"
 #include "support/run_process.h"
+#include "support/scene_error.h"
 #include "sweep/sweep.h"
 
 using namespace tidepool;
 using namespace tidepool::automethod;
+using test::sceneError;
 
 namespace {
 
@@ -30,17 +36,35 @@ Candidate row(const std::string& family, double step, double cost, double error,
   return c;
 }
 
-std::string sceneError(const std::string& json) {
-  try {
-    parseScene(io::parseJson(json, "s.json"), "s.json");
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
-}
-
 std::string swarmScene(const std::string& extra) {
   return "{\"model\": \"swarm\", \"method\": \"auto\", " + extra + "}";
+}
+
+// The model's part of a scene's typed params as JSON (its keys as scene files name them).
+io::Json modelJson(const std::string& model, SceneParams params) {
+  return writeParams([&](ParamVisitor& v) {
+    if (model == "balls") balls::visit(v, params.model<balls::Params>());
+    if (model == "ripples") ripples::visit(v, params.model<ripples::Params>());
+    if (model == "swarm") sim::visit(v, params.model<sim::SwarmParams>());
+  });
+}
+
+io::Json::json_pointer pointer(std::string key) {  // "engine.dt" -> /engine/dt
+  std::replace(key.begin(), key.end(), '.', '/');
+  return io::Json::json_pointer("/" + key);
+}
+
+// The dotted keys of the leaves where `a` and `b` differ.
+std::vector<std::string> changedKeys(const io::Json& a, const io::Json& b, const std::string& prefix = "") {
+  std::vector<std::string> out;
+  for (const auto& [key, value] : a.items()) {
+    if (value.is_object()) {
+      for (const std::string& k : changedKeys(value, b.at(key), prefix + key + ".")) out.push_back(k);
+    } else if (value != b.at(key)) {
+      out.push_back(prefix + key);
+    }
+  }
+  return out;
 }
 
 }  // namespace
@@ -94,7 +118,17 @@ TEST(AutoScene, ShippedDataGivesEachModelAPickCheaperThanTheMostAccurate) {
     EXPECT_NE(c.device, "");
     EXPECT_EQ(c.summary().rfind("auto: picked " + c.picked + " (", 0), 0u);
     EXPECT_EQ(c.summary().find('\n'), std::string::npos);
-    for (const auto& [key, value] : c.settings.items()) EXPECT_TRUE(scene.params.contains(key)) << key;
+    // Each setting writes the field its key names: the most accurate pick, written over this
+    // one, changes no key outside its settings, and every key names a parameter.
+    const io::Json picked = modelJson(scene.model, scene.params);
+    const io::Json best = modelJson(scene.model, c.mostAccurateParams);
+    std::vector<std::string> keys;
+    for (const Setting& s : c.settings) {
+      keys.push_back(s.key);
+      EXPECT_TRUE(picked.contains(pointer(s.key))) << s.key;
+    }
+    for (const std::string& key : changedKeys(picked, best))
+      EXPECT_NE(std::find(keys.begin(), keys.end(), key), keys.end()) << key << " changed but is not a setting";
   }
 }
 
@@ -163,10 +197,12 @@ TEST(AutoScene, FixedGridRipplesPickOnlyTheCourantNumber) {
                                            "s.json"),
                              "s.json");
   ASSERT_TRUE(s.autoChoice);
-  EXPECT_EQ(s.params["width"], 64);  // the scene's grid stays
-  EXPECT_FALSE(s.params.contains("cell_size"));
-  EXPECT_TRUE(s.params["auto_substeps"].get<bool>());
-  EXPECT_LE(s.params["courant_target"].get<double>(), kStabilityMargin + 1e-9);
+  const ripples::Params& p = s.params.model<ripples::Params>();
+  EXPECT_EQ(p.width, 64);  // the scene's grid stays
+  EXPECT_EQ(p.cellSize, ripples::Params{}.cellSize);
+  for (const Setting& setting : s.autoChoice->settings) EXPECT_NE(setting.key, "cell_size");
+  EXPECT_TRUE(p.autoSubsteps);
+  EXPECT_LE(p.courantTarget, kStabilityMargin + 1e-6);
 }
 
 // `tidepool sweep <study> --ship` copies the rows into assets/accuracy (here a temporary assets

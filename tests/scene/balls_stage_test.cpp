@@ -12,11 +12,11 @@ namespace {
 
 class BallsSceneObstacles : public test::GlTest {
  protected:
-  // The error of building a stage from a balls scene whose params are `params` ("" if none).
+  // The error of loading a balls scene whose params are `params` and building its stage ("" if none).
   std::string errorOf(const std::string& params) {
-    Scene s = parseScene(io::parseJson(R"({"model": "balls", "params": )" + params + "}", "s.json"), "s.json");
-    s.file = "s.json";
     try {
+      Scene s = parseScene(io::parseJson(R"({"model": "balls", "params": )" + params + "}", "s.json"), "s.json");
+      s.file = "s.json";
       createStage(s, shaders());
     } catch (const Error& e) {
       return e.what();

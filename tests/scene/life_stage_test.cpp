@@ -4,9 +4,10 @@
 #include <gtest/gtest.h>
 
 #include "io/json.h"
-#include "scene/life_stage.h"
+#include "scene/scene.h"
 #include "sim/life/life_rules.h"
 #include "support/gl_test.h"
+#include "support/null_visitor.h"
 
 using namespace tidepool;
 
@@ -14,20 +15,12 @@ namespace {
 class LifeStageTest : public test::GlTest {};
 
 // Reads one text parameter the way the ImGui editor shows it: through visitParams.
-class ReadText final : public ParamVisitor {
+class ReadText final : public test::NullVisitor {
  public:
   explicit ReadText(const char* key) : m_key(key) {}
-  void real(const ParamInfo&, float&, float, float) override {}
-  void integer(const ParamInfo&, int&, int, int) override {}
-  void flag(const ParamInfo&, bool&) override {}
   void text(const ParamInfo& info, std::string& value) override {
     if (m_key == info.key) found = value;
   }
-  void color(const ParamInfo&, glm::vec3&) override {}
-  void vector(const ParamInfo&, glm::vec3&, float, float) override {}
-  void choiceIndex(const ParamInfo&, int&, std::span<const char* const>) override {}
-  bool beginGroup(const ParamInfo&) override { return true; }
-  void endGroup() override {}
   std::string found;
 
  private:
@@ -43,10 +36,16 @@ std::string shownText(Stage& stage, const char* key) {
 io::Json smallScene() {
   return io::Json::parse(R"({"species": 3, "particle_count": 1024, "width": 256, "height": 144, "seed": 4})");
 }
+
+std::unique_ptr<Stage> lifeStage(const io::Json& params, gl::ShaderLibrary& shaders) {
+  Scene scene = parseScene({{"model", "life"}, {"params", params}}, "s.json");
+  scene.file = "s.json";
+  return createStage(scene, shaders);
+}
 }  // namespace
 
 TEST_F(LifeStageTest, ShareCodeFollowsTheRulesAndNMakesNewOnes) {
-  auto stage = createLifeStage(smallScene(), "s.json: params", shaders());
+  auto stage = lifeStage(smallScene(), shaders());
   const life::Rules first = life::decodeShareCode(stage->shareText());
   EXPECT_TRUE(first == life::generateRules({.species = 3, .particleCount = 1024, .size = {256, 144}, .seed = 4}));
   gl::GpuProfiler profiler;
@@ -56,7 +55,7 @@ TEST_F(LifeStageTest, ShareCodeFollowsTheRulesAndNMakesNewOnes) {
   EXPECT_FALSE(next == first);
   EXPECT_EQ(next.speciesCount(), 3);
   EXPECT_EQ(next.particleCount, 1024);
-  auto again = createLifeStage(smallScene(), "s.json: params", shaders());
+  auto again = lifeStage(smallScene(), shaders());
   again->key('N');
   again->step(0.025, profiler);
   EXPECT_EQ(again->shareText(), stage->shareText()) << "N is reproducible too";
@@ -66,13 +65,13 @@ TEST_F(LifeStageTest, BadRulesKeyIsReportedWithTheSceneKey) {
   io::Json p = smallScene();
   p["rules"] = "AAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAA";
   try {
-    createLifeStage(p, "s.json: params", shaders());
+    lifeStage(p, shaders());
     FAIL() << "no error";
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("s.json: params.rules: share code:"), std::string::npos) << e.what();
   }
   p["rules"] = "cells";  // a preset name from assets/rules
-  EXPECT_NO_THROW(createLifeStage(p, "s.json: params", shaders()));
+  EXPECT_NO_THROW(lifeStage(p, shaders()));
 }
 
 TEST_F(LifeStageTest, DroppedRulesFileLoadsAndABadOneChangesNothing) {
@@ -83,7 +82,7 @@ TEST_F(LifeStageTest, DroppedRulesFileLoadsAndABadOneChangesNothing) {
   bad["species"][0]["forces"][1]["collisionRadius"] = 1e3;
   io::writeJsonFile((dir / "bad.json").string(), bad);
 
-  auto stage = createLifeStage(smallScene(), "s.json: params", shaders());
+  auto stage = lifeStage(smallScene(), shaders());
   gl::GpuProfiler profiler;
   EXPECT_TRUE(stage->dropFile((dir / "good.json").string()));
   stage->step(0.025, profiler);

@@ -3,6 +3,7 @@
 
 #include "base/error.h"
 #include "scene/param_json.h"
+#include "support/null_visitor.h"
 
 using namespace tidepool;
 
@@ -149,19 +150,10 @@ TEST(ParamJson, ListErrorsNameTheItemByIndex) {
 
 namespace {
 // A visitor like the editor's: adds one item, removes another.
-class AddAndRemove final : public ParamVisitor {
+class AddAndRemove final : public test::NullVisitor {
  public:
   std::size_t remove = kNoItem;
   std::vector<std::string> names;
-  void real(const ParamInfo&, float&, float, float) override {}
-  void integer(const ParamInfo&, int&, int, int) override {}
-  void flag(const ParamInfo&, bool&) override {}
-  void text(const ParamInfo&, std::string&) override {}
-  void color(const ParamInfo&, glm::vec3&) override {}
-  void vector(const ParamInfo&, glm::vec3&, float, float) override {}
-  void choiceIndex(const ParamInfo&, int&, std::span<const char* const>) override {}
-  bool beginGroup(const ParamInfo&) override { return true; }
-  void endGroup() override {}
   bool beginList(const ParamInfo&, std::size_t& size, std::size_t maxSize) override {
     if (size < maxSize) ++size;
     return true;

@@ -1,10 +1,14 @@
 // Every shipped scene loads and builds its stage; bad scene content is reported by key.
 #include <gtest/gtest.h>
 
+#include "scene/balls_stage.h"
+#include "scene/blank.h"
 #include "scene/scene.h"
 #include "support/gl_test.h"
+#include "support/scene_error.h"
 
 using namespace tidepool;
+using test::sceneError;
 
 namespace {
 class Scenes : public test::GlTest {};
@@ -32,32 +36,30 @@ TEST_F(Scenes, EveryShippedSceneLoadsBuildsStepsAndRenders) {
 TEST(SceneFile, HeaderIsValidatedAndBareNamesResolve) {
   EXPECT_EQ(resolveScenePath("default").filename(), "default.json");
   EXPECT_THROW(resolveScenePath("no-such-scene"), Error);
-  auto err = [](const std::string& text) {
-    try {
-      parseScene(io::parseJson(text, "s.json"), "s.json");
-    } catch (const Error& e) {
-      return std::string(e.what());
-    }
-    return std::string();
-  };
-  EXPECT_EQ(err("{\"modle\": \"blank\"}").rfind("s.json: scene.modle: unknown key", 0), 0u);
-  EXPECT_EQ(err("{\"clip\": {\"frames\": 0}}"), "s.json: scene.clip.frames = 0 is out of range [1, 1000000]");
-  EXPECT_EQ(err("[]"), "s.json: a scene must be a JSON object {...}");
+  EXPECT_EQ(sceneError("{\"modle\": \"blank\"}").rfind("s.json: scene.modle: unknown key", 0), 0u);
+  EXPECT_EQ(sceneError("{\"clip\": {\"frames\": 0}}"), "s.json: scene.clip.frames = 0 is out of range [1, 1000000]");
+  EXPECT_EQ(sceneError("[]"), "s.json: a scene must be a JSON object {...}");
   Scene s = parseScene(io::parseJson("{\"model\": \"blank\", \"params\": {\"color\": [1,0,0]}}", "s"), "s");
-  EXPECT_EQ(s.params["color"][0], 1);
+  EXPECT_EQ(s.params.as<BlankParams>().color, glm::vec3(1, 0, 0));
 }
 
-TEST_F(Scenes, UnknownModelAndBadParamsAreReported) {
-  Scene s = parseScene(io::parseJson("{\"model\": \"fluidd\"}", "s.json"), "s.json");
-  s.file = "s.json";
-  try {
-    createStage(s, shaders());
-    FAIL();
-  } catch (const Error& e) {
-    EXPECT_EQ(std::string(e.what()).rfind("s.json: scene.model = 'fluidd' is not a model (known: blank", 0), 0u)
-        << e.what();
-  }
-  s.model = "blank";
-  s.params = io::parseJson("{\"colour\": [1,0,0]}", "s.json");
-  EXPECT_THROW(createStage(s, shaders()), Error);
+// The params are read into the model's typed struct when the scene loads: an unknown model or a
+// bad key is reported then, before any stage is built.
+TEST(SceneFile, UnknownModelAndBadParamsAreReportedAtLoad) {
+  const std::string model = sceneError("{\"model\": \"fluidd\"}");
+  EXPECT_EQ(model.rfind("s.json: scene.model = 'fluidd' is not a model (known: blank", 0), 0u) << model;
+  EXPECT_EQ(sceneError("{\"model\": \"blank\", \"params\": {\"colour\": [1,0,0]}}"),
+            "s.json: params.colour: unknown key (known here: color)");
+}
+
+// Overrides (--rules) merge into the file's params before they are read: nested groups keep their
+// other keys.
+TEST(SceneFile, OverridesMergeIntoTheFileParams) {
+  const Scene plain = loadScene(resolveScenePath("dam-break"));
+  const Scene tinted = loadScene(resolveScenePath("dam-break"), {{"view", {{"blur_radius", 0.0}}}});
+  const BallsSceneParams& a = ballsScene(plain);
+  const BallsSceneParams& b = ballsScene(tinted);
+  EXPECT_EQ(b.view.look.blurRadius, 0.0f);
+  EXPECT_EQ(b.view.camera.distance, a.view.camera.distance);
+  EXPECT_EQ(b.model.dt, a.model.dt);
 }

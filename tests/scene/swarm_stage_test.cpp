@@ -3,9 +3,10 @@
 #include <gtest/gtest.h>
 
 #include "io/png.h"
-#include "scene/swarm_stage.h"
+#include "scene/scene.h"
 #include "sim/swarm/swarm_params.h"
 #include "support/gl_test.h"
+#include "support/null_visitor.h"
 
 using namespace tidepool;
 
@@ -14,20 +15,12 @@ namespace {
 class SwarmStages : public test::GlTest {};
 
 // Sets one integer parameter the way the ImGui editor does: through visitParams.
-class SetInteger final : public ParamVisitor {
+class SetInteger final : public test::NullVisitor {
  public:
   SetInteger(const char* key, int value) : m_key(key), m_value(value) {}
-  void real(const ParamInfo&, float&, float, float) override {}
   void integer(const ParamInfo& info, int& value, int, int) override {
     if (m_key == info.key) value = m_value;
   }
-  void flag(const ParamInfo&, bool&) override {}
-  void text(const ParamInfo&, std::string&) override {}
-  void color(const ParamInfo&, glm::vec3&) override {}
-  void vector(const ParamInfo&, glm::vec3&, float, float) override {}
-  void choiceIndex(const ParamInfo&, int&, std::span<const char* const>) override {}
-  bool beginGroup(const ParamInfo&) override { return true; }
-  void endGroup() override {}
 
  private:
   std::string m_key;
@@ -35,7 +28,8 @@ class SetInteger final : public ParamVisitor {
 };
 
 std::unique_ptr<Stage> smallSwarm(gl::ShaderLibrary& shaders, const std::string& extra = "") {
-  return createSwarmStage(io::parseJson("{\"particles\": 5000" + extra + "}", "test"), "test: params", shaders);
+  const std::string scene = "{\"model\": \"swarm\", \"params\": {\"particles\": 5000" + extra + "}}";
+  return createStage(parseScene(io::parseJson(scene, "test"), "test"), shaders);
 }
 
 }  // namespace

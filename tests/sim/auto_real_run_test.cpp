@@ -9,7 +9,6 @@
 #include <numbers>
 
 #include "scene/balls_stage.h"
-#include "scene/param_json.h"
 #include "scene/scene.h"
 #include "sim/balls/measure/balls_measure.h"
 #include "sim/ripples/measure/ripples_measure.h"
@@ -32,23 +31,6 @@ int indexOf(const std::array<const char*, N>& names, const std::string& name) {
   return 0;
 }
 
-// The model's params from a scene's JSON (view and drops are the stage's, not the model's).
-template <class P>
-P modelParams(io::Json json, void (*visitModel)(ParamVisitor&, P&)) {
-  json.erase("view");
-  json.erase("drops");
-  P p;
-  readParams(
-      json, [&](ParamVisitor& v) { visitModel(v, p); }, "test");
-  return p;
-}
-
-Scene withSettings(Scene scene, const io::Json& original, const io::Json& settings) {
-  scene.params = original;
-  scene.params.merge_patch(settings);
-  return scene;
-}
-
 }  // namespace
 
 TEST_F(AutoRealRun, SwarmPickMeetsItsEnergyDriftAndMovesLessStateThanTheMostAccurate) {
@@ -56,8 +38,7 @@ TEST_F(AutoRealRun, SwarmPickMeetsItsEnergyDriftAndMovesLessStateThanTheMostAccu
   const Scene scene = loadScene(file);
   ASSERT_TRUE(scene.autoChoice);
   const double bound = scene.accuracy["energyDrift"];
-  auto params = [&](const io::Json& json) { return modelParams<sim::SwarmParams>(json, sim::visit); };
-  const sim::SwarmParams picked = params(scene.params);
+  const sim::SwarmParams& picked = scene.params.model<sim::SwarmParams>();
   ASSERT_GT(picked.maxDt, 0.0f);
   // At the picked step (a row of the study: a whole number of steps per orbit) ...
   const int stepsPerOrbit = int(std::lround(sim::orbitPeriod() / picked.maxDt));
@@ -71,8 +52,7 @@ TEST_F(AutoRealRun, SwarmPickMeetsItsEnergyDriftAndMovesLessStateThanTheMostAccu
 
   // Cost: the step is bound by memory traffic (shaders/swarm/swarm_step.comp reads and writes
   // each particle once), so state bytes per simulated second rank the settings.
-  const io::Json original = io::readJsonFile(file)["params"];
-  const sim::SwarmParams best = params(withSettings(scene, original, scene.autoChoice->mostAccurateSettings).params);
+  const sim::SwarmParams& best = scene.autoChoice->mostAccurateParams.model<sim::SwarmParams>();
   auto bytesPerSimSecond = [](const sim::SwarmParams& p, double dt) {
     return 2.0 * double(sim::swarmBytesPerParticle(p.storage)) / dt;
   };
@@ -87,8 +67,7 @@ TEST_F(AutoRealRun, RipplesPickMeetsItsPhaseErrorAndUpdatesFewerCellsThanTheMost
   const Scene scene = loadScene(file);
   ASSERT_TRUE(scene.autoChoice);
   const double bound = scene.accuracy["phaseError"], wavelength = scene.accuracy["wavelength"];
-  auto params = [&](const io::Json& json) { return modelParams<ripples::Params>(json, ripples::visit); };
-  const ripples::Params picked = params(scene.params);
+  const ripples::Params& picked = scene.params.model<ripples::Params>();
   const int cells = int(std::lround(wavelength / picked.cellSize));
   const double k = 2 * std::numbers::pi / cells;
   const double pickedCourant = picked.courantTarget * ripples::kCourantLimit2D;
@@ -99,8 +78,7 @@ TEST_F(AutoRealRun, RipplesPickMeetsItsPhaseErrorAndUpdatesFewerCellsThanTheMost
   EXPECT_LE(sceneCourant, pickedCourant * (1 + 1e-6));
   EXPECT_LE(std::abs(ripples::measuredPhaseRatio(shaders(), 2 * cells, 8, k, 0.0, sceneCourant, 3.0) - 1.0), bound);
 
-  const io::Json original = io::readJsonFile(file)["params"];
-  const ripples::Params best = params(withSettings(scene, original, scene.autoChoice->mostAccurateSettings).params);
+  const ripples::Params& best = scene.autoChoice->mostAccurateParams.model<ripples::Params>();
   auto cellUpdatesPerSimSecond = [&](const ripples::Params& p) {
     return double(p.width) * p.height * ripples::substepsFor(p, frame) / frame;
   };
@@ -120,8 +98,7 @@ TEST_F(AutoRealRun, BallsPickMeetsItsRestitutionErrorInFewerStepsThanTheMostAccu
       balls::measureBounce(shaders(), picked.integrator, picked.restitution, picked.contactTime / picked.dt);
   EXPECT_LE(std::abs(b.restitution / picked.restitution - 1.0), bound);
 
-  const io::Json original = io::readJsonFile(file)["params"];
-  const balls::Params best = ballsParams(withSettings(scene, original, scene.autoChoice->mostAccurateSettings));
+  const balls::Params& best = scene.autoChoice->mostAccurateParams.model<balls::Params>();
   EXPECT_NEAR(picked.dt * picked.substeps, best.dt * best.substeps, 1e-6);  // the frame's simulated time is kept
   EXPECT_LT(scene.autoChoice->costMsPerSimS, scene.autoChoice->mostAccurateCost);
   EXPECT_LT(1.0 / picked.dt, 1.0 / best.dt);  // steps per simulated second
