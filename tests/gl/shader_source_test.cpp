@@ -5,6 +5,7 @@
 #include <map>
 
 #include "gl/shader_source.h"
+#include "support/error_of.h"
 
 using namespace tidepool;
 using namespace tidepool::gl;
@@ -18,14 +19,7 @@ ShaderFileReader files(std::map<std::string, std::string> table) {
   };
 }
 
-std::string errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::errorOf;
 
 int count(const std::string& text, const std::string& needle) {
   int n = 0;

@@ -4,6 +4,7 @@
 
 #include "scene/balls_stage.h"
 #include "scene/scene.h"
+#include "support/error_of.h"
 #include "support/gl_test.h"
 
 using namespace tidepool;
@@ -14,14 +15,11 @@ class BallsSceneObstacles : public test::GlTest {
  protected:
   // The error of loading a balls scene whose params are `params` and building its stage ("" if none).
   std::string errorOf(const std::string& params) {
-    try {
+    return test::errorOf([&] {
       Scene s = parseScene(io::parseJson(R"({"model": "balls", "params": )" + params + "}", "s.json"), "s.json");
       s.file = "s.json";
       createStage(s, shaders());
-    } catch (const Error& e) {
-      return e.what();
-    }
-    return "";
+    });
   }
 };
 

@@ -3,6 +3,7 @@
 
 #include "base/error.h"
 #include "scene/param_json.h"
+#include "support/error_of.h"
 #include "support/null_visitor.h"
 
 using namespace tidepool;
@@ -58,12 +59,7 @@ P read(const std::string& text) {
 }
 
 std::string errorOf(const std::string& text) {
-  try {
-    read(text);
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
+  return test::errorOf([&] { read(text); });
 }
 }  // namespace
 

@@ -26,4 +26,17 @@ inline ProcessResult expectOneLineError(const std::vector<std::string>& args, co
   return r;
 }
 
+// Renders `scene` (a file in `dir`) headless and expects it to end like a failed run: no crash,
+// exit status 1, and a last stderr line (after any progress) containing `expected`. Returns
+// that line.
+inline std::string expectRenderFails(const std::string& scene, const std::string& outDir, const std::string& expected) {
+  const ProcessResult r = runTidepool({"render", scene, "--out", outDir, "--quiet"});
+  EXPECT_FALSE(r.signaled) << r.err;
+  EXPECT_EQ(r.exitCode, 1) << r.err;
+  const std::vector<std::string> lines = r.errLines();
+  const std::string last = lines.empty() ? "" : lines.back();
+  EXPECT_NE(last.find(expected), std::string::npos) << r.err;
+  return last;
+}
+
 }  // namespace tidepool::test

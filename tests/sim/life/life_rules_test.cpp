@@ -9,6 +9,7 @@
 #include "base/error.h"
 #include "io/json.h"
 #include "sim/life/life_rules.h"
+#include "support/error_of.h"
 #include "support/gl_test.h"
 
 using namespace tidepool;
@@ -16,14 +17,7 @@ using namespace tidepool::life;
 
 namespace {
 
-std::string errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+using tidepool::test::errorOf;
 
 io::Json validJson() { return rulesToJson(generateRules({.species = 3, .particleCount = 1000, .seed = 5})); }
 

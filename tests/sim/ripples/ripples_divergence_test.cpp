@@ -8,7 +8,7 @@
 #include "sim/ripples/measure/ripples_measure.h"
 #include "sim/ripples/ripples.h"
 #include "support/gl_test.h"
-#include "support/run_process.h"
+#include "support/one_line_error.h"
 
 using namespace tidepool;
 using namespace tidepool::ripples;
@@ -88,10 +88,6 @@ TEST(RipplesDivergenceCli, HeadlessRunExitsNonZeroWithTheMessage) {
       "auto_substeps": false, "substeps": 1, "vel_damping": 0,
       "drops": [{"time": 0, "x": 0.5, "y": 0.5, "radius": 0.05, "depth": -0.05}]},
       "clip": {"frames": 400, "fps": 30, "width": 32, "height": 32}})");
-  auto r = test::runTidepool({"render", (dir / "boom.json").string(), "--out", (dir / "f").string(), "--quiet"});
-  EXPECT_FALSE(r.signaled);
-  EXPECT_EQ(r.exitCode, 1);
-  const auto lines = r.errLines();
-  ASSERT_FALSE(lines.empty());
-  EXPECT_NE(lines.back().find("tidepool: error: ripples diverged by t = "), std::string::npos) << r.err;
+  test::expectRenderFails((dir / "boom.json").string(), (dir / "f").string(),
+                          "tidepool: error: ripples diverged by t = ");
 }
