@@ -3,8 +3,9 @@
 // globalIndex() over dispatches that spill into y, and the bounds check every 1D kernel needs.
 layout(local_size_x = 64) in;
 #include "common/index.glsl"
+#include "selftest/bindings.glsl"
 
-layout(std430, binding = 0) buffer Out { uint values[]; };
+layout(std430, binding = SELFTEST_OUT) buffer Out { uint values[]; };
 uniform uint uCount;
 uniform uint uMul;
 

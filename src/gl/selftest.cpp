@@ -1,13 +1,14 @@
 #include "gl/selftest.h"
 
 #include "gl/buffer.h"
+#include "selftest/bindings.glsl"
 
 namespace tidepool::gl {
 
 std::string computeSelfTest(ShaderLibrary& shaders, unsigned count) {
   Program& fill = shaders.program({"selftest/fill.comp"});
   Buffer out(std::size_t(count) * sizeof(GLuint));
-  out.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
+  out.bindBase(GL_SHADER_STORAGE_BUFFER, SELFTEST_OUT);
   fill.use();
   fill.set("uCount", count);
   fill.set("uMul", 7u);

@@ -6,6 +6,7 @@
 #include "gl/buffer.h"
 #include "gl/framebuffer.h"
 #include "gl/texture.h"
+#include "selftest/bindings.glsl"
 #include "support/gl_test.h"
 
 using namespace tidepool;
@@ -61,7 +62,7 @@ TEST_F(GlObjects, ComputeShaderWritesSsboThatReadsBackExactly) {
   Buffer out(std::size_t(kCount + 1) * sizeof(uint32_t));
   const uint32_t sentinel = 0xDEADBEEFu;
   out.upload(&sentinel, sizeof sentinel, kCount * sizeof(uint32_t));
-  out.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
+  out.bindBase(GL_SHADER_STORAGE_BUFFER, SELFTEST_OUT);
   fill.use();
   fill.set("uCount", kCount);
   fill.set("uMul", 3u);
@@ -79,7 +80,7 @@ TEST_F(GlObjects, DispatchBeyondTheGroupCountLimitSpillsIntoY) {
   const std::size_t count = std::size_t(maxX) * local + 3 * local + 5;  // needs a second row of groups
   if (count * 4 > 256u << 20) GTEST_SKIP() << "group-count limit too large to test cheaply here";
   Buffer out(count * sizeof(uint32_t));
-  out.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
+  out.bindBase(GL_SHADER_STORAGE_BUFFER, SELFTEST_OUT);
   fill.use();
   fill.set("uCount", uint32_t(count));
   fill.set("uMul", 1u);
