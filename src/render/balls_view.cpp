@@ -57,9 +57,9 @@ BallsView::BallsView(gl::ShaderLibrary& shaders)
 
 const gl::Texture2D& BallsView::composedSurface() const { return m_blurred ? m_blur.result() : m_gbuffer.surface(); }
 
-BallsScene BallsView::sceneOf(const balls::Balls& model) {
+BallsScene BallsView::sceneOf(const sim::ParticleWater& model) {
   // The box turns on screen while gravity stays pointing down (water-webgpu's domain rotation).
-  const balls::Params& p = model.params();
+  const balls::Params& p = model.water();
   const glm::vec3 centre = 0.5f * (p.domainMin + p.domainMax);
   glm::mat4 world = glm::translate(glm::mat4(1.0f), centre);
   world = glm::rotate(world, -model.domainRotation(), glm::vec3(1, 0, 0));
@@ -83,8 +83,8 @@ BallsScene BallsView::sceneOf(const balls::Balls& model) {
   return s;
 }
 
-void BallsView::render(const balls::Balls& model, RenderTarget& target, gl::GpuProfiler& profiler) {
-  const balls::Params& p = model.params();
+void BallsView::render(const sim::ParticleWater& model, RenderTarget& target, gl::GpuProfiler& profiler) {
+  const balls::Params& p = model.water();
   const glm::vec3 centre = 0.5f * (p.domainMin + p.domainMax);
   m_camera.fit(centre, 0.5f * glm::length(p.domainMax - p.domainMin));
   BallsCamera camera;

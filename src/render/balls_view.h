@@ -24,7 +24,7 @@
 #include "render/orbit_camera.h"
 #include "render/target.h"
 #include "render/water_blur.h"
-#include "sim/balls/balls.h"
+#include "sim/particle_water.h"
 
 namespace tidepool {
 
@@ -39,8 +39,8 @@ class BallsView {
   explicit BallsView(gl::ShaderLibrary& shaders);
   BallsViewParams& params() { return m_params; }
   OrbitCamera& camera() { return m_camera; }
-  // The model's balls, obstacle and walls from the orbit camera (near/far fitted to the domain).
-  void render(const balls::Balls& model, RenderTarget& target, gl::GpuProfiler& profiler);
+  // The model's particles (balls or fluid), obstacles and walls from the orbit camera (near/far fitted to the domain).
+  void render(const sim::ParticleWater& model, RenderTarget& target, gl::GpuProfiler& profiler);
   // Any spheres from any camera (tests, benchmarks); camera size = target size.
   void render(const BallsScene& scene, const BallsCamera& camera, RenderTarget& target, gl::GpuProfiler& profiler);
 
@@ -54,7 +54,7 @@ class BallsView {
   // Clears the target's depth and draws the obstacles inside the returned rectangle only (the
   // whole window for the fragment raster, whose passes test against the depth attachment).
   WindowRect drawScene(const BallsScene& scene, const BallsCamera& camera, RenderTarget& target);
-  BallsScene sceneOf(const balls::Balls& model);  // builds the meshes of new or reshaped obstacles
+  BallsScene sceneOf(const sim::ParticleWater& model);  // builds the meshes of new or reshaped obstacles
   gl::ShaderLibrary& m_shaders;
   BallsViewParams m_params;
   OrbitCamera m_camera;

@@ -27,6 +27,7 @@ struct BallsSceneParams {
 };
 
 void visit(ParamVisitor& v, BallsViewSettings& s);
+void visitViewGroup(ParamVisitor& v, BallsViewSettings& s);  // the "view" group (balls and fluid scenes)
 void visit(ParamVisitor& v, BallsSceneParams& p);
 
 ModelEntry ballsModel();  // "balls" in scene files

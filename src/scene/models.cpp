@@ -2,6 +2,7 @@
 // name, summary, and how its params are read and its stage built, from its stage file).
 #include "scene/balls_stage.h"
 #include "scene/blank.h"
+#include "scene/fluid_stage.h"
 #include "scene/life_stage.h"
 #include "scene/ripples_stage.h"
 #include "scene/stage.h"
@@ -10,7 +11,8 @@
 namespace tidepool {
 
 const std::vector<ModelEntry>& models() {
-  static const std::vector<ModelEntry> table = {blankModel(), ballsModel(), ripplesModel(), swarmModel(), lifeModel()};
+  static const std::vector<ModelEntry> table = {blankModel(),   ballsModel(), fluidModel(),
+                                                ripplesModel(), swarmModel(), lifeModel()};
   return table;
 }
 

@@ -97,3 +97,22 @@ TEST(BadInput, UnwritableOutputFolder) {
   expectOneLineError({"render", "blank", "--frames", "1", "--out", "/proc/tidepool-out"}, "cannot create output folder",
                      1);
 }
+
+TEST(BadInput, FluidParametersNameTheKeyAndTheLimit) {
+  test::TempDir dir;
+  auto scene = [&](const std::string& name, const std::string& params) {
+    dir.write(name, R"({"model": "fluid", "params": )" + params + "}");
+    return std::vector<std::string>{"render", (dir / name).string(), "--frames", "1", "--out", (dir / "o").string()};
+  };
+  expectOneLineError(scene("h.json", R"({"solver": {"smoothing": 0.5}})"),
+                     "params.solver.smoothing = 0.5 is out of range [1.01, 4]", 1);
+  expectOneLineError(scene("iter.json", R"({"solver": {"iterations": 0}})"),
+                     "params.solver.iterations = 0 is out of range [1, 100]", 1);
+  expectOneLineError(scene("rho.json", R"({"solver": {"rest_density": 0}})"),
+                     "params.solver.rest_density = 0 is out of range [1, 100000]", 1);
+  expectOneLineError(scene("many.json", R"({"particles": {"spacing": 0.001, "fill": "block", "fill_min": [0, 0, 0],
+                                             "fill_max": [1, 1, 1], "domain_max": [1, 1, 1]}})"),
+                     "fluid: particles.spacing = 0.001 m would make about 1e+09 particles, more than "
+                     "max_particles = 16777216 (raise spacing or max_particles)",
+                     1);
+}

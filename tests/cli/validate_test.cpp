@@ -53,5 +53,5 @@ TEST(Validate, BadProbesAndModelsAreOneLineErrors) {
   test::expectOneLineError({"validate", "dam-break", "--probe", "energy,speed"}, "--probe 'speed' is not one of");
   auto ripples = test::runTidepool({"validate", "ripples"});
   EXPECT_EQ(ripples.exitCode, 1);
-  EXPECT_NE(ripples.err.find("validate runs balls scenes"), std::string::npos) << ripples.err;
+  EXPECT_NE(ripples.err.find("validate runs balls and fluid scenes"), std::string::npos) << ripples.err;
 }

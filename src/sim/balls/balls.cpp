@@ -9,13 +9,12 @@
 #include "balls/stats_layout.glsl"
 #include "base/error.h"
 #include "sim/balls/balls_init.h"
+#include "sim/balls/water_frame.h"
+#include "sim/particle_memory.h"
 
 namespace tidepool::balls {
 namespace {
-constexpr float kPi = 3.14159265358979f;
 constexpr std::size_t kMaxCheckpointBalls = std::size_t(4) << 20;  // larger runs keep no copy to go back to
-
-std::string mib(std::size_t bytes) { return std::to_string((bytes + (1 << 20) - 1) >> 20) + " MiB"; }
 }  // namespace
 
 Balls::Balls(gl::ShaderLibrary& shaders, const Params& params)
@@ -24,23 +23,9 @@ Balls::Balls(gl::ShaderLibrary& shaders, const Params& params)
 }
 
 void Balls::allocate(std::size_t count, std::size_t capacity) {
-  if (capacity > std::size_t(m_params.maxParticles))
-    throw Error("balls: " + std::to_string(capacity) +
-                " balls requested, more than max_particles = " + std::to_string(m_params.maxParticles));
   const std::size_t bytes = std::max<std::size_t>(capacity, 1) * sizeof(glm::vec4);
-  GLint64 maxBlock = 0;
-  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
-  if (bytes > std::size_t(maxBlock))
-    throw Error("balls: " + std::to_string(capacity) + " balls need " + mib(bytes) +
-                " per state array, more than this GPU's storage-buffer limit of " + mib(std::size_t(maxBlock)));
-  const std::size_t total = bytes * 5 + capacity * 8;
-  if (GLAD_GL_NVX_gpu_memory_info) {
-    GLint freeKb = 0;
-    glGetIntegerv(GL_GPU_MEMORY_INFO_CURRENT_AVAILABLE_VIDMEM_NVX, &freeKb);
-    if (freeKb > 0 && total > std::size_t(freeKb) * 1024)
-      throw Error("balls: " + std::to_string(capacity) + " balls need about " + mib(total) + ", but only " +
-                  mib(std::size_t(freeKb) * 1024) + " of GPU memory are free");
-  }
+  sim::checkParticleMemory("balls", "balls", capacity, std::size_t(m_params.maxParticles), sizeof(glm::vec4),
+                           bytes * 5 + capacity * 8);
   m_count = count;
   if (m_capacity == capacity && m_pos[0].size() == bytes) return;
   for (int k = 0; k < 2; ++k) {
@@ -82,57 +67,30 @@ void Balls::reset() {
 void Balls::emitFromTap() {
   const Params& p = m_params;
   if (!p.tap || m_tapEmitted >= std::size_t(p.tapMax) || m_time < m_tapNextLayer || p.tapSpeed <= 0) return;
-  // One hexagonal layer of the nozzle disc, then wait until the jet has moved on by a spacing.
-  const glm::vec3 dir = glm::length(p.tapDirection) > 0 ? glm::normalize(p.tapDirection) : glm::vec3(0, 0, 1);
-  const glm::vec3 u = glm::normalize(std::abs(dir.z) < 0.9f ? glm::cross(dir, glm::vec3(0, 0, 1))
-                                                            : glm::cross(dir, glm::vec3(1, 0, 0)));
-  const glm::vec3 w = glm::cross(dir, u);
-  const float s = 2.0f * m_radius * 1.02f;
-  std::vector<glm::vec4> pos, vel;
-  const int n = int(std::ceil(p.tapRadius / s));
-  for (int j = -n; j <= n; ++j)
-    for (int i = -n; i <= n; ++i) {
-      const glm::vec2 q((float(i) + 0.5f * float(j & 1)) * s, float(j) * s * 0.8660254f);
-      if (glm::length(q) > p.tapRadius + 1e-6f) continue;
-      if (m_tapEmitted + pos.size() >= std::size_t(p.tapMax) || m_count + pos.size() >= m_capacity) break;
-      pos.emplace_back(p.tapPosition + q.x * u + q.y * w, 1.0f);
-      vel.emplace_back(p.tapSpeed * dir, 0.0f);
-    }
-  if (pos.empty()) return;
+  // One layer of the nozzle disc, then wait until the jet has moved on by a spacing.
+  const TapLayer layer = tapLayer(p, m_radius, std::min(std::size_t(p.tapMax) - m_tapEmitted, m_capacity - m_count));
+  if (layer.pos.empty()) return;
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);  // shader writes land before the uploads
-  const std::size_t at = m_count * sizeof(glm::vec4), bytes = pos.size() * sizeof(glm::vec4);
-  m_pos[m_posIndex].upload(pos.data(), bytes, at);
-  m_vel[m_velIndex].upload(vel.data(), bytes, at);
-  const std::vector<glm::vec4> zeros(pos.size(), glm::vec4(0.0f));
+  const std::size_t at = m_count * sizeof(glm::vec4), bytes = layer.pos.size() * sizeof(glm::vec4);
+  m_pos[m_posIndex].upload(layer.pos.data(), bytes, at);
+  m_vel[m_velIndex].upload(layer.vel.data(), bytes, at);
+  const std::vector<glm::vec4> zeros(layer.pos.size(), glm::vec4(0.0f));
   m_acc.upload(zeros.data(), bytes, at);
-  m_count += pos.size();
-  m_tapEmitted += pos.size();
-  m_tapNextLayer = m_time + s * 0.8165 / p.tapSpeed;  // HCP layer spacing 2r·√(2/3)
+  m_count += layer.pos.size();
+  m_tapEmitted += layer.pos.size();
+  m_tapNextLayer = m_time + layer.interval;
 }
 
-glm::vec3 Balls::gravity() const {
-  const float a = domainRotation();
-  const glm::vec3 g = resolved(m_params).gravity;
-  return {g.x, std::cos(a) * g.y - std::sin(a) * g.z, std::sin(a) * g.y + std::cos(a) * g.z};
-}
+glm::vec3 Balls::gravity() const { return gravityAt(resolved(m_params), m_time); }
 
-float Balls::domainRotation() const {
-  return (m_params.rotation + m_params.rotationRate * float(m_time)) * kPi / 180.0f;
-}
+float Balls::domainRotation() const { return balls::domainRotation(m_params, m_time); }
 
 void Balls::updateWalls() {
-  const Params& p = m_params;
-  m_wallMin = p.domainMin;
-  m_wallMax = p.domainMax;
-  m_wallMinVel = m_wallMaxVel = glm::vec3(0.0f);
-  if (p.pistonAxis >= 1 && p.pistonAxis <= 3) {
-    // The max wall of the axis travels in and out: offset = travel·extent·(1 − cos(2πt/T))/2.
-    const int k = p.pistonAxis - 1;
-    const float extent = p.domainMax[k] - p.domainMin[k], w = 2.0f * kPi / p.pistonPeriod;
-    const float t = float(m_time);
-    m_wallMax[k] = p.domainMax[k] - p.pistonTravel * extent * 0.5f * (1.0f - std::cos(w * t));
-    m_wallMaxVel[k] = -p.pistonTravel * extent * 0.5f * w * std::sin(w * t);
-  }
+  const Walls w = wallsAt(m_params, m_time);
+  m_wallMin = w.min;
+  m_wallMax = w.max;
+  m_wallMinVel = w.minVel;
+  m_wallMaxVel = w.maxVel;
 }
 
 double Balls::speedBound() const { return 2.0 * m_radius / m_params.dt; }

@@ -22,6 +22,7 @@
 #include "sim/balls/balls_params.h"
 #include "sim/balls/obstacles.h"
 #include "sim/model.h"
+#include "sim/particle_water.h"
 
 namespace tidepool::balls {
 
@@ -40,7 +41,7 @@ struct Stats {
   double backHeight = 0;      // largest z of balls within 2r of the back (x min) wall, m (NaN: none)
 };
 
-class Balls final : public sim::Model {
+class Balls final : public sim::Model, public sim::ParticleWater {
  public:
   Balls(gl::ShaderLibrary& shaders, const Params& params);  // throws Error (size, memory)
 
@@ -51,7 +52,7 @@ class Balls final : public sim::Model {
   void step(double frameSeconds, gl::GpuProfiler& profiler) override;
   void step(gl::GpuProfiler& profiler) { step(0.0, profiler); }  // the same frame
   double time() const override { return m_time; }
-  std::size_t count() const override { return m_count; }
+  std::size_t count() const override { return m_count; }  // sim::Model and sim::ParticleWater
   std::string status() const override;                    // counts and radius (and a refused obstacle edit above them)
   std::vector<sim::StateBuffer> stateBuffers() override;  // positions, velocities (m_count each)
 
@@ -59,18 +60,19 @@ class Balls final : public sim::Model {
   Stats stats();                                       // reduction on the GPU, read back (blocking)
 
   std::size_t obstacleCount() const { return m_obstacles.particles(); }  // fixed particles, all obstacles
-  float radius() const { return m_radius; }                              // after lattice scaling
+  float radius() const override { return m_radius; }                     // after lattice scaling
   glm::vec3 gravity() const;                                             // current, rotated with the domain
-  glm::vec3 wallMin() const { return m_wallMin; }
-  glm::vec3 wallMax() const { return m_wallMax; }
-  float domainRotation() const;                                       // radians about x
+  glm::vec3 wallMin() const override { return m_wallMin; }
+  glm::vec3 wallMax() const override { return m_wallMax; }
+  float domainRotation() const override;  // radians about x
+  const Params& water() const override { return m_params; }
   std::size_t bytesPerBall() const;                                   // GPU memory per ball, grid included
   std::size_t cells() const { return m_grid ? m_grid->cells() : 0; }  // of the neighbour grid
   double speedBound() const;  // m/s: faster means more than 2r per step, balls can pass through each other
 
-  const gl::Buffer& positions() const { return m_pos[m_posIndex]; }   // vec4 (m, w = 1)
-  const gl::Buffer& velocities() const { return m_vel[m_velIndex]; }  // vec4 (m/s, w = foam)
-  const Obstacles& obstacles() const { return m_obstacles; }          // as placed at the last step
+  const gl::Buffer& positions() const override { return m_pos[m_posIndex]; }   // vec4 (m, w = 1)
+  const gl::Buffer& velocities() const override { return m_vel[m_velIndex]; }  // vec4 (m/s, w = foam)
+  const Obstacles& obstacles() const override { return m_obstacles; }          // as placed at the last step
   // Why the last edit of the obstacles was refused (e.g. a missing mesh file); empty if it was not.
   // A refused edit leaves that obstacle, and its parameters, as they were.
   const std::string& obstacleError() const { return m_obstacleError; }

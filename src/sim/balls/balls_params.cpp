@@ -5,17 +5,9 @@ namespace tidepool::balls {
 void visit(ParamVisitor& v, Params& p) {
   if (v.beginGroup({"particles", "Particles", "count, size and initial state (re-creates the particles)"})) {
     v.real({"radius", "Radius", "r, m"}, p.radius, 1e-4f, 0.5f);
-    v.vector({"domain_min", "Domain min", "m"}, p.domainMin, -100.0f, 100.0f);
-    v.vector({"domain_max", "Domain max", "m"}, p.domainMax, -100.0f, 100.0f);
-    v.choice({"fill", "Fill", "block, slab, random, lattice (benchmark) or none"}, p.fill, kFillNames);
-    v.vector({"fill_min", "Fill min", "block / random region, m"}, p.fillMin, -100.0f, 100.0f);
-    v.vector({"fill_max", "Fill max", "block / random region, m"}, p.fillMax, -100.0f, 100.0f);
-    v.real({"slab_height", "Slab height", "m"}, p.slabHeight, 0.0f, 100.0f);
-    v.integer({"random_count", "Random count", "particles"}, p.randomCount, 1, 1 << 26);
+    visitFill(v, p);
     v.integer({"lattice_count", "Lattice count", "particles"}, p.latticeCount, 1, 1 << 26);
     v.flag({"lattice_scaling", "Lattice scaling", "r = 1/G and gravity x 64/G as the CUDA sample"}, p.latticeScaling);
-    v.real({"jitter", "Jitter", "initial noise, fraction of r"}, p.jitter, 0.0f, 0.5f);
-    v.integer({"max_particles", "Max particles", "refuse larger requests"}, p.maxParticles, 1, 1 << 28);
     v.endGroup();
   }
   if (v.beginGroup({"engine", "Engine", "time step, contact law, integrator"})) {
@@ -44,22 +36,46 @@ void visit(ParamVisitor& v, Params& p) {
     v.endGroup();
   }
   if (v.beginGroup({"walls", "Walls", "piston and domain rotation"})) {
-    v.integer({"piston_axis", "Piston axis", "0 none, 1 x, 2 y, 3 z: that axis' max wall moves"}, p.pistonAxis, 0, 3);
-    v.real({"piston_travel", "Piston travel", "fraction of the domain"}, p.pistonTravel, 0.0f, 0.9f);
-    v.real({"piston_period", "Piston period", "s"}, p.pistonPeriod, 0.01f, 1000.0f);
-    v.real({"rotation", "Rotation", "degrees about x (gravity follows)"}, p.rotation, -360.0f, 360.0f);
-    v.real({"rotation_rate", "Rotation rate", "degrees per s"}, p.rotationRate, -3600.0f, 3600.0f);
+    visitWalls(v, p);
     v.endGroup();
   }
   if (v.beginGroup({"tap", "Tap", "emits balls over time"})) {
-    v.flag({"enabled", "Enabled", ""}, p.tap);
-    v.vector({"position", "Position", "nozzle centre, m"}, p.tapPosition, -100.0f, 100.0f);
-    v.vector({"direction", "Direction", "of the jet"}, p.tapDirection, -1.0f, 1.0f);
-    v.real({"speed", "Speed", "m/s"}, p.tapSpeed, 0.0f, 100.0f);
-    v.real({"radius", "Nozzle radius", "m"}, p.tapRadius, 0.0f, 10.0f);
-    v.integer({"max", "Max balls", "the tap stops after adding this many"}, p.tapMax, 0, 1 << 26);
+    visitTap(v, p);
     v.endGroup();
   }
+  visitObstacles(v, p);
+}
+
+void visitFill(ParamVisitor& v, Params& p) {
+  v.vector({"domain_min", "Domain min", "m"}, p.domainMin, -100.0f, 100.0f);
+  v.vector({"domain_max", "Domain max", "m"}, p.domainMax, -100.0f, 100.0f);
+  v.choice({"fill", "Fill", "block, slab, random, lattice (benchmark) or none"}, p.fill, kFillNames);
+  v.vector({"fill_min", "Fill min", "block / random region, m"}, p.fillMin, -100.0f, 100.0f);
+  v.vector({"fill_max", "Fill max", "block / random region, m"}, p.fillMax, -100.0f, 100.0f);
+  v.real({"slab_height", "Slab height", "m"}, p.slabHeight, 0.0f, 100.0f);
+  v.integer({"random_count", "Random count", "particles"}, p.randomCount, 1, 1 << 26);
+  v.real({"jitter", "Jitter", "initial noise, fraction of r"}, p.jitter, 0.0f, 0.5f);
+  v.integer({"max_particles", "Max particles", "refuse larger requests"}, p.maxParticles, 1, 1 << 28);
+}
+
+void visitWalls(ParamVisitor& v, Params& p) {
+  v.integer({"piston_axis", "Piston axis", "0 none, 1 x, 2 y, 3 z: that axis' max wall moves"}, p.pistonAxis, 0, 3);
+  v.real({"piston_travel", "Piston travel", "fraction of the domain"}, p.pistonTravel, 0.0f, 0.9f);
+  v.real({"piston_period", "Piston period", "s"}, p.pistonPeriod, 0.01f, 1000.0f);
+  v.real({"rotation", "Rotation", "degrees about x (gravity follows)"}, p.rotation, -360.0f, 360.0f);
+  v.real({"rotation_rate", "Rotation rate", "degrees per s"}, p.rotationRate, -3600.0f, 3600.0f);
+}
+
+void visitTap(ParamVisitor& v, Params& p) {
+  v.flag({"enabled", "Enabled", ""}, p.tap);
+  v.vector({"position", "Position", "nozzle centre, m"}, p.tapPosition, -100.0f, 100.0f);
+  v.vector({"direction", "Direction", "of the jet"}, p.tapDirection, -1.0f, 1.0f);
+  v.real({"speed", "Speed", "m/s"}, p.tapSpeed, 0.0f, 100.0f);
+  v.real({"radius", "Nozzle radius", "m"}, p.tapRadius, 0.0f, 10.0f);
+  v.integer({"max", "Max balls", "the tap stops after adding this many"}, p.tapMax, 0, 1 << 26);
+}
+
+void visitObstacles(ParamVisitor& v, Params& p) {
   v.list(
       {"obstacles", "Obstacles", "fixed particles from shapes; added, removed, moved and turned while running"},
       p.obstacles, kMaxObstacles, [](ParamVisitor& v, ObstacleParams& o) { visit(v, o); },

@@ -105,6 +105,11 @@ struct Params {
 };
 
 void visit(ParamVisitor& v, Params& p);
+// The parts the fluid model shares (sim/fluid/fluid_params.h), each without its group.
+void visitFill(ParamVisitor& v, Params& p);       // domain, fill, fill region, jitter, max particles
+void visitWalls(ParamVisitor& v, Params& p);      // piston, rotation
+void visitTap(ParamVisitor& v, Params& p);        // the tap's keys
+void visitObstacles(ParamVisitor& v, Params& p);  // the "obstacles" list
 
 // Spring constant and dashpot coefficient per unit effective mass from t_c and e:
 //   k = (pi^2 + ln^2 e) / t_c^2,  gamma = -2 ln e / t_c   (linear spring-dashpot, exact t_c and e)

@@ -110,6 +110,19 @@ void Obstacles::upload() {
   m_body = gl::Buffer(bytes, all.data());
   m_world = gl::Buffer(bytes);
   m_sorted = gl::Buffer(bytes);
+  if (m_volumeFn) {
+    m_volumeSorted = gl::Buffer(bytes);
+    refreshVolumes();
+  }
+}
+
+void Obstacles::refreshVolumes() {
+  if (!m_volumeFn || m_particles == 0) return;
+  std::vector<glm::vec4> all;
+  for (const ObstacleBody& b : m_bodies)
+    for (float v : m_volumeFn(b)) all.emplace_back(v, 0.0f, 0.0f, 0.0f);
+  m_volumeBody = gl::Buffer(all.size() * sizeof(glm::vec4), all.data());
+  m_dirty = true;  // sorted again at the next place()
 }
 
 void Obstacles::place(const std::vector<ObstacleParams>& params, double time, glm::vec3 domainMin, glm::vec3 domainMax,
@@ -159,7 +172,10 @@ void Obstacles::place(const std::vector<ObstacleParams>& params, double time, gl
   program.dispatchThreads(m_particles);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   m_grid->build(m_world, m_particles);
-  m_grid->reorder(m_world, {{&m_world, &m_sorted}});
+  if (m_volumeFn)
+    m_grid->reorder(m_world, {{&m_world, &m_sorted}, {&m_volumeBody, &m_volumeSorted}});
+  else
+    m_grid->reorder(m_world, {{&m_world, &m_sorted}});
 }
 
 bool Obstacles::occupied(glm::vec3 world) const {

@@ -10,6 +10,7 @@
 // running rebuild only the obstacles whose shape changed; moving or turning one rebuilds nothing.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -55,6 +56,15 @@ class Obstacles {
   bool occupied(glm::vec3 world) const;   // inside an obstacle at its placed pose
   void bind(gl::Program& program) const;  // uniforms, pose block and buffers of the contact search
 
+  // Rest volumes of every obstacle particle (the fluid's boundary particles): `volumes` gives them
+  // for one body at each (re)build; they are placed and sorted with the particles, and
+  // refreshVolumes() recomputes them (the kernel changed). Unset: no volumes kept.
+  using VolumeFn = std::function<std::vector<float>(const ObstacleBody&)>;
+  void setVolumes(VolumeFn volumes) { m_volumeFn = std::move(volumes); }
+  void refreshVolumes();
+  const gl::Buffer* volumes() const { return m_volumeFn ? &m_volumeSorted : nullptr; }  // vec4 (x), grid order
+  float cellSize() const { return 2.0f * m_radius; }                                    // of the obstacle grid
+
   bool active() const { return m_grid != nullptr; }  // any particles: the kernels' HAS_OBSTACLE
   std::size_t size() const { return m_bodies.size(); }
   std::size_t particles() const { return m_particles; }
@@ -75,6 +85,8 @@ class Obstacles {
   unsigned m_nextId = 1;
   bool m_dirty = true;  // bodies changed since the last place()
   gl::Buffer m_body, m_world, m_sorted, m_poseBlock;
+  VolumeFn m_volumeFn;
+  gl::Buffer m_volumeBody, m_volumeSorted;  // with m_volumeFn: vec4 (x = m³) in body and grid order
   std::unique_ptr<grid::UniformGrid> m_grid;
 };
 

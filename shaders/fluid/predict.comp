@@ -1,0 +1,27 @@
+#version 430 core
+// PBF step 1 (Macklin & Müller 2013, algorithm 1, lines 1-4): v += dt·g (with damping), the
+// predicted position p = x + dt·v, kept inside the walls (half a spacing off them). Particle order; w carries the foam to
+// the velocity pass (the velocities are recomputed from the positions there).
+#include "fluid/bindings.glsl"
+
+layout(local_size_x = FLUID_GROUP_SIZE) in;
+#include "common/index.glsl"
+
+layout(std430, binding = FLUID_POS) readonly buffer Pos { vec4 pos[]; };
+layout(std430, binding = FLUID_VEL_IN) readonly buffer Vel { vec4 vel[]; };
+layout(std430, binding = FLUID_OUT) writeonly buffer Pred { vec4 pred[]; };
+
+uniform uint uCount;
+uniform float uDt;
+uniform vec3 uGravity;  // m/s², turned with the domain
+uniform float uDecay;   // exp(−damping·dt)
+#include "fluid/kernels.glsl"
+#include "fluid/walls.glsl"
+
+void main() {
+  const uint i = globalIndex();
+  if (i >= uCount) return;
+  const vec4 v = vel[i];
+  const vec3 u = (v.xyz + uDt * uGravity) * uDecay;
+  pred[i] = vec4(clampToWalls(pos[i].xyz + uDt * u), v.w);
+}

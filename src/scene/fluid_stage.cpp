@@ -1,0 +1,45 @@
+#include "scene/fluid_stage.h"
+
+#include "scene/water_stage.h"
+
+namespace tidepool {
+
+void visit(ParamVisitor& v, FluidSceneParams& p) {
+  fluid::visit(v, p.model);
+  visitViewGroup(v, p.view);
+}
+
+const FluidSceneParams& fluidScene(const Scene& scene) {
+  if (scene.model != "fluid") throw Error(scene.file.string() + ": not a fluid scene (model " + scene.model + ")");
+  return scene.params.as<FluidSceneParams>();
+}
+
+namespace {
+
+SceneParams parseFluidParams(const io::Json& params, const std::string& where) {
+  return readSceneParams<FluidSceneParams>(params, where);
+}
+
+std::unique_ptr<Stage> createFluidStage(const SceneParams& params, const std::string& where,
+                                        gl::ShaderLibrary& shaders) {
+  const FluidSceneParams& p = params.as<FluidSceneParams>();
+  try {
+    WaterSetup setup;
+    setup.active = WaterModel::Fluid;
+    setup.fluid = p.model;
+    setup.balls = asBalls(p.model, balls::Params{});
+    setup.view = p.view;
+    return createWaterStage(shaders, setup);
+  } catch (const Error& e) {  // e.g. a missing obstacle mesh, too many particles: say which scene asked
+    throw Error(where + ": " + e.what());
+  }
+}
+
+}  // namespace
+
+ModelEntry fluidModel() {
+  return {"fluid", "incompressible water: position-based fluids (Macklin & Mueller 2013) on the balls' particles",
+          parseFluidParams, createFluidStage};
+}
+
+}  // namespace tidepool

@@ -1,0 +1,205 @@
+#include "scene/water_stage.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "io/obj.h"
+#include "render/balls_view.h"
+#include "sim/balls/balls.h"
+#include "sim/balls/balls_init.h"
+#include "sim/fluid/fluid.h"
+
+namespace tidepool {
+
+balls::Params asBalls(const fluid::Params& f, balls::Params own) {
+  const balls::Params w = fluid::resolvedWater(f);
+  own.radius = w.radius;
+  own.domainMin = w.domainMin;
+  own.domainMax = w.domainMax;
+  own.fill = w.fill;
+  own.fillMin = w.fillMin;
+  own.fillMax = w.fillMax;
+  own.slabHeight = w.slabHeight;
+  own.randomCount = w.randomCount;
+  own.jitter = w.jitter;
+  own.maxParticles = w.maxParticles;
+  own.pistonAxis = w.pistonAxis;
+  own.pistonTravel = w.pistonTravel;
+  own.pistonPeriod = w.pistonPeriod;
+  own.rotation = w.rotation;
+  own.rotationRate = w.rotationRate;
+  own.gravity = w.gravity;
+  own.obstacles = w.obstacles;
+  own.tap = w.tap;
+  own.tapPosition = w.tapPosition;
+  own.tapDirection = w.tapDirection;
+  own.tapSpeed = w.tapSpeed;
+  own.tapRadius = w.tapRadius;
+  own.tapMax = w.tapMax;
+  return own;
+}
+
+fluid::Params asFluid(const balls::Params& b, fluid::Params own) {
+  const balls::Params kept = own.water;  // the fluid keeps its own time step and damping
+  own.water = balls::resolved(b);
+  own.water.dt = kept.dt;
+  own.water.substeps = kept.substeps;
+  own.water.damping = kept.damping;
+  own.spacing = 2.0f * own.water.radius;
+  return own;
+}
+
+namespace {
+
+constexpr int kStatsInterval = 30;  // frames between statistics read-backs
+
+class WaterStage final : public Stage {
+ public:
+  WaterStage(gl::ShaderLibrary& shaders, const WaterSetup& setup)
+      : m_shaders(shaders), m_setup(setup), m_choice(setup.active), m_view(shaders) {
+    start(nullptr);
+  }
+
+  void visitParams(ParamVisitor& v) override {
+    v.choice({"water_model", "Water model", "balls (DEM contacts) or fluid (PBF): switching keeps the particles"},
+             m_choice, kWaterModelNames);
+    if (m_balls)
+      balls::visit(v, m_balls->params());
+    else
+      fluid::visit(v, m_fluid->params());
+    visitViewGroup(v, m_setup.view);
+  }
+  void reset() override {
+    model().reset();
+    m_frames = 0;
+  }
+  void step(double frameSeconds, gl::GpuProfiler& profiler) override {
+    if (m_choice != active()) switchModel();
+    model().step(frameSeconds, profiler);
+    if (m_frames++ % kStatsInterval == 0) refreshStats();
+  }
+  void render(RenderTarget& target, gl::GpuProfiler& profiler) override {
+    m_view.params() = m_setup.view.look;
+    m_view.camera().params() = m_setup.view.camera;
+    m_view.render(water(), target, profiler);
+  }
+  void input(const Input& in) override {
+    m_view.camera().params() = m_setup.view.camera;
+    m_view.camera().handle(in);
+    m_setup.view.camera = m_view.camera().params();
+  }
+  void key(int c) override {
+    if (c == 'M') m_choice = m_choice == WaterModel::Balls ? WaterModel::Fluid : WaterModel::Balls;
+  }
+  // An OBJ dropped on the window becomes one more obstacle (the last one is replaced when there
+  // are already kMaxObstacles): a solid fill when it is closed, else a shell, in the middle of the
+  // domain. The next step builds it, or refuses it (the status line says why).
+  bool dropFile(const std::string& path) override {
+    if (std::filesystem::path(path).extension() != ".obj") return false;
+    balls::Params& p = m_balls ? m_balls->params() : m_fluid->params().water;
+    balls::ObstacleParams o;
+    o.shape = balls::Shape::Mesh;
+    o.mesh = path;
+    o.centre = 0.5f * (p.domainMin + p.domainMax);
+    o.size = glm::vec3(0.2f * glm::length(p.domainMax - p.domainMin) / std::sqrt(3.0f));
+    try {
+      o.shell = !io::checkClosed(io::readObj(path)).closed();
+    } catch (const Error&) {  // the build says what is wrong with it
+    }
+    if (p.obstacles.size() >= balls::kMaxObstacles) p.obstacles.pop_back();
+    p.obstacles.push_back(o);
+    return true;
+  }
+  double simTime() const override { return model().time(); }
+  std::pair<std::string, double> liveMetric() const override {
+    if (m_frames == 0) return {"density error (%)", NAN};
+    if (m_balls) return {"max overlap (% of r)", 100.0 * m_ballsStats.maxOverlap};
+    return {"density error (%)", 100.0 * m_fluidStats.compressionMean};
+  }
+  std::string status() const override {
+    char buf[200];
+    if (m_balls)
+      std::snprintf(buf, sizeof buf, "; KE %.4g, PE %.4g; overlap max %.1f%% mean %.2f%% of r", m_ballsStats.kinetic,
+                    m_ballsStats.potential, 100.0 * m_ballsStats.maxOverlap, 100.0 * m_ballsStats.meanOverlap);
+    else
+      std::snprintf(buf, sizeof buf, "; KE %.4g J, PE %.4g J; density error mean %.2f%% max %.1f%%",
+                    m_fluidStats.kinetic, m_fluidStats.potential, 100.0 * m_fluidStats.compressionMean,
+                    100.0 * m_fluidStats.compressionMax);
+    return (m_switchError.empty() ? "" : "not switched: " + m_switchError + "\n") + model().status() + buf;
+  }
+  std::optional<DivergenceReport> divergence() const override { return model().divergence(); }
+  bool recover() override { return model().recover(); }
+  void flushChecks() override { model().flushChecks(); }
+
+ private:
+  WaterModel active() const { return m_balls ? WaterModel::Balls : WaterModel::Fluid; }
+  sim::Model& model() { return m_balls ? static_cast<sim::Model&>(*m_balls) : *m_fluid; }
+  const sim::Model& model() const { return m_balls ? static_cast<const sim::Model&>(*m_balls) : *m_fluid; }
+  const sim::ParticleWater& water() const {
+    return m_balls ? static_cast<const sim::ParticleWater&>(*m_balls) : *m_fluid;
+  }
+
+  // Builds the chosen model; with `from`, it takes over those particles.
+  void start(const sim::ParticleWater* from) {
+    std::vector<glm::vec4> pos, vel;
+    if (from) {
+      pos = from->positions().read<glm::vec4>(from->count());
+      vel = from->velocities().read<glm::vec4>(from->count());
+    }
+    if (m_choice == WaterModel::Balls) {
+      auto next = std::make_unique<balls::Balls>(m_shaders, m_setup.balls);
+      if (from) next->upload(pos, vel);
+      m_fluid.reset();
+      m_balls = std::move(next);
+    } else {
+      auto next = std::make_unique<fluid::Fluid>(m_shaders, m_setup.fluid);
+      if (from) next->upload(pos, vel);
+      m_balls.reset();
+      m_fluid = std::move(next);
+    }
+    m_frames = 0;
+  }
+
+  void switchModel() {
+    if (m_balls) {
+      m_setup.balls = m_balls->params();
+      m_setup.fluid = asFluid(m_setup.balls, m_setup.fluid);
+    } else {
+      m_setup.fluid = m_fluid->params();
+      m_setup.balls = asBalls(m_setup.fluid, m_setup.balls);
+    }
+    try {
+      start(&water());
+    } catch (const Error& e) {  // e.g. too many particles for the other model: stay as we are
+      m_choice = active();
+      m_switchError = e.what();
+    }
+  }
+
+  void refreshStats() {
+    if (m_balls)
+      m_ballsStats = m_balls->stats();
+    else
+      m_fluidStats = m_fluid->stats();
+  }
+
+  gl::ShaderLibrary& m_shaders;
+  WaterSetup m_setup;
+  WaterModel m_choice;
+  std::unique_ptr<balls::Balls> m_balls;
+  std::unique_ptr<fluid::Fluid> m_fluid;
+  BallsView m_view;
+  balls::Stats m_ballsStats;
+  fluid::Stats m_fluidStats;
+  std::string m_switchError;
+  long m_frames = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<Stage> createWaterStage(gl::ShaderLibrary& shaders, const WaterSetup& setup) {
+  return std::make_unique<WaterStage>(shaders, setup);
+}
+
+}  // namespace tidepool

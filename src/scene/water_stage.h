@@ -1,0 +1,37 @@
+// The stage of particle water, for balls scenes and fluid scenes alike: the active model (balls or
+// fluid), the water view reading it (render/balls_view.h reads either through sim::ParticleWater),
+// an orbit camera (left drag rotates, right drag pans, wheel zooms). The UI's "Water model" choice
+// (or the M key) switches between the two keeping the particle set: the other model starts from
+// the current particles' positions and velocities, with the shared keys (domain, fill, walls, tap,
+// obstacles) carried over and its own keys (contact law, or the PBF solver) as they were.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <optional>
+
+#include "scene/balls_stage.h"
+#include "scene/stage.h"
+#include "sim/fluid/fluid_params.h"
+
+namespace tidepool {
+
+enum class WaterModel { Balls, Fluid };
+constexpr std::array<const char*, 2> kWaterModelNames = {"balls", "fluid"};
+
+// Balls and fluid parameters for a scene of either model; `active` says which one it runs.
+struct WaterSetup {
+  WaterModel active = WaterModel::Balls;
+  balls::Params balls;
+  fluid::Params fluid;
+  BallsViewSettings view;
+};
+
+// The balls parameters a fluid scene's particles would be as balls (radius = spacing / 2), and
+// the fluid parameters of a balls scene's (spacing = 2r); `own` keeps the target's own keys.
+balls::Params asBalls(const fluid::Params& f, balls::Params own);
+fluid::Params asFluid(const balls::Params& b, fluid::Params own);
+
+std::unique_ptr<Stage> createWaterStage(gl::ShaderLibrary& shaders, const WaterSetup& setup);
+
+}  // namespace tidepool

@@ -1,0 +1,217 @@
+#include "sim/fluid/fluid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+
+#include "balls/bindings.glsl"
+#include "base/error.h"
+#include "fluid/bindings.glsl"
+#include "sim/balls/balls_init.h"
+#include "sim/particle_memory.h"
+
+namespace tidepool::fluid {
+namespace {
+constexpr std::size_t kMaxCheckpointParticles = std::size_t(4) << 20;  // larger runs keep no copy to go back to
+
+// Particles a fill would make, from its volume (one per d³), before making them.
+double estimatedParticles(const balls::Params& w, float spacing) {
+  if (w.fill == balls::Fill::None) return 0;
+  if (w.fill == balls::Fill::Random) return w.randomCount;
+  if (w.fill == balls::Fill::Lattice) return w.latticeCount;
+  glm::vec3 lo = glm::max(w.fillMin, w.domainMin), hi = glm::min(w.fillMax, w.domainMax);
+  if (w.fill == balls::Fill::Slab) {
+    lo = w.domainMin;
+    hi = glm::vec3(w.domainMax.x, w.domainMax.y, std::min(w.domainMax.z, w.domainMin.z + w.slabHeight));
+  }
+  const glm::dvec3 extent = glm::max(glm::dvec3(hi - lo), glm::dvec3(0.0));
+  return extent.x * extent.y * extent.z / std::pow(double(spacing), 3.0);
+}
+
+// The initial water: blocks and slabs on a cubic lattice that tiles the region exactly (particle
+// centres half a spacing inside its faces), the other fills as the balls make them.
+std::vector<glm::vec4> fill(const balls::Params& w, float spacing, const std::function<bool(glm::vec3)>& occupied) {
+  if (w.fill != balls::Fill::Block && w.fill != balls::Fill::Slab) return balls::waterParticles(w, occupied);
+  glm::vec3 lo = glm::max(w.fillMin, w.domainMin), hi = glm::min(w.fillMax, w.domainMax);
+  if (w.fill == balls::Fill::Slab) {
+    lo = w.domainMin;
+    hi = glm::vec3(w.domainMax.x, w.domainMax.y, std::min(w.domainMax.z, w.domainMin.z + w.slabHeight));
+  }
+  const glm::ivec3 n = glm::max(glm::ivec3(glm::floor((hi - lo) / spacing + 1e-4f)), glm::ivec3(0));
+  std::vector<glm::vec4> out;
+  out.reserve(std::size_t(n.x) * std::size_t(n.y) * std::size_t(n.z));
+  for (int k = 0; k < n.z; ++k)
+    for (int j = 0; j < n.y; ++j)
+      for (int i = 0; i < n.x; ++i) {
+        const glm::vec3 q = lo + spacing * (glm::vec3(i, j, k) + 0.5f);
+        if (!occupied || !occupied(q)) out.emplace_back(q, 1.0f);
+      }
+  return out;
+}
+}  // namespace
+
+Fluid::Fluid(gl::ShaderLibrary& shaders, const Params& params)
+    : Model(shaders, "fluid", kMaxCheckpointParticles),
+      m_shaders(shaders),
+      m_params(params),
+      m_obstacles(shaders),
+      m_probe(shaders) {
+  // Obstacle particles weigh in the density sum with their rest volumes (rest_lattice.h).
+  m_obstacles.setVolumes([this](const balls::ObstacleBody& b) {
+    return boundaryVolumes(b.particles, b.built.shell, m_params.h(), m_solidVolume);
+  });
+  reset();
+}
+
+void Fluid::calibrate() {
+  if (m_restSpacing == m_params.spacing && m_restSmoothing == m_params.smoothing) return;
+  m_rest = restLattice(m_params.spacing, m_params.h(), Packing::Cubic);
+  m_solidVolume = restLattice(m_params.spacing, m_params.h(), Packing::Hcp).volume;
+  m_restSpacing = m_params.spacing;
+  m_restSmoothing = m_params.smoothing;
+  m_obstacles.refreshVolumes();
+}
+
+void Fluid::allocate(std::size_t count, std::size_t capacity) {
+  const std::size_t n = std::max<std::size_t>(capacity, 1), bytes = n * sizeof(glm::vec4);
+  // x, v, p, two scratch, λ, the permutation, the grid's index in cell and permutation
+  sim::checkParticleMemory("fluid", "particles", capacity, std::size_t(m_water.maxParticles), sizeof(glm::vec4),
+                           bytes * 5 + n * (8 + 4 + 8));
+  m_count = count;
+  if (m_capacity == capacity && m_x.size() == bytes) return;
+  m_x = gl::Buffer(bytes);
+  m_v = gl::Buffer(bytes);
+  m_pred = gl::Buffer(bytes);
+  for (gl::Buffer& s : m_scratch) s = gl::Buffer(bytes);
+  m_lambda = gl::Buffer(n * 2 * sizeof(float));
+  m_permutation = gl::Buffer(n * sizeof(GLuint));
+  m_capacity = capacity;
+}
+
+void Fluid::reset() {
+  m_water = resolvedWater(m_params);
+  const balls::Params& w = m_water;
+  if (glm::any(glm::lessThanEqual(w.domainMax, w.domainMin)))
+    throw Error("fluid: domain_max must exceed domain_min on every axis");
+  if (const double n = estimatedParticles(w, m_params.spacing); n > double(w.maxParticles)) {
+    char what[240];
+    std::snprintf(what, sizeof what,
+                  "fluid: particles.spacing = %g m would make about %.3g particles, more than max_particles = %d "
+                  "(raise spacing or max_particles)",
+                  double(m_params.spacing), n, w.maxParticles);
+    throw Error(what);
+  }
+  m_restSpacing = m_restSmoothing = 0;
+  calibrate();
+  m_obstacles.build(w.obstacles, w.radius);  // first: a bad mesh fails before anything is allocated
+  m_obstacles.place(w.obstacles, 0.0, w.domainMin, w.domainMax);
+  const std::vector<glm::vec4> water =
+      fill(w, m_params.spacing, [this](glm::vec3 q) { return m_obstacles.occupied(q); });
+  allocate(water.size(), water.size() + (w.tap ? std::size_t(w.tapMax) : 0));
+  m_tapEmitted = 0;
+  m_tapNextLayer = 0;
+  restartWatch();
+  m_x.upload(water.data(), water.size() * sizeof(glm::vec4));
+  m_v.fillZero();
+  m_time = 0;
+  m_steps = 0;
+  grid::GridParams gp{
+      .domainMin = w.domainMin, .domainMax = w.domainMax, .cellSize = float(m_params.h()), .reorder = w.gridReorder};
+  m_grid = std::make_unique<grid::UniformGrid>(m_shaders, gp, m_capacity);
+  m_obstacleError.clear();
+  m_walls = balls::wallsAt(w, 0.0);
+}
+
+void Fluid::emitFromTap() {
+  const balls::Params& w = m_water;
+  if (!w.tap || m_tapEmitted >= std::size_t(w.tapMax) || m_time < m_tapNextLayer || w.tapSpeed <= 0) return;
+  const balls::TapLayer layer =
+      balls::tapLayer(w, w.radius, std::min(std::size_t(w.tapMax) - m_tapEmitted, m_capacity - m_count));
+  if (layer.pos.empty()) return;
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);  // shader writes land before the uploads
+  const std::size_t at = m_count * sizeof(glm::vec4), bytes = layer.pos.size() * sizeof(glm::vec4);
+  m_x.upload(layer.pos.data(), bytes, at);
+  m_v.upload(layer.vel.data(), bytes, at);
+  m_count += layer.pos.size();
+  m_tapEmitted += layer.pos.size();
+  m_tapNextLayer = m_time + layer.interval;
+}
+
+float Fluid::domainRotation() const { return balls::domainRotation(m_water, m_time); }
+
+glm::vec3 Fluid::gravity() const { return balls::gravityAt(m_water, m_time); }
+
+double Fluid::speedBound() const { return m_params.h() / m_water.dt; }
+
+std::string Fluid::status() const {
+  char buf[200];
+  std::snprintf(buf, sizeof buf, "%zu particles + %zu boundary, d = %.4g m, h = %.4g m, m = %.4g kg", m_count,
+                obstacleCount(), double(m_params.spacing), m_params.h(), mass());
+  return m_obstacleError.empty() ? std::string(buf) : m_obstacleError + "\n" + buf;
+}
+
+std::vector<sim::StateBuffer> Fluid::stateBuffers() {
+  const std::size_t bytes = m_count * sizeof(glm::vec4);
+  return {{"positions", &m_x, bytes}, {"velocities", &m_v, bytes}};
+}
+
+Stats Fluid::stats() {
+  return m_probe.measure(*this, {m_params.spacing, m_params.smoothing, m_params.restDensity, Packing::Cubic}, gravity(),
+                         m_time);
+}
+
+gl::Program& Fluid::healthKernel() {
+  // The water's check is the balls' (NaN, outside the walls, largest speed): same buffers, same meaning.
+  gl::Program& p = m_shaders.program({"balls/health.comp"});
+  p.use();
+  p.set("uWallMin", m_walls.min);
+  p.set("uWallMax", m_walls.max);
+  m_x.bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_POS_IN);
+  m_v.bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VEL_IN);
+  return p;
+}
+
+std::optional<std::string> Fluid::unhealthy(const sim::DivergenceWatch::Words& words) {
+  using Watch = sim::DivergenceWatch;
+  if (auto what = Watch::nonFinite(words, "fluid particles")) return what;
+  if (Watch::flagged(words) > 0) return std::to_string(Watch::flagged(words)) + " fluid particles left the domain";
+  const float maxSpeed = Watch::largest(words);
+  if (maxSpeed <= speedBound()) return std::nullopt;
+  char what[200];
+  std::snprintf(what, sizeof what, "a particle moves at %.3g m/s, more than h per step (%.3g m/s)", maxSpeed,
+                speedBound());
+  return what;
+}
+
+std::string Fluid::method() const {
+  char method[160];
+  std::snprintf(method, sizeof method, "PBF, %d iterations, dt = %.3g s", m_params.iterations, m_water.dt);
+  return method;
+}
+
+void Fluid::resume(const sim::StateStamp& good) {
+  m_count = good.count;
+  m_time = good.time;
+  m_steps = good.steps;
+  m_params.water.dt *= 0.5f;
+  m_params.water.substeps = std::min(m_params.water.substeps * 2, 1000);  // same simulated time per frame
+  m_water = resolvedWater(m_params);
+}
+
+std::size_t Fluid::bytesPerParticle() const {
+  if (m_count == 0) return 0;
+  const std::size_t own = m_x.size() + m_v.size() + m_pred.size() + m_scratch[0].size() + m_scratch[1].size() +
+                          m_lambda.size() + m_permutation.size();
+  return (own + m_grid->memoryBytes()) / m_count;
+}
+
+void Fluid::upload(const std::vector<glm::vec4>& pos, const std::vector<glm::vec4>& vel) {
+  if (pos.size() != vel.size()) throw Error("fluid: upload needs as many velocities as positions");
+  allocate(pos.size(), std::max(pos.size(), m_capacity));
+  m_x.upload(pos.data(), pos.size() * sizeof(glm::vec4));
+  m_v.upload(vel.data(), vel.size() * sizeof(glm::vec4));
+  restartWatch();
+}
+
+}  // namespace tidepool::fluid

@@ -1,0 +1,118 @@
+// Water that stays incompressible: Position Based Fluids (M. Macklin and M. Müller, "Position
+// Based Fluids", ACM SIGGRAPH 2013) on the balls' particles, grid, obstacles, walls and tap, in
+// SI units. Each step (stepOnce, fluid_passes.cpp):
+// Blocks of water start on a cubic lattice of the spacing (rest_lattice.h says why).
+//   predict    v += dt·g, p = x + dt·v                                     (particle order)
+//   sort       grid of cell h on p (count, scan), p and x to cell order  (neighbours for the step)
+//   iterate    `iterations` times: λ (density, constraint, λ), then Δp with s_corr, the obstacles
+//              (no closer than 0.6 spacing) and the walls
+//   velocity   v = (p − x)/dt, x = p
+//   viscosity  XSPH (and the vorticity ω), then vorticity confinement when ε_v > 0
+// Densities are ρ/ρ0 throughout (shaders/fluid/kernels.glsl); boundaries take part in the density
+// sum: the walls as half spaces at rest density (closed form, sph_kernels.h), the obstacles'
+// particles with their rest volumes (Akinci et al. 2012; rest_lattice.h). Renderers read it as
+// they read the balls (sim::ParticleWater).
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "gl/buffer.h"
+#include "gl/gpu_profiler.h"
+#include "gl/shader_library.h"
+#include "grid/grid.h"
+#include "sim/balls/obstacles.h"
+#include "sim/balls/water_frame.h"
+#include "sim/fluid/density_probe.h"
+#include "sim/fluid/fluid_params.h"
+#include "sim/fluid/rest_lattice.h"
+#include "sim/model.h"
+#include "sim/particle_water.h"
+
+namespace tidepool::fluid {
+
+class Fluid final : public sim::Model, public sim::ParticleWater {
+ public:
+  Fluid(gl::ShaderLibrary& shaders, const Params& params);  // throws Error (size, memory, a bad obstacle)
+
+  Params& params() { return m_params; }  // solver edits apply at the next step; "particles" edits at reset()
+  const Params& params() const { return m_params; }
+  // sim::Model. A frame is water.substeps steps of water.dt (frameSeconds is not used).
+  void reset() override;
+  void step(double frameSeconds, gl::GpuProfiler& profiler) override;
+  double time() const override { return m_time; }
+  std::size_t count() const override { return m_count; }  // sim::Model and sim::ParticleWater
+  std::string status() const override;
+  std::uint64_t stepCount() const override { return m_steps; }
+  std::vector<sim::StateBuffer> stateBuffers() override;  // positions, velocities
+
+  void stepOnce(gl::GpuProfiler* profiler = nullptr);  // one step of water.dt
+  Stats stats();                                       // the density probe and energies (blocking)
+
+  // sim::ParticleWater
+  const gl::Buffer& positions() const override { return m_x; }
+  const gl::Buffer& velocities() const override { return m_v; }
+  float radius() const override { return 0.5f * m_params.spacing; }
+  const balls::Obstacles& obstacles() const override { return m_obstacles; }
+  const balls::Params& water() const override { return m_water; }
+  glm::vec3 wallMin() const override { return m_walls.min; }
+  glm::vec3 wallMax() const override { return m_walls.max; }
+  float domainRotation() const override;
+
+  glm::vec3 gravity() const;                                            // current, turned with the domain
+  double h() const { return m_params.h(); }                             // smoothing radius, m
+  double mass() const { return m_params.restDensity * m_rest.volume; }  // kg per particle
+  const RestLattice& rest() const { return m_rest; }
+  std::size_t obstacleCount() const { return m_obstacles.particles(); }
+  std::size_t bytesPerParticle() const;  // GPU memory of the state, the solver and the grid, per particle
+  double speedBound() const;             // m/s: faster moves more than h per step (neighbours missed)
+
+  // Tests and the window's model switch: all particles (vec4 position, vec4 velocity), and the
+  // order of the last step (lastOrder()[k] = index before the step of particle k after it).
+  void upload(const std::vector<glm::vec4>& pos, const std::vector<glm::vec4>& vel);
+  std::vector<glm::vec4> downloadPositions() const { return m_x.read<glm::vec4>(m_count); }
+  std::vector<glm::vec4> downloadVelocities() const { return m_v.read<glm::vec4>(m_count); }
+  void trackOrder(bool on) { m_trackOrder = on; }
+  std::vector<GLuint> lastOrder() const { return m_permutation.read<GLuint>(m_count); }
+
+ private:
+  // The divergence watch: NaN particles, particles outside the walls, speed above speedBound().
+  gl::Program& healthKernel() override;
+  std::optional<std::string> unhealthy(const sim::DivergenceWatch::Words& words) override;
+  std::string method() const override;
+  void resume(const sim::StateStamp& good) override;
+
+  void allocate(std::size_t count, std::size_t capacity);
+  void calibrate();  // the rest lattice for the current spacing and smoothing
+  // The passes of stepOnce(), in order.
+  void emitFromTap();
+  void predict(gl::GpuProfiler* profiler);
+  void sortByCell(gl::GpuProfiler* profiler);
+  void solve(gl::GpuProfiler* profiler);  // the iterations
+  void updateVelocities(gl::GpuProfiler* profiler);
+  gl::Program& useKernel(const char* file, std::vector<gl::ShaderDefine> defines = {});
+
+  gl::ShaderLibrary& m_shaders;
+  Params m_params;
+  balls::Params m_water;                         // resolvedWater(m_params), refreshed every step
+  RestLattice m_rest;                            // the fluid's cubic fill
+  double m_solidVolume = 0;                      // V0 of a solid obstacle's particles (HCP lattice)
+  float m_restSpacing = 0, m_restSmoothing = 0;  // what m_rest was measured for
+  std::size_t m_count = 0, m_capacity = 0, m_tapEmitted = 0;
+  double m_tapNextLayer = 0;
+  // State x, v (cell order after a step); the predicted positions p; scratch for the Jacobi
+  // iterations and the velocity passes; (λ, ρ/ρ0) per particle.
+  gl::Buffer m_x, m_v, m_pred, m_scratch[2], m_lambda, m_permutation;
+  std::unique_ptr<grid::UniformGrid> m_grid;
+  balls::Obstacles m_obstacles;
+  std::string m_obstacleError;
+  balls::Walls m_walls;
+  DensityProbe m_probe;
+  double m_time = 0;
+  std::uint64_t m_steps = 0;
+  bool m_trackOrder = false;
+};
+
+}  // namespace tidepool::fluid

@@ -1,0 +1,29 @@
+// What a renderer (and a probe) reads of a particle-water model, balls or fluid alike: the
+// particles' buffers, their size, the obstacles, the walls and the domain's turn. The water view
+// (render/balls_view.h) draws either model through this, so the two look the same.
+#pragma once
+
+#include <cstddef>
+#include <glm/glm.hpp>
+
+#include "gl/buffer.h"
+#include "sim/balls/balls_params.h"
+#include "sim/balls/obstacles.h"
+
+namespace tidepool::sim {
+
+class ParticleWater {
+ public:
+  virtual ~ParticleWater() = default;
+  virtual const gl::Buffer& positions() const = 0;   // vec4 (m, w = 1), count() of them
+  virtual const gl::Buffer& velocities() const = 0;  // vec4 (m/s, w = foam)
+  virtual std::size_t count() const = 0;
+  virtual float radius() const = 0;                       // m: half the spacing of particles at rest
+  virtual const balls::Obstacles& obstacles() const = 0;  // as placed at the last step
+  virtual const balls::Params& water() const = 0;         // domain, fill, walls, tap, obstacles
+  virtual glm::vec3 wallMin() const = 0;                  // current walls (the piston moves one)
+  virtual glm::vec3 wallMax() const = 0;
+  virtual float domainRotation() const = 0;  // radians about x
+};
+
+}  // namespace tidepool::sim

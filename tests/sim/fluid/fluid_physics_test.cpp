@@ -1,0 +1,106 @@
+// The fluid behaves like water (issue 18): a resting tank keeps its density within 1% with four
+// iterations (less with more), keeps its surface and every particle; the dam break runs 2 s
+// stable with every particle kept and a front that only advances.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+
+#include "scene/fluid_stage.h"
+#include "sim/fluid/fluid.h"
+#include "support/gl_test.h"
+
+using namespace tidepool;
+using namespace tidepool::fluid;
+
+namespace {
+
+class FluidPhysics : public test::GlTest {};
+
+Params sceneParams(const char* name) { return fluidScene(loadScene(resolveScenePath(name))).model; }
+
+void run(Fluid& f, double seconds) {
+  while (f.time() < seconds - 1e-9) f.stepOnce();
+}
+
+// The free surface of water at rest: the height of the level column with the same centre of mass,
+// 2·mean(z − floor) (robust to the few particles a liquid surface lifts above the rest).
+double surface(Fluid& f) {
+  double sum = 0;
+  const std::vector<glm::vec4> pos = f.downloadPositions();
+  for (const glm::vec4& p : pos) sum += p.z - f.wallMin().z;
+  return 2.0 * sum / double(pos.size());
+}
+
+// Every particle at least half a spacing inside each wall (the collision's inset), none NaN.
+void expectInsideTheWalls(Fluid& f) {
+  const glm::vec3 lo = f.wallMin() + 0.5f * f.params().spacing - 1e-5f;
+  const glm::vec3 hi = f.wallMax() - 0.5f * f.params().spacing + 1e-5f;
+  std::size_t outside = 0;
+  for (const glm::vec4& p : f.downloadPositions())
+    if (!(glm::all(glm::greaterThanEqual(glm::vec3(p), lo)) && glm::all(glm::lessThanEqual(glm::vec3(p), hi))))
+      ++outside;
+  EXPECT_EQ(outside, 0u);
+}
+
+}  // namespace
+
+TEST_F(FluidPhysics, RestingTankDensityErrorIsBelowOnePercentAndFallsWithIterations) {
+  std::vector<double> errors;
+  for (int iterations : {1, 2, 4, 8}) {
+    Params p = sceneParams("fluid-tank");
+    p.iterations = iterations;
+    Fluid f(shaders(), p);
+    run(f, 0.4);
+    double sum = 0;  // the mean over 0.1 s of samples
+    for (int k = 0; k < 5; ++k) {
+      run(f, 0.4 + 0.02 * (k + 1));
+      sum += f.stats().compressionMean;
+    }
+    errors.push_back(sum / 5);
+    std::printf("resting tank, %d iterations: mean density error %.3g%%\n", iterations, 100 * errors.back());
+  }
+  EXPECT_LT(errors[2], 0.01);  // 4 iterations
+  for (std::size_t k = 1; k < errors.size(); ++k) EXPECT_LE(errors[k], errors[k - 1] * 1.05) << k;
+  EXPECT_LT(errors.back(), 0.5 * errors.front());
+}
+
+TEST_F(FluidPhysics, RestingTankKeepsItsSurfaceAndEveryParticleForTwoSeconds) {
+  const Params p = sceneParams("fluid-tank");
+  Fluid f(shaders(), p);
+  const std::size_t count = f.count();
+  const double filled = p.water.slabHeight;  // the cubic fill tiles the slab: its surface is the fill height
+  EXPECT_NEAR(surface(f), filled, 1e-3 * filled);
+  for (int k = 1; k <= 8; ++k) {
+    run(f, 0.25 * k);
+    const double s = surface(f);
+    const Stats st = f.stats();
+    std::printf("t = %.2f s: surface %.4f m (fill %.4f m), density error %.3g%%\n", f.time(), s, filled,
+                100 * st.compressionMean);
+    EXPECT_NEAR(s, filled, 0.01 * filled) << "t = " << f.time();
+    EXPECT_EQ(st.count, count);
+    EXPECT_EQ(st.nonFinite, 0u);
+    EXPECT_EQ(st.outside, 0u);
+  }
+  expectInsideTheWalls(f);
+  EXPECT_FALSE(f.divergence().has_value());
+}
+
+TEST_F(FluidPhysics, DamBreakRunsTwoSecondsStableWithEveryParticleAndAnAdvancingFront) {
+  const Params p = sceneParams("dam-break-fluid");
+  Fluid f(shaders(), p);
+  const std::size_t count = f.count();
+  const double wall = p.water.domainMax.x - 0.5 * p.spacing;
+  double front = 0;
+  for (int k = 1; k <= 40; ++k) {
+    run(f, 0.05 * k);
+    const Stats st = f.stats();
+    ASSERT_EQ(st.nonFinite, 0u) << "t = " << st.time;
+    EXPECT_EQ(st.count, count);
+    EXPECT_EQ(st.outside, 0u);
+    if (front < wall - 1e-4) EXPECT_GE(st.front, front - 1e-4) << "t = " << st.time;  // until it reaches the far wall
+    front = std::max(front, st.front);
+  }
+  EXPECT_GE(front, wall - 1e-3);  // the surge reached the far wall
+  expectInsideTheWalls(f);
+}
