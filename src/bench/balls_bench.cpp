@@ -3,7 +3,6 @@
 // ball count of lattice scenes (bench-lattice); other scenes run as they are. --reorder
 // scatter,gather runs each size once per grid reorder mode (the scene's grid_reorder otherwise).
 #include <cstdio>
-#include <regex>
 
 #include "base/error.h"
 #include "bench/bench.h"
@@ -13,23 +12,11 @@
 namespace tidepool::bench {
 namespace {
 
-struct Window {
-  int first = 10, last = 310;  // steps [first, last) are timed
-};
-
-Window parseWindow(const std::string& text) {
-  static const std::regex form(R"((\d+):(\d+))");
-  std::smatch m;
-  if (!std::regex_match(text, m, form) || std::stoi(m[1]) >= std::stoi(m[2]))
-    throw Error("--steps '" + text + "' is not FIRST:LAST with FIRST < LAST (e.g. 10:310)");
-  return {std::stoi(m[1]), std::stoi(m[2])};
-}
-
 int run(Env& env, const std::string& sceneName, const std::string& sizes, const std::string& window,
         const std::string& reorder) {
   const Scene scene = loadScene(resolveScenePath(sceneName));
   const balls::Params base = ballsParams(scene);
-  const Window w = parseWindow(window);
+  const StepWindow w = parseStepWindow(window);
   const bool lattice = base.fill == balls::Fill::Lattice;
   const std::vector<grid::ReorderMode> modes =
       reorder.empty() ? std::vector<grid::ReorderMode>{base.gridReorder} : parseReorderModes(reorder);

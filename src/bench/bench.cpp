@@ -104,6 +104,14 @@ double PassTimes::median(const std::string& pass) const {
 
 double PassTimes::frameMs() const { return bench::median(wall.empty() ? totals : wall); }
 
+StepWindow parseStepWindow(const std::string& text) {
+  static const std::regex form(R"((\d+):(\d+))");
+  std::smatch m;
+  if (!std::regex_match(text, m, form) || std::stoi(m[1]) >= std::stoi(m[2]))
+    throw Error("--steps '" + text + "' is not FIRST:LAST with FIRST < LAST (e.g. 10:310)");
+  return {std::stoi(m[1]), std::stoi(m[2])};
+}
+
 PassTimes timePasses(int warmup, int timed, const std::function<void(gl::GpuProfiler&)>& frame) {
   const bool software = softwareRenderer();  // its timer queries do not measure: time whole frames
   gl::GpuProfiler profiler;
@@ -127,10 +135,12 @@ PassTimes timePasses(int warmup, int timed, const std::function<void(gl::GpuProf
   profiler.finish();
   for (const auto& f : profiler.takeCompleted()) {
     double total = 0;
+    std::map<std::string, double> frameMs;  // a pass that runs several times a frame (solver iterations): summed
     for (const auto& [name, ms] : f.passes) {
-      t.passes[name].push_back(ms);
+      frameMs[name] += ms;
       total += ms;
     }
+    for (const auto& [name, ms] : frameMs) t.passes[name].push_back(ms);
     t.totals.push_back(total);
   }
   return t;

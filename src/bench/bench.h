@@ -56,6 +56,12 @@ class Table {
 
 double median(std::vector<double> values);
 
+// The timed window of steps of a step benchmark, `--steps FIRST:LAST` (steps [first, last) are timed).
+struct StepWindow {
+  int first = 10, last = 310;
+};
+StepWindow parseStepWindow(const std::string& text);  // throws Error naming the option
+
 // Median milliseconds of `work` over common.repeats runs, after common.warmup untimed runs: GPU
 // time from a GL_TIME_ELAPSED query around each run, or with `wallClock` the wall clock between
 // two glFinish calls (for drivers whose timer queries do not measure execution: llvmpipe reports
@@ -67,7 +73,7 @@ double gpuMedianMs(const Common& common, const std::function<void()>& work);
 // Per-pass times of a run of profiled frames (balls steps, renderer frames): `frame` is called
 // warmup + timed times, each inside one GpuProfiler frame; the warm-up frames are not kept.
 struct PassTimes {
-  std::map<std::string, std::vector<double>> passes;  // GPU ms per timed frame, by scope name
+  std::map<std::string, std::vector<double>> passes;  // GPU ms per timed frame, by scope name (summed within a frame)
   std::vector<double> totals;                         // the scopes' sum per timed frame
   std::vector<double> wall;                           // ms around glFinish per timed frame, on a software renderer only
   bool has(const std::string& pass) const { return passes.count(pass) > 0; }

@@ -11,10 +11,13 @@
 #include "sim/fluid/fluid.h"
 
 namespace tidepool {
+namespace {
+const float kHcpOverCubic = std::pow(2.0f, 1.0f / 6.0f);  // 2r / d at equal particles per volume
+}  // namespace
 
 balls::Params asBalls(const fluid::Params& f, balls::Params own) {
   const balls::Params w = fluid::resolvedWater(f);
-  own.radius = w.radius;
+  own.radius = 0.5f * f.spacing * kHcpOverCubic;
   own.domainMin = w.domainMin;
   own.domainMax = w.domainMax;
   own.fill = w.fill;
@@ -46,7 +49,7 @@ fluid::Params asFluid(const balls::Params& b, fluid::Params own) {
   own.water.dt = kept.dt;
   own.water.substeps = kept.substeps;
   own.water.damping = kept.damping;
-  own.spacing = 2.0f * own.water.radius;
+  own.spacing = 2.0f * own.water.radius / kHcpOverCubic;
   return own;
 }
 

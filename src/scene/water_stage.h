@@ -27,8 +27,10 @@ struct WaterSetup {
   BallsViewSettings view;
 };
 
-// The balls parameters a fluid scene's particles would be as balls (radius = spacing / 2), and
-// the fluid parameters of a balls scene's (spacing = 2r); `own` keeps the target's own keys.
+// The balls parameters a fluid scene's particles would be as balls, and the fluid parameters of a
+// balls scene's; `own` keeps the target's own keys. The water keeps its volume: balls at rest pack
+// hexagonally (√2 per (2r)³), the fluid's rest lattice is cubic (one per d³), so d = 2r / 2^(1/6)
+// (a resting pile of balls is resting fluid, and back).
 balls::Params asBalls(const fluid::Params& f, balls::Params own);
 fluid::Params asFluid(const balls::Params& b, fluid::Params own);
 

@@ -95,3 +95,17 @@ TEST(Bench, BallsRunsEachSizeInEachReorderMode) {
   expectOneLineError({"bench", "balls", "bench-lattice", "--n", "4096", "--reorder", "scatterr"},
                      "--reorder 'scatterr' is not scatter or gather");
 }
+
+TEST(Bench, FluidRunsEachSizeAndIterationCount) {
+  test::TempDir dir;
+  auto r = runTidepool({"bench", "fluid", "bench-fluid", "--n", "4096", "--iterations", "1,4", "--steps", "1:3",
+                        "--repeats", "1", "--csv", (dir / "fluid.csv").string()});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::string csv = io::readTextFile(dir / "fluid.csv");
+  EXPECT_NE(csv.find("bytes/particle"), std::string::npos) << csv;
+  std::size_t rows = 0;
+  for (char c : csv) rows += c == '\n';
+  EXPECT_EQ(rows, 3u) << csv;  // the header and one row per iteration count
+  expectOneLineError({"bench", "fluid", "bench-fluid", "--n", "4096", "--iterations", "0"},
+                     "--iterations '0' is not a whole number in [1, 100]");
+}

@@ -1,0 +1,87 @@
+// `tidepool bench fluid <scene> --n 65536,1M --iterations 4 --steps 10:110`: median GPU ms per fluid
+// step over a window of steps, split by pass (the solver's λ and Δp passes summed over the
+// iterations), with steps per second and GPU bytes per particle. --n sets the particle count of a
+// block-filled scene (bench-fluid) by choosing the spacing that fills the block with that many
+// particles on the cubic lattice; other scenes run as they are.
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "base/error.h"
+#include "bench/bench.h"
+#include "scene/fluid_stage.h"
+#include "sim/fluid/fluid.h"
+
+namespace tidepool::bench {
+namespace {
+
+std::vector<int> parseIterations(const std::string& text) {
+  std::vector<int> out;
+  std::stringstream ss(text);
+  for (std::string item; std::getline(ss, item, ',');) {
+    char* end = nullptr;
+    const long k = std::strtol(item.c_str(), &end, 10);
+    if (item.empty() || *end != '\0' || k < 1 || k > 100)
+      throw Error("--iterations '" + item + "' is not a whole number in [1, 100]");
+    out.push_back(int(k));
+  }
+  if (out.empty()) throw Error("--iterations is empty");
+  return out;
+}
+
+// The spacing that fills the scene's block with about n particles (one per d³).
+float spacingFor(const fluid::Params& p, std::size_t n) {
+  const balls::Params& w = p.water;
+  const glm::vec3 extent = glm::max(glm::min(w.fillMax, w.domainMax) - glm::max(w.fillMin, w.domainMin), 0.0f);
+  return float(std::cbrt(double(extent.x) * extent.y * extent.z / double(n)));
+}
+
+int run(Env& env, const std::string& sceneName, const std::string& sizes, const std::string& iterations,
+        const std::string& window) {
+  const Scene scene = loadScene(resolveScenePath(sceneName));
+  const fluid::Params base = fluidScene(scene).model;
+  const StepWindow w = parseStepWindow(window);
+  const bool block = base.water.fill == balls::Fill::Block;
+  std::printf("fluid benchmark on %s: scene %s, steps %d..%d, medians per step\n", env.device.c_str(),
+              scene.name.c_str(), w.first, w.last);
+  Table table({"particles", "spacing", "iters", "cells", "predict ms", "count ms", "scan ms", "reorder ms", "lambda ms",
+               "delta ms", "velocity ms", "viscosity ms", "ms/step", "steps/s", "bytes/particle"});
+  const std::vector<std::size_t> counts = block ? parseSizes(sizes) : std::vector<std::size_t>{0};
+  for (std::size_t n : counts)
+    for (int k : parseIterations(iterations)) {
+      fluid::Params p = base;
+      if (block) {
+        p.spacing = spacingFor(base, n);
+        p.water.maxParticles = std::max(p.water.maxParticles, int(n + n / 8));
+      }
+      p.iterations = k;
+      fluid::Fluid model(env.shaders, p);
+      const PassTimes t = timePasses(w.first, w.last - w.first, [&](gl::GpuProfiler& g) { model.stepOnce(&g); });
+      const double perStep = t.frameMs();
+      table.add({std::to_string(model.count()), fixed(p.spacing, 5), std::to_string(k), std::to_string(model.cells()),
+                 fixed(t.median("fluid.predict"), 4), fixed(t.median("fluid.count"), 4),
+                 fixed(t.median("fluid.scan"), 4), fixed(t.median("fluid.reorder"), 4),
+                 fixed(t.median("fluid.lambda"), 4), fixed(t.median("fluid.delta"), 4),
+                 fixed(t.median("fluid.velocity"), 4), fixed(t.median("fluid.viscosity"), 4), fixed(perStep, 4),
+                 fixed(perStep > 0 ? 1000.0 / perStep : 0.0, 0), std::to_string(model.bytesPerParticle())});
+    }
+  return finish(env, table, "; its per-pass timer queries read 0");
+}
+
+}  // namespace
+
+Benchmark addFluidBench(CLI::App& bench) {
+  auto* sub =
+      bench.add_subcommand("fluid", "fluid (PBF) step: ms per pass over a step window, steps/s, bytes per particle");
+  struct Opts {
+    std::string scene = "bench-fluid", sizes = "65536,1M", iterations = "4", window = "10:110";
+  };
+  auto o = std::make_shared<Opts>();
+  sub->add_option("scene", o->scene, "scene (default bench-fluid)");
+  sub->add_option("--n", o->sizes, "particle counts for block scenes, e.g. 65536,1M,4M");
+  sub->add_option("--iterations", o->iterations, "solver iterations, one row each, e.g. 2,4,8");
+  sub->add_option("--steps", o->window, "timed step window FIRST:LAST");
+  return {sub, [o](Env& env) { return run(env, o->scene, o->sizes, o->iterations, o->window); }};
+}
+
+}  // namespace tidepool::bench
