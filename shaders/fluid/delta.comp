@@ -26,8 +26,12 @@ vec3 gBoundaryGradient;
 void onFluid(uint j, vec3 r, float r2) {
   const float len = sqrt(r2);
   if (len <= 0.0) return;
-  const float w = (1.0 - r2 / (uH * uH)) * uScorrInvQ;
-  const float scorr = -uScorrK * pow(w * w * w, uScorrN);
+  const float w = (1.0 - r2 / (uH * uH)) * uScorrInvQ, w3 = w * w * w;
+#ifdef SCORR_N4
+  const float w6 = w3 * w3, scorr = -uScorrK * w6 * w6;  // n = 4, the usual: no pow per pair
+#else
+  const float scorr = -uScorrK * pow(w3, uScorrN);
+#endif
   gDelta += (gLambda + lambda[j].x + scorr) * uVolume * spikyGrad(r, len);
 }
 void onBoundary(vec3 r, float r2, float volume) {
@@ -74,7 +78,7 @@ void main() {
   gLambda = lambda[i].x;
   gDelta = vec3(0.0);
   gBoundaryGradient = vec3(0.0);
-  forEachFluid(p);
+  forEachFluid(i, p);
 #ifdef HAS_OBSTACLE
   forEachBoundary(p, uH);
 #endif

@@ -44,7 +44,7 @@ void main() {
   gDensity = 0.0;
   gGradient = vec3(0.0);
   gGradients = 0.0;
-  forEachFluid(p);
+  forEachFluid(i, p);
 #ifdef HAS_OBSTACLE
   forEachBoundary(p, uH);
 #endif

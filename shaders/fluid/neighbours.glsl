@@ -1,35 +1,74 @@
-// The neighbours of a fluid particle at p: every particle in the 27 cells (of size h) around it,
-// itself included (r = 0), and, with HAS_OBSTACLE, every obstacle particle within h found through
+// The neighbours of fluid particle i at p: every particle within h, itself included (r = 0),
+// found in the (2R + 1)³ cells around its own (R = uReach cells cover h: cells of h give the usual
+// 27, cells of h/2 give 125 smaller ones holding 1.7 times fewer candidates), and, with HAS_OBSTACLE, every obstacle particle within h found through
 // the obstacles' own grid (cells of one spacing, so uObstacleReach cells each way). The including
 // kernel declares the cell-ordered array the positions come from as `neighbourPos[]` (a #define)
 // and, before including this file,
 //   void onFluid(uint j, vec3 r, float r2);      // r = p − p_j, r2 = |r|² < h²
+// With NEIGHBOUR_LIST the candidates are the step's list (fluid/neighbour_list.comp: every particle
+// within h·(1 + skin) when the step began), not the grid: fewer, and read once per step.
 //   void onBoundary(vec3 r, float r2, float volume);  // an obstacle particle within h
 #ifndef FLUID_NEIGHBOURS_GLSL
 #define FLUID_NEIGHBOURS_GLSL
 
 #include "common/grid.glsl"
 
-layout(std430, binding = FLUID_CELL_START) readonly buffer CellStart { uint cellStart[]; };
+#ifdef NEIGHBOUR_LIST
+layout(std430, binding = FLUID_NEIGHBOURS) readonly buffer Neighbours { uint neighbours[]; };
+uniform uint uListStride;  // words between a particle's entries: entry k of particle i is [k·stride + i]
+                           // (neighbouring invocations read neighbouring words)
 
-void forEachFluid(vec3 p) {
+void forEachFluid(uint i, vec3 p) {
   const float h2 = uH * uH;
+  const uint n = neighbours[i];
+  for (uint k = 1u; k <= n; ++k) {
+    const uint j = neighbours[k * uListStride + i];
+    const vec3 r = p - neighbourPos[j].xyz;
+    const float r2 = dot(r, r);
+    if (r2 < h2) onFluid(j, r, r2);
+  }
+}
+#else
+layout(std430, binding = FLUID_CELL_START) readonly buffer CellStart { uint cellStart[]; };
+uniform int uReach;  // cells each way that cover h
+
+// Only the cells the sphere of `reach` around p touches: rows (fixed y, z) whose nearest point is
+// farther than reach are skipped, and each row is cut to the x-range the sphere spans there. With
+// cells of h/2 this visits about half the candidates of the whole 5 × 5 × 5 block.
+void forEachGridNeighbour(vec3 p, float reach) {
+  const float reach2 = reach * reach;
+  const float cell = 1.0 / uGridInvCellSize;
+  const vec3 at = (p - uGridOrigin) * uGridInvCellSize;  // in cells
   const ivec3 c = cellCoord(p);
-  // Cells are numbered x fastest: the three cells x-1..x+1 of a row are one contiguous run.
-  const int x0 = max(c.x - 1, 0), x1 = min(c.x + 1, int(uGridDims.x) - 1);
-  for (int dz = -1; dz <= 1; ++dz)
-    for (int dy = -1; dy <= 1; ++dy) {
-      const ivec3 row = ivec3(x0, c.y + dy, c.z + dz);
-      if (!cellInGrid(row)) continue;
-      const uint first = cellIndex(row);
+  const int lastX = int(uGridDims.x) - 1;
+  for (int dz = -uReach; dz <= uReach; ++dz) {
+    const int z = c.z + dz;
+    if (z < 0 || z >= int(uGridDims.z)) continue;
+    const float gz = max(0.0, max(float(z) - at.z, at.z - float(z + 1))) * cell;  // p to the layer
+    for (int dy = -uReach; dy <= uReach; ++dy) {
+      const int y = c.y + dy;
+      if (y < 0 || y >= int(uGridDims.y)) continue;
+      const float gy = max(0.0, max(float(y) - at.y, at.y - float(y + 1))) * cell;
+      const float left = reach2 - gz * gz - gy * gy;
+      if (left < 0.0) continue;
+      // Cells are numbered x fastest: the row's cells x0..x1 are one contiguous run.
+      const float span = sqrt(left) * uGridInvCellSize;
+      const int x0 = max(int(floor(at.x - span)), max(c.x - uReach, 0));
+      const int x1 = min(int(floor(at.x + span)), min(c.x + uReach, lastX));
+      if (x1 < x0) continue;
+      const uint first = cellIndex(ivec3(x0, y, z));
       const uint end = cellStart[first + uint(x1 - x0) + 1u];
       for (uint j = cellStart[first]; j < end; ++j) {
         const vec3 r = p - neighbourPos[j].xyz;
         const float r2 = dot(r, r);
-        if (r2 < h2) onFluid(j, r, r2);
+        if (r2 < reach2) onFluid(j, r, r2);
       }
     }
+  }
 }
+
+void forEachFluid(uint i, vec3 p) { forEachGridNeighbour(p, uH); }
+#endif
 
 #ifdef HAS_OBSTACLE
 layout(std430, binding = FLUID_OBST_POS) readonly buffer ObstaclePos { vec4 obstaclePos[]; };

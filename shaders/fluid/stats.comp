@@ -50,7 +50,7 @@ void main() {
       values[FLUID_STATS_NON_FINITE] = 1.0;
     } else {
       gDensity = 0.0;
-      forEachFluid(p);
+      forEachFluid(i, p);
 #ifdef HAS_OBSTACLE
       forEachBoundary(p, uH);
 #endif

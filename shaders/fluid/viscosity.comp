@@ -42,7 +42,7 @@ void main() {
   gVelocity = v.xyz;
   gBlend = vec3(0.0);
   gOmega = vec3(0.0);
-  forEachFluid(pos[i].xyz);
+  forEachFluid(i, pos[i].xyz);
   velOut[i] = vec4(v.xyz + uViscosity * gBlend, v.w);
 #ifdef VORTICITY
   omega[i] = vec4(gOmega, 0.0);

@@ -32,7 +32,7 @@ void main() {
   const uint i = globalIndex();
   if (i >= uCount) return;
   gEta = vec3(0.0);
-  forEachFluid(pos[i].xyz);
+  forEachFluid(i, pos[i].xyz);
   const float len = length(gEta);
   const vec3 n = len > 1e-12 ? gEta / len : vec3(0.0);
   const vec4 v = vel[i];

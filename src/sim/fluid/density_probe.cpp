@@ -100,6 +100,7 @@ Stats DensityProbe::measure(const sim::ParticleWater& water, const DensityKernel
   setKernelUniforms(prog, h, rest);
   bindBoundary(prog, obstacles, h);
   m_grid->setUniforms(prog);
+  prog.set("uReach", 1);  // cells of h
   prog.set("uCount", GLuint(n));
   prog.set("uGravity", gravity);
   prog.set("uDomainMin", w.domainMin);

@@ -75,9 +75,10 @@ void Fluid::calibrate() {
 
 void Fluid::allocate(std::size_t count, std::size_t capacity) {
   const std::size_t n = std::max<std::size_t>(capacity, 1), bytes = n * sizeof(glm::vec4);
-  // x, v, p, two scratch, λ, the permutation, the grid's index in cell and permutation
-  sim::checkParticleMemory("fluid", "particles", capacity, std::size_t(m_water.maxParticles), sizeof(glm::vec4),
-                           bytes * 5 + n * (8 + 4 + 8));
+  // x, v, p, two scratch, λ, the permutation, the grid's index in cell and permutation, the list
+  const std::size_t list = m_params.neighbourList ? (FLUID_MAX_NEIGHBOURS + 1) * sizeof(GLuint) : 0;
+  sim::checkParticleMemory("fluid", "particles", capacity, std::size_t(m_water.maxParticles),
+                           std::max(sizeof(glm::vec4), list), bytes * 5 + n * (8 + 4 + 8 + list));
   m_count = count;
   if (m_capacity == capacity && m_x.size() == bytes) return;
   m_x = gl::Buffer(bytes);
@@ -86,6 +87,7 @@ void Fluid::allocate(std::size_t count, std::size_t capacity) {
   for (gl::Buffer& s : m_scratch) s = gl::Buffer(bytes);
   m_lambda = gl::Buffer(n * 2 * sizeof(float));
   m_permutation = gl::Buffer(n * sizeof(GLuint));
+  m_neighbours = gl::Buffer();  // made on first use (listNeighbours)
   m_capacity = capacity;
 }
 
@@ -117,7 +119,7 @@ void Fluid::reset() {
   m_time = 0;
   m_steps = 0;
   grid::GridParams gp{
-      .domainMin = w.domainMin, .domainMax = w.domainMax, .cellSize = float(m_params.h()), .reorder = w.gridReorder};
+      .domainMin = w.domainMin, .domainMax = w.domainMax, .cellSize = cellSize(), .reorder = w.gridReorder};
   m_grid = std::make_unique<grid::UniformGrid>(m_shaders, gp, m_capacity);
   m_obstacleError.clear();
   m_walls = balls::wallsAt(w, 0.0);
@@ -202,7 +204,7 @@ void Fluid::resume(const sim::StateStamp& good) {
 std::size_t Fluid::bytesPerParticle() const {
   if (m_count == 0) return 0;
   const std::size_t own = m_x.size() + m_v.size() + m_pred.size() + m_scratch[0].size() + m_scratch[1].size() +
-                          m_lambda.size() + m_permutation.size();
+                          m_lambda.size() + m_permutation.size() + m_neighbours.size();
   return (own + m_grid->memoryBytes()) / m_count;
 }
 

@@ -87,13 +87,17 @@ class Fluid final : public sim::Model, public sim::ParticleWater {
 
   void allocate(std::size_t count, std::size_t capacity);
   void calibrate();  // the rest lattice for the current spacing and smoothing
+  float cellSize() const { return float(m_params.h()) / float(m_params.reach()); }  // of the neighbour grid
   // The passes of stepOnce(), in order.
   void emitFromTap();
   void predict(gl::GpuProfiler* profiler);
   void sortByCell(gl::GpuProfiler* profiler);
-  void solve(gl::GpuProfiler* profiler);  // the iterations
+  void listNeighbours(gl::GpuProfiler* profiler);  // with params().neighbourList
+  void solve(gl::GpuProfiler* profiler);           // the iterations
   void updateVelocities(gl::GpuProfiler* profiler);
-  gl::Program& useKernel(const char* file, std::vector<gl::ShaderDefine> defines = {});
+  // In use, with the common uniforms and the neighbour search bound (the list where there is one,
+  // for kernels that read it: `listed`).
+  gl::Program& useKernel(const char* file, std::vector<gl::ShaderDefine> defines = {}, bool listed = false);
 
   gl::ShaderLibrary& m_shaders;
   Params m_params;
@@ -106,6 +110,7 @@ class Fluid final : public sim::Model, public sim::ParticleWater {
   // State x, v (cell order after a step); the predicted positions p; scratch for the Jacobi
   // iterations and the velocity passes; (λ, ρ/ρ0) per particle.
   gl::Buffer m_x, m_v, m_pred, m_scratch[2], m_lambda, m_permutation;
+  gl::Buffer m_neighbours;  // with params().neighbourList: FLUID_MAX_NEIGHBOURS + 1 words per particle
   std::unique_ptr<grid::UniformGrid> m_grid;
   balls::Obstacles m_obstacles;
   std::string m_obstacleError;

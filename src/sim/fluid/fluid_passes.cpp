@@ -2,7 +2,9 @@
 // its kernel reads and writes and ends with the barrier its readers need; stepOnce() only names
 // them. Buffers swap roles instead of being copied: after sortByCell m_x and m_pred are in the
 // step's cell order, and stay in it.
+#include <algorithm>
 #include <cmath>
+#include <memory>
 #include <utility>
 
 #include "fluid/bindings.glsl"
@@ -15,6 +17,9 @@ gl::GpuProfiler::Scope timed(gl::GpuProfiler* profiler, const char* name) {
   return profiler ? profiler->scope(name) : gl::GpuProfiler::Scope(nullptr);
 }
 
+// The list holds neighbours within h·(1 + kSkin) at the step's start, so that pairs closing in
+// during the iterations are still found.
+constexpr float kSkin = 0.1f;
 constexpr float kContact = 0.6f;  // closest approach to an obstacle particle, spacings (> 1/√3: a layer holds)
 
 }  // namespace
@@ -22,6 +27,11 @@ constexpr float kContact = 0.6f;  // closest approach to an obstacle particle, s
 void Fluid::stepOnce(gl::GpuProfiler* profiler) {
   m_water = resolvedWater(m_params);  // solver and engine edits apply now
   calibrate();
+  if (m_grid->params().cellSize != cellSize()) {  // h or the grid cell edited
+    grid::GridParams gp = m_grid->params();
+    gp.cellSize = cellSize();
+    m_grid = std::make_unique<grid::UniformGrid>(m_shaders, gp, m_capacity);
+  }
   m_walls = balls::wallsAt(m_water, m_time);
   if (std::string error; m_obstacles.update(m_params.water.obstacles, m_water.radius, error)) {
     m_obstacleError = error;
@@ -36,6 +46,7 @@ void Fluid::stepOnce(gl::GpuProfiler* profiler) {
   if (m_count > 0) {
     predict(profiler);
     sortByCell(profiler);
+    if (m_params.neighbourList) listNeighbours(profiler);
     solve(profiler);
     updateVelocities(profiler);
   }
@@ -48,7 +59,9 @@ void Fluid::step(double, gl::GpuProfiler& profiler) {
   watch();
 }
 
-gl::Program& Fluid::useKernel(const char* file, std::vector<gl::ShaderDefine> defines) {
+gl::Program& Fluid::useKernel(const char* file, std::vector<gl::ShaderDefine> defines, bool listed) {
+  listed = listed && m_params.neighbourList;
+  if (listed) defines.push_back({"NEIGHBOUR_LIST", ""});
   for (const gl::ShaderDefine& d : kernelDefines(m_obstacles)) defines.push_back(d);
   gl::Program& p = m_shaders.program({file}, defines);
   p.use();
@@ -60,8 +73,27 @@ gl::Program& Fluid::useKernel(const char* file, std::vector<gl::ShaderDefine> de
   setKernelUniforms(p, m_params.h(), m_rest);
   bindBoundary(p, m_obstacles, m_params.h());
   m_grid->setUniforms(p);
-  m_grid->cellStart().bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_CELL_START);
+  p.set("uReach", m_params.reach());
+  p.set("uListStride", GLuint(std::max<std::size_t>(m_capacity, 1)));
+  if (listed)
+    m_neighbours.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_NEIGHBOURS);
+  else
+    m_grid->cellStart().bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_CELL_START);
   return p;
+}
+
+void Fluid::listNeighbours(gl::GpuProfiler* profiler) {
+  auto scope = timed(profiler, "fluid.neighbours");
+  const std::size_t words = std::max<std::size_t>(m_capacity, 1) * (FLUID_MAX_NEIGHBOURS + 1);
+  if (m_neighbours.size() != words * sizeof(GLuint)) m_neighbours = gl::Buffer(words * sizeof(GLuint));
+  gl::Program& p = useKernel("fluid/neighbour_list.comp");
+  const float reach = float(m_params.h()) * (1.0f + kSkin);
+  p.set("uListReach", reach);
+  p.set("uReach", int(std::ceil(reach / cellSize() - 1e-4f)));
+  m_pred.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_PRED);
+  m_neighbours.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_OUT);
+  p.dispatchThreads(m_count);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
 void Fluid::predict(gl::GpuProfiler* profiler) {
@@ -98,7 +130,7 @@ void Fluid::solve(gl::GpuProfiler* profiler) {
   for (int k = 0; k < q.iterations; ++k) {
     {
       auto scope = timed(profiler, "fluid.lambda");
-      gl::Program& p = useKernel("fluid/lambda.comp");
+      gl::Program& p = useKernel("fluid/lambda.comp", {}, true);
       p.set("uEpsilon", float(q.relaxation * m_rest.gradients));
       m_pred.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_PRED);
       m_lambda.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_LAMBDA);
@@ -106,7 +138,9 @@ void Fluid::solve(gl::GpuProfiler* profiler) {
       glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     }
     auto scope = timed(profiler, "fluid.delta");
-    gl::Program& p = useKernel("fluid/delta.comp");
+    std::vector<gl::ShaderDefine> defines;
+    if (q.scorrN == 4.0f) defines.push_back({"SCORR_N4", ""});
+    gl::Program& p = useKernel("fluid/delta.comp", defines, true);
     // s_corr in the units of λ (m²): k times the λ a unit compression gives a resting particle, so k
     // is the compression one close pair pushes with (Macklin's k = 0.1 is dimensionless only in the
     // paper's units, where the mass is 1 and ρ0 sets the scale).
@@ -141,7 +175,7 @@ void Fluid::updateVelocities(gl::GpuProfiler* profiler) {
     auto scope = timed(profiler, "fluid.viscosity");
     std::vector<gl::ShaderDefine> defines;
     if (vorticity) defines.push_back({"VORTICITY", ""});
-    gl::Program& p = useKernel("fluid/viscosity.comp", defines);
+    gl::Program& p = useKernel("fluid/viscosity.comp", defines, true);
     p.set("uViscosity", m_params.viscosity);
     m_x.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_PRED);
     m_v.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_VEL_IN);
@@ -153,7 +187,7 @@ void Fluid::updateVelocities(gl::GpuProfiler* profiler) {
   }
   if (vorticity) {
     auto scope = timed(profiler, "fluid.vorticity");
-    gl::Program& p = useKernel("fluid/vorticity.comp");
+    gl::Program& p = useKernel("fluid/vorticity.comp", {}, true);
     p.set("uVorticity", m_params.vorticity);
     m_x.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_PRED);
     m_v.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_VEL_IN);

@@ -124,17 +124,22 @@ double run(gl::ShaderLibrary& shaders, Params p, bool obstacle, grid::ReorderMod
 }  // namespace
 
 TEST_F(FluidStep, OneSolverIterationEqualsTheCpuReference) {
-  for (grid::ReorderMode reorder : {grid::ReorderMode::Scatter, grid::ReorderMode::Gather}) {
-    SCOPED_TRACE(grid::kReorderModeNames[int(reorder)]);
-    Params p = box();
-    p.iterations = 1;
-    double velocityError = 0;
-    const double error = run(shaders(), p, false, reorder, &velocityError);
-    std::printf("one iteration (%s): displacement error %.3g, velocity error %.3g (relative)\n",
-                grid::kReorderModeNames[int(reorder)], error, velocityError);
-    EXPECT_LT(error, 1e-5);
-    EXPECT_LT(velocityError, 1e-5);
-  }
+  // Grid cells of h, h/2 and h/3, the neighbours from the grid or from the step's list: the same.
+  for (bool list : {false, true})
+    for (float cell : {1.0f, 0.5f, 0.34f})
+      for (grid::ReorderMode reorder : {grid::ReorderMode::Scatter, grid::ReorderMode::Gather}) {
+        SCOPED_TRACE(grid::kReorderModeNames[int(reorder)]);
+        Params p = box();
+        p.iterations = 1;
+        p.gridCell = cell;
+        p.neighbourList = list;
+        double velocityError = 0;
+        const double error = run(shaders(), p, false, reorder, &velocityError);
+        std::printf("one iteration (%s, cell %.2f h, %s): displacement error %.3g, velocity error %.3g (relative)\n",
+                    list ? "list" : "grid", double(cell), grid::kReorderModeNames[int(reorder)], error, velocityError);
+        EXPECT_LT(error, 1e-5);
+        EXPECT_LT(velocityError, 1e-5);
+      }
 }
 
 TEST_F(FluidStep, IterationsViscosityVorticityAndObstacleEqualTheCpuReference) {
@@ -143,10 +148,13 @@ TEST_F(FluidStep, IterationsViscosityVorticityAndObstacleEqualTheCpuReference) {
   p.viscosity = 0.05f;
   p.vorticity = 0.5f;
   p.water.damping = 0.3f;
-  double velocityError = 0;
-  const double error = run(shaders(), p, true, grid::ReorderMode::Gather, &velocityError);
-  std::printf("3 iterations, XSPH, vorticity, sphere shell: displacement error %.3g, velocity error %.3g\n", error,
-              velocityError);
-  EXPECT_LT(error, 1e-5);
-  EXPECT_LT(velocityError, 1e-5);
+  for (bool list : {false, true}) {
+    p.neighbourList = list;
+    double velocityError = 0;
+    const double error = run(shaders(), p, true, grid::ReorderMode::Gather, &velocityError);
+    std::printf("3 iterations, XSPH, vorticity, sphere shell (%s): displacement error %.3g, velocity error %.3g\n",
+                list ? "list" : "grid", error, velocityError);
+    EXPECT_LT(error, 1e-5);
+    EXPECT_LT(velocityError, 1e-5);
+  }
 }
