@@ -183,12 +183,12 @@ BallsMethod parseBallsMethod(const io::CsvTable& t, std::size_t row, bool integr
 
 Settings ballsSettings(const BallsMethod& m, double dt, double contactTime, double frame) {
   const bool springDashpot = m.contact == balls::Contact::SpringDashpot;
+  if (!(dt > 0) || frame / dt - 1e-6 > 1000) return {};  // substeps: the param's range
   // Symplectic Euler and Verlet keep an undamped spring while omega0 dt < 2: dt < 0.64 t_c.
   if (springDashpot && m.integrator != balls::Integrator::ExplicitEuler &&
       dt > kStabilityMargin * 2.0 / std::numbers::pi * contactTime)
     return {};
   const int substeps = std::max(1, int(std::ceil(frame / dt - 1e-6)));
-  if (substeps > 1000) return {};  // the param's range
   Settings out = {pick("engine.contact", &balls::Params::contact, m.contact),
                   rescale("engine.dt", &balls::Params::dt, float(frame / substeps)),
                   rescale("engine.substeps", &balls::Params::substeps, substeps)};
