@@ -57,12 +57,14 @@ void livePlots(const Stage& stage, const UiState& ui) {
 }  // namespace
 
 namespace {
-// "method": "auto": what was picked at load, against what, and what the most accurate would cost.
+// "method": "auto" (or "model": "auto"): what was picked at load, against what, and what the most
+// accurate would cost.
 void autoChoicePanel(const AutoChoice& c) {
   ImGui::PushTextWrapPos(0.0f);
-  ImGui::TextColored(ImVec4(0.55f, 0.8f, 1.0f, 1.0f), "method auto picked %s", c.picked.c_str());
-  ImGui::TextDisabled("%s for %s; %.3g ms per simulated s (most accurate: %.3g, %s)", c.errors.c_str(),
-                      c.accuracy.c_str(), c.costMsPerSimS, c.mostAccurateCost, c.mostAccurate.c_str());
+  ImGui::TextColored(ImVec4(0.55f, 0.8f, 1.0f, 1.0f), "%s", c.headline().c_str());
+  ImGui::TextDisabled("%s auto: %.3g ms per simulated s (most accurate: %s, %.3g)",
+                      c.model.empty() ? "method" : "model", c.costMsPerSimS, c.mostAccurate.c_str(),
+                      c.mostAccurateCost);
   ImGui::TextDisabled("data: %s, measured on %s", c.studies.c_str(), c.device.c_str());
   ImGui::PopTextWrapPos();
   if (ImGui::IsItemHovered())
@@ -74,7 +76,8 @@ bool drawMainPanel(const Scene& scene, Stage& stage, const gl::GpuProfiler& prof
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSizeConstraints(ImVec2(340, 0), ImVec2(520, 10000));
   ImGui::Begin("tidepool", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
-  ImGui::Text("%s  [%s]", scene.name.c_str(), scene.model.c_str());
+  const bool modelAuto = scene.autoChoice && !scene.autoChoice->model.empty();
+  ImGui::Text("%s  [%s%s]", scene.name.c_str(), scene.model.c_str(), modelAuto ? ", model auto" : "");
   if (const std::string s = stage.status(); !s.empty()) ImGui::TextDisabled("%s", s.c_str());
   ImGui::Text("simulated time %.3f s", stage.simTime());
   timingTable(profiler);

@@ -27,7 +27,8 @@ Command addSweep(CLI::App& app) {
                 "run nothing: redraw the chart from <csv-dir>/<study>.csv and .chart.json (rows measured "
                 "elsewhere, e.g. on the GPU machine with --no-chart); with --no-chart and --ship, only ship");
   sub->add_flag("--ship", o->ship,
-                "also copy the CSV to assets/accuracy/<study>.csv, the data \"method\": \"auto\" picks from");
+                "also copy the CSV to assets/accuracy/<study>.csv, the data \"method\": \"auto\" and \"model\": "
+                "\"auto\" pick from");
   sub->require_subcommand(1);
   sub->fallthrough();
   auto chosen = std::make_shared<std::vector<std::pair<CLI::App*, const sweep::Study*>>>();
@@ -39,7 +40,7 @@ Command addSweep(CLI::App& app) {
           const std::vector<std::string> shipped = shippedStudies();
           for (const auto& [app, study] : *chosen)
             if (app->parsed() && std::find(shipped.begin(), shipped.end(), study->name) == shipped.end())
-              throw Error(std::string("--ship: method auto reads no data from ") + study->name);
+              throw Error(std::string("--ship: method and model auto read no data from ") + study->name);
         }
         if (o->fromCsv) {
           for (const auto& [app, study] : *chosen) {

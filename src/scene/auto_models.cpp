@@ -12,11 +12,7 @@
 #include "sim/swarm/swarm_params.h"
 
 namespace tidepool::automethod {
-namespace {
 
-// The number a scene wrote for a float parameter: the shortest decimal that reads back as that
-// float (0.0002f -> 0.0002), so that the frame's simulated time dt x substeps is the scene's
-// 0.0002 x 25 = 0.005 s, which the picked substeps then divide.
 double decimal(float value) {
   char text[32];
   const auto end = std::to_chars(text, text + sizeof text, value).ptr;
@@ -25,26 +21,7 @@ double decimal(float value) {
   return d;
 }
 
-// Index of `name` in a model's names, or -1.
-template <std::size_t N>
-int indexOf(const std::array<const char*, N>& names, const std::string& name) {
-  const auto it = std::find_if(names.begin(), names.end(), [&](const char* n) { return name == n; });
-  return it == names.end() ? -1 : int(it - names.begin());
-}
-
-// A setting of one field of the model's params, by its key in scene files and its member:
-// pick("engine.contact", &balls::Params::contact, balls::Contact::SpringDashpot).
-template <class Model, class T>
-Setting pick(const char* key, T Model::*field, std::type_identity_t<T> value) {
-  return {key, false, [field, value](SceneParams& p) { p.model<Model>().*field = value; }};
-}
-// One the scene may state too: the pick rescales it (the frame's time, the pool's size).
-template <class Model, class T>
-Setting rescale(const char* key, T Model::*field, std::type_identity_t<T> value) {
-  Setting s = pick(key, field, value);
-  s.rescaled = true;
-  return s;
-}
+namespace {
 
 // What every row holds: cost, stability and the metric columns of the stated bounds.
 Candidate basics(const ModelInput& in, const io::CsvTable& t, std::size_t row) {
@@ -179,6 +156,48 @@ std::vector<Candidate> ripplesCandidates(const ModelInput& in) {
   return out;
 }
 
+BallsMethod parseBallsMethod(const io::CsvTable& t, std::size_t row, bool integratorOnly) {
+  const std::string method = t.text(row, "method");
+  std::string contact = "spring-dashpot", integrator = method;
+  double stepsPerContact = 0;
+  if (!integratorOnly) {
+    const std::size_t comma = method.find(", ");
+    std::istringstream words(method.substr(0, comma));
+    std::string tc, eq, dtWord;
+    words >> contact;
+    if (words >> tc >> eq >> stepsPerContact >> dtWord && !(tc == "tc" && eq == "=" && dtWord == "dt"))
+      stepsPerContact = -1;
+    integrator = comma == std::string::npos ? "" : method.substr(comma + 2);
+  }
+  const int contactIndex = indexOf(balls::kContactNames, contact);
+  const int integratorIndex = integrator.empty() ? 0 : indexOf(balls::kIntegratorNames, integrator);
+  if (contactIndex < 0 || integratorIndex < 0 || stepsPerContact < 0)
+    throw Error(t.where(row) + ": method '" + method + "' is not '<balls contact>[ tc = K dt][, <integrator>]'");
+  BallsMethod m;
+  m.contact = balls::Contact(contactIndex);
+  if (!integrator.empty()) m.integrator = balls::Integrator(integratorIndex);
+  m.stepsPerContact = stepsPerContact;
+  m.words = contact + (integrator.empty() ? "" : ", " + integrator);
+  return m;
+}
+
+Settings ballsSettings(const BallsMethod& m, double dt, double contactTime, double frame) {
+  const bool springDashpot = m.contact == balls::Contact::SpringDashpot;
+  if (!(dt > 0) || frame / dt - 1e-6 > 1000) return {};  // substeps: the param's range
+  // Symplectic Euler and Verlet keep an undamped spring while omega0 dt < 2: dt < 0.64 t_c.
+  if (springDashpot && m.integrator != balls::Integrator::ExplicitEuler &&
+      dt > kStabilityMargin * 2.0 / std::numbers::pi * contactTime)
+    return {};
+  const int substeps = std::max(1, int(std::ceil(frame / dt - 1e-6)));
+  Settings out = {pick("engine.contact", &balls::Params::contact, m.contact),
+                  rescale("engine.dt", &balls::Params::dt, float(frame / substeps)),
+                  rescale("engine.substeps", &balls::Params::substeps, substeps)};
+  if (m.integrator) out.push_back(pick("engine.integrator", &balls::Params::integrator, *m.integrator));
+  if (m.stepsPerContact > 0 && springDashpot)
+    out.push_back(pick("engine.contact_time", &balls::Params::contactTime, float(contactTime)));
+  return out;
+}
+
 // Balls rows: balls-restitution (method = integrator, spring-dashpot, steps_per_contact; dt follows
 // the scene's contact time) or balls-settle (method = "<contact>[ tc = K dt], <integrator>", dt:
 // the overlap there is set by the contact's stiffness, so a spring-dashpot pick also sets the
@@ -191,50 +210,25 @@ std::vector<Candidate> ballsCandidates(const ModelInput& in) {
   std::vector<Candidate> out;
   for (const auto& [study, t] : in.tables.studies)
     for (std::size_t r = 0; r < t.rows(); ++r) {
-      const std::string method = t.text(r, "method");
-      std::string contact = "spring-dashpot", integrator = method;
-      double stepsPerContact = 0;  // settle rows: t_c = stepsPerContact x dt
-      if (study != "balls-restitution") {
-        const std::size_t comma = method.find(", ");
-        std::istringstream words(method.substr(0, comma));
-        std::string tc, eq, dtWord;
-        words >> contact;
-        if (words >> tc >> eq >> stepsPerContact >> dtWord && !(tc == "tc" && eq == "=" && dtWord == "dt"))
-          stepsPerContact = -1;
-        integrator = comma == std::string::npos ? "" : method.substr(comma + 2);
-      }
-      const int contactIndex = indexOf(balls::kContactNames, contact);
-      const int integratorIndex = integrator.empty() ? 0 : indexOf(balls::kIntegratorNames, integrator);
-      if (contactIndex < 0 || integratorIndex < 0 || stepsPerContact < 0)
-        throw Error(t.where(r) + ": method '" + method + "' is not '<balls contact>[ tc = K dt][, <integrator>]'");
+      const BallsMethod m = parseBallsMethod(t, r, study == "balls-restitution");
+      const bool springDashpot = m.contact == balls::Contact::SpringDashpot;
       Candidate c = basics(in, t, r);
       double dt = t.number(r, "dt"), contactTime = sceneContactTime;
       std::string stepWords = "dt <= " + formatValue(dt) + " s";
       c.step = dt;
-      if (contact == "spring-dashpot" && stepsPerContact > 0) {
-        contactTime = stepsPerContact * dt;
+      if (springDashpot && m.stepsPerContact > 0) {
+        contactTime = m.stepsPerContact * dt;
         stepWords += ", t_c = " + formatValue(contactTime) + " s";
-      } else if (contact == "spring-dashpot" && t.has("steps_per_contact")) {
+      } else if (springDashpot && t.has("steps_per_contact")) {
         const double steps = t.number(r, "steps_per_contact");
         dt = sceneContactTime / steps;
         stepWords = "dt <= " + formatValue(dt) + " s (t_c/dt = " + formatValue(steps) + ")";
         c.step = 1.0 / steps;
       }
-      // Symplectic Euler and Verlet keep an undamped spring while omega0 dt < 2: dt < 0.64 t_c.
-      if (contact == "spring-dashpot" && integrator != "explicit-euler" &&
-          dt > kStabilityMargin * 2.0 / std::numbers::pi * contactTime)
-        continue;
-      const int substeps = std::max(1, int(std::ceil(frame / dt - 1e-6)));
-      if (substeps > 1000) continue;  // the param's range
-      c.family = method;
-      c.label = contact + (integrator.empty() ? "" : ", " + integrator) + ", " + stepWords;
-      c.settings = {pick("engine.contact", &balls::Params::contact, balls::Contact(contactIndex)),
-                    rescale("engine.dt", &balls::Params::dt, float(frame / substeps)),
-                    rescale("engine.substeps", &balls::Params::substeps, substeps)};
-      if (!integrator.empty())
-        c.settings.push_back(pick("engine.integrator", &balls::Params::integrator, balls::Integrator(integratorIndex)));
-      if (stepsPerContact > 0 && contact == "spring-dashpot")
-        c.settings.push_back(pick("engine.contact_time", &balls::Params::contactTime, float(contactTime)));
+      c.settings = ballsSettings(m, dt, contactTime, frame);
+      if (c.settings.empty()) continue;
+      c.family = t.text(r, "method");
+      c.label = m.words + ", " + stepWords;
       out.push_back(std::move(c));
     }
   return out;

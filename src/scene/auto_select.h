@@ -38,6 +38,7 @@ struct Bound {
 
 struct Candidate {
   std::string label;           // the settings in words: "rk4 fp32, dt <= 0.0628 s"
+  std::string model;           // the model the row runs where the pick chooses it ("model": "auto"); else ""
   std::string family;          // rows of one family differ only in `step`
   double step = 0;             // what the engine may make smaller than picked (dt, Courant number)
   double cost = 0;             // GPU ms per simulated second (the study's column)

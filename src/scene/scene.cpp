@@ -10,19 +10,22 @@ namespace {
 std::string modelNames() {
   std::string names;
   for (const ModelEntry& m : models()) names += (names.empty() ? "" : ", ") + std::string(m.name);
-  return names;
+  return names + ", " + kAutoModel;
 }
 
+// "model": "auto" reads a fluid scene's params (the balls' follow from them, scene/auto_water.h).
 const ModelEntry& modelNamed(const std::string& name, const std::string& where) {
+  const std::string model = name == kAutoModel ? "fluid" : name;
   for (const ModelEntry& m : models())
-    if (name == m.name) return m;
+    if (model == m.name) return m;
   throw Error(where + ": scene.model = '" + name + "' is not a model (known: " + modelNames() + ")");
 }
 
 }  // namespace
 
 void visit(ParamVisitor& v, Scene& s) {
-  static const std::string models = "the model the scene runs: " + modelNames();
+  static const std::string models =
+      "the model the scene runs: " + modelNames() + " (water, balls or fluid as the accuracy needs)";
   v.text({"name", "Name", "shown in the window title"}, s.name);
   v.text({"description", "Description", "what the scene shows"}, s.description);
   v.text({"model", "Model", models.c_str()}, s.model);
@@ -64,6 +67,9 @@ Scene readScene(const io::Json& json, const std::string& where, const io::Json& 
     }
   readParams(
       header, [&](ParamVisitor& v) { visit(v, scene); }, where + ": scene");
+  if (scene.model == kAutoModel && scene.method == MethodMode::Params && header.contains("method"))
+    throw Error(where + ": scene.method = 'params' contradicts scene.model = 'auto', which picks the method too " +
+                "(remove method)");
   if (overrides.is_object() && !overrides.empty()) {
     if (!params.is_object()) params = io::Json::object();
     params.merge_patch(overrides);

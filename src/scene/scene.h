@@ -6,6 +6,8 @@
 //
 // A scene may instead state the accuracy it needs and let the engine pick the method:
 //   "method": "auto", "accuracy": { "energyDrift": 1e-3 }   (scene/auto_method.h)
+// and a water scene the model too (balls or fluid; its params are a fluid scene's):
+//   "model": "auto", "accuracy": { "densityError": 0.01 }  (scene/auto_water.h)
 //
 // The window, the headless renderer, benchmarks and tests load the same files.
 #pragma once

@@ -16,6 +16,7 @@
 
 #include "io/png.h"
 #include "scene/scene.h"
+#include "support/accuracy_data.h"
 #include "support/gl_test.h"
 #include "support/run_process.h"
 
@@ -170,7 +171,9 @@ TEST_F(BallsGolden, TheMetricCatchesAChangedLook) {
 TEST(BallsScenes, RenderWritesASequenceForEveryBallsScene) {
   int count = 0;
   for (const auto& entry : std::filesystem::directory_iterator(findAssetDir() / "scenes")) {
-    if (entry.path().extension() != ".json" || loadScene(entry.path()).model != "balls") continue;
+    if (entry.path().extension() != ".json" || !test::missingAccuracyData(entry.path()).empty() ||
+        loadScene(entry.path()).model != "balls")
+      continue;  // (water-auto.json before its rows ship: WaterAuto.* run it on fixtures)
     SCOPED_TRACE(entry.path().string());
     test::TempDir dir;
     const auto r = test::runTidepool(
