@@ -9,8 +9,8 @@
 //
 // A fluid row sets solver.iterations and engine.dt, engine.substeps (rescaled: the frame keeps
 // its simulated time dt x substeps); a balls row sets what a balls "method": "auto" pick sets
-// (auto_models.h: ballsSettings) on the scene's particles as balls (asBalls: radius = spacing / 2).
-// Rows whose resolution names a spacing ("spacing 0.02 m") apply only to scenes of that spacing.
+// (auto_models.h: ballsSettings) on the scene's particles as balls (asBalls: the same water volume, radius = spacing ·
+// 2^(1/6) / 2). Rows whose resolution names a spacing ("spacing 0.02 m") apply only to scenes of that spacing.
 #pragma once
 
 #include <string>

@@ -100,7 +100,7 @@ TEST_F(WaterAuto, PicksTheCheaperBallsWhenALooseBoundLetsThemQualify) {
   EXPECT_EQ(s.model, "balls");
   EXPECT_EQ(s.autoChoice->model, "balls");
   const balls::Params& b = ballsScene(s).model;
-  EXPECT_EQ(b.radius, 0.01f);  // spacing / 2
+  EXPECT_FLOAT_EQ(b.radius, 0.01f * std::pow(2.0f, 1.0f / 6.0f));  // the same water volume (asBalls)
   EXPECT_EQ(b.fillMax, glm::vec3(0.1f, 0.1f, 0.1f));
   EXPECT_EQ(b.contact, balls::Contact::SpringDashpot);
   EXPECT_EQ(b.integrator, balls::Integrator::SymplecticEuler);
