@@ -2,7 +2,7 @@
 // PBF solver, second half of an iteration (Macklin & Müller 2013, eqs. 12-14): the position
 // correction Δp_i = Σ_j V0 (λ_i + λ_j + s_corr) ∇W(p_i − p_j) + λ_i (Σ_b V_b ∇W(p_i − p_b) +
 // the walls' gradient), s_corr = −k (W(r)/W(Δq))^n, then the collisions: no closer than
-// uContact to an obstacle particle (a layer of them at one spacing cannot be passed) and inside
+// uContact to an obstacle particle (no layer of them can be passed) and inside
 // the walls. Jacobi: reads p and λ of all, writes the corrected p to the other buffer.
 #include "fluid/bindings.glsl"
 

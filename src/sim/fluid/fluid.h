@@ -5,7 +5,7 @@
 //   predict    v += dt·g, p = x + dt·v                                     (particle order)
 //   sort       grid of cell h on p (count, scan), p and x to cell order  (neighbours for the step)
 //   iterate    `iterations` times: λ (density, constraint, λ), then Δp with s_corr, the obstacles
-//              (no closer than 0.6 spacing) and the walls
+//              (no closer than kObstacleContact) and the walls
 //   velocity   v = (p − x)/dt, x = p
 //   viscosity  XSPH (and the vorticity ω), then vorticity confinement when ε_v > 0
 // Densities are ρ/ρ0 throughout (shaders/fluid/kernels.glsl); boundaries take part in the density
@@ -35,6 +35,11 @@ namespace tidepool::fluid {
 
 class Fluid final : public sim::Model, public sim::ParticleWater {
  public:
+  // The closest a particle comes to an obstacle particle, in spacings: more than the largest hole of
+  // their HCP lattice (an octahedral hole, 1/√2 from its six particles), so none passes through a
+  // layer or settles inside a solid.
+  static constexpr float kObstacleContact = 0.75f;
+
   Fluid(gl::ShaderLibrary& shaders, const Params& params);  // throws Error (size, memory, a bad obstacle)
 
   Params& params() { return m_params; }  // solver edits apply at the next step; "particles" edits at reset()

@@ -20,7 +20,6 @@ gl::GpuProfiler::Scope timed(gl::GpuProfiler* profiler, const char* name) {
 // The list holds neighbours within h·(1 + kSkin) at the step's start, so that pairs closing in
 // during the iterations are still found.
 constexpr float kSkin = 0.1f;
-constexpr float kContact = 0.6f;  // closest approach to an obstacle particle, spacings (> 1/√3: a layer holds)
 
 }  // namespace
 
@@ -147,7 +146,7 @@ void Fluid::solve(gl::GpuProfiler* profiler) {
     p.set("uScorrK", float(q.scorrK / m_rest.gradients));
     p.set("uScorrN", q.scorrN);
     p.set("uScorrInvQ", 1.0f / (1.0f - dq * dq));
-    p.set("uContact", kContact * q.spacing);
+    p.set("uContact", kObstacleContact * q.spacing);
     m_pred.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_PRED);
     m_lambda.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_LAMBDA);
     m_scratch[0].bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_OUT);

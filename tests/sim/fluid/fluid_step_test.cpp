@@ -57,7 +57,7 @@ reference::Setup setupOf(const Fluid& f) {
   s.decay = std::exp(-double(p.water.damping) * p.water.dt);
   s.viscosity = p.viscosity;
   s.vorticity = p.vorticity;
-  s.contact = 0.6 * p.spacing;
+  s.contact = Fluid::kObstacleContact * p.spacing;
   s.inset = 0.5 * p.spacing;
   s.wallScale = f.rest().wallScale;
   s.iterations = p.iterations;
