@@ -113,6 +113,7 @@ Study lifeStabilityStudy();
 Study ballsStabilityStudy();
 Study fluidDensityStudy();  // water_studies.cpp
 Study waterFrontStudy();
+Study fluidStabilityStudy();  // fluid_stability_study.cpp
 
 const std::vector<Study>& studies() {
   static const std::vector<Study> table = {
@@ -127,6 +128,7 @@ const std::vector<Study>& studies() {
       ballsStabilityStudy(),
       fluidDensityStudy(),
       waterFrontStudy(),
+      fluidStabilityStudy(),
       {"ripples-dispersion", "phase-speed error vs cost per Courant number (wave rule)", dispersion},
       {"ripples-stability", "noise growth and phase error vs Courant number, with the 1/sqrt(2) limit", stability},
   };

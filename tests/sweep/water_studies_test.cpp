@@ -1,4 +1,4 @@
-// The water studies of issue 18 (fluid-density, water-front), quick runs on
+// The water studies of issue 18 (fluid-density, water-front, fluid-stability), quick runs on
 // llvmpipe through the program, as the GPU machine runs them: rows of both models in one CSV with
 // the columns "method": "auto" reads, a CSV that reads back exactly as written (and redraws), and
 // measurements ordered as the physics says.
@@ -143,4 +143,34 @@ TEST(WaterStudies, WaterFrontIsMeasuredAgainstTheFinestRunOfEachModel) {
   }
   for (const char* d : {"d = 0.04 m", "d = 0.02 m"})
     EXPECT_EQ(rows["balls"][d]->metrics[other], rows["fluid"][d]->metrics[other]);
+}
+
+// The resting tank at 1 and 4 iterations: the bisection finds a limit inside 2–64 ms (so the fluid
+// is stable at 2 ms and fails by 64), more iterations allow a larger step, and at each limit the
+// derived floor compression is of order 10% (the premise of the compression law).
+TEST(WaterStudies, FluidStabilityLimitLiesInTheSearchedRangeAndGrowsWithIterations) {
+  test::TempDir dir;
+  const sweep::Result r = quickStudy(dir, "fluid-stability", "iterations,floor_compression,max_speed");
+  const std::size_t iterations = test::metricColumn(r, "iterations"),
+                    compression = test::metricColumn(r, "floor_compression");
+  std::map<int, const sweep::Row*> measured, theory;
+  for (const sweep::Row& row : r.rows) {
+    EXPECT_EQ(row.model, "") << "every row is the result's model";
+    if (row.method == "tank: measured") measured[int(row.metrics[iterations])] = &row;
+    if (row.method == "tank: theory, floor compression of the tank at k = 4")
+      theory[int(row.metrics[iterations])] = &row;
+  }
+  ASSERT_EQ(measured.size(), 2u);
+  ASSERT_EQ(theory.size(), 2u);
+  for (const auto& [k, row] : measured) {
+    SCOPED_TRACE(k);
+    EXPECT_GT(row->dt, 2e-3);
+    EXPECT_LT(row->dt, 64e-3);
+    EXPECT_EQ(row->y, 1e3 * row->dt);
+    EXPECT_GT(row->metrics[compression], 0.03);
+    EXPECT_LT(row->metrics[compression], 0.5);
+  }
+  EXPECT_GT(measured[4]->dt, 1.5 * measured[1]->dt) << "4 iterations hold a larger step than 1";
+  EXPECT_NEAR(theory[4]->dt / theory[1]->dt, 2.0, 1e-5) << "the compression law grows as sqrt(k)";
+  EXPECT_NEAR(theory[4]->dt, measured[4]->dt, 1e-5 * measured[4]->dt) << "drawn through the measured k = 4";
 }
