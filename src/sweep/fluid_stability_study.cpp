@@ -8,8 +8,8 @@
 // Theory (docs/ACCURACY.md, "Water: balls and fluid on one metric"):
 //  - Similarity. With no damping, a PBF step in positions is x' = 2x − x_prev + g·dt² then the
 //    iterations (positions only; XSPH blends a fixed fraction per step), and the watch asks
-//    |x' − x| < h: dt enters only through g·dt². So for a scene and k, failure is at a fixed
-//    G = g·dt²/d, and the limit in dt is a square root.
+//    |x' − x| < h: dt enters only through g·dt² (and the steps a run of 0.5 s takes). So for a
+//    scene and k, failure is near a fixed G = g·dt²/d, and the limit in dt is a square root.
 //  - Neighbours (CFL). A particle moving faster than h/dt skips neighbours; the fastest water of
 //    a dam break is its front, 2·sqrt(g·H) in shallow-water theory (Ritter 1892; free fall from
 //    the top would give only sqrt(2·g·H)). Hence dt ≤ h / (2·sqrt(g·H)), whatever k.

@@ -6,7 +6,7 @@
 //   e = 0.5) at dt 0.1, 0.2, 0.4 ms. Each settles 0.4 s; then the density error (mean over the
 //   particles of max(ρ/ρ0 − 1, 0), read with the fluid's kernel for both models) is averaged over
 //   five samples in the next 0.1 s, and its max kept. The full run widens the tank to 1.6 × 1.6 m
-//   (64k fluid particles, 90k balls) so that the cost is a GPU-sized one; depth and spacing stay.
+//   (64,000 fluid particles, 87,051 balls) so that the cost is a GPU-sized one; depth and spacing stay.
 //   Theory for the fluid (fluid_stability_study.cpp): a resting column's floor compression is
 //   (1 + ε)·S·g·dt²·H/k, so the mean over the column is about half that, falling as dt²/k.
 // water-front: the dam break (dam-break.json for the balls, dam-break-fluid.json for the fluid:
