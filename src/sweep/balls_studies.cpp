@@ -7,6 +7,7 @@
 #include "sim/balls/balls.h"
 #include "sim/balls/measure/balls_measure.h"
 #include "sweep/sweep.h"
+#include "sweep/water_run.h"
 
 namespace tidepool::sweep {
 namespace {
@@ -36,17 +37,21 @@ double msPerStep(gl::ShaderLibrary& shaders, int n, balls::Integrator integrator
 // GPU ms of `steps` steps of a running model, in chunks (GL timer queries; wall clock between
 // glFinish calls on a software renderer, as bench::gpuMedianMs does). Used by the studies that
 // measure their own runs: the cost is that of the run, contacts and all.
-double timedSteps(balls::Balls& model, long steps) {
+double timedSteps(long steps, const std::function<void()>& step) {
   const bench::Common once{"auto", "", 1, 0};
   constexpr long kChunk = 500;
   double ms = 0;
   for (long done = 0; done < steps; done += kChunk) {
     const long n = std::min(kChunk, steps - done);
     ms += bench::gpuMedianMs(once, [&] {
-      for (long i = 0; i < n; ++i) model.stepOnce();
+      for (long i = 0; i < n; ++i) step();
     });
   }
   return ms;
+}
+
+double timedSteps(balls::Balls& model, long steps) {
+  return timedSteps(steps, [&] { model.stepOnce(); });
 }
 
 namespace {

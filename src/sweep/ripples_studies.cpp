@@ -111,6 +111,9 @@ Study lifePrecisionStudy();   // life_studies.cpp
 Study swarmStabilityStudy();  // stability_studies.cpp
 Study lifeStabilityStudy();
 Study ballsStabilityStudy();
+Study fluidDensityStudy();  // water_studies.cpp
+Study waterFrontStudy();
+Study fluidStabilityStudy();  // fluid_stability_study.cpp
 
 const std::vector<Study>& studies() {
   static const std::vector<Study> table = {
@@ -123,6 +126,9 @@ const std::vector<Study>& studies() {
       swarmStabilityStudy(),
       lifeStabilityStudy(),
       ballsStabilityStudy(),
+      fluidDensityStudy(),
+      waterFrontStudy(),
+      fluidStabilityStudy(),
       {"ripples-dispersion", "phase-speed error vs cost per Courant number (wave rule)", dispersion},
       {"ripples-stability", "noise growth and phase error vs Courant number, with the 1/sqrt(2) limit", stability},
   };

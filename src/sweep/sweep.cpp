@@ -84,8 +84,8 @@ void writeCsv(const Result& result, const std::string& study, const std::string&
   for (const std::string& m : result.metrics) out << "," << m;
   out << ",chart_x,chart_y,stable,pareto,device\n";
   for (const Row& r : result.rows) {
-    out << study << "," << result.model << "," << csvField(r.method) << "," << csvNumber(r.dt) << "," << r.substeps
-        << "," << csvField(r.resolution) << "," << csvNumber(r.costMsPerSimS);
+    out << study << "," << csvField(r.model.empty() ? result.model : r.model) << "," << csvField(r.method) << ","
+        << csvNumber(r.dt) << "," << r.substeps << "," << csvField(r.resolution) << "," << csvNumber(r.costMsPerSimS);
     for (double m : r.metrics) out << "," << csvNumber(m);
     out << "," << csvNumber(r.x) << "," << csvNumber(r.y) << "," << (r.stable ? 1 : 0) << "," << (r.pareto ? 1 : 0)
         << ",\"" << device << "\"\n";
@@ -138,6 +138,7 @@ Result readResult(const fs::path& csv, const fs::path& spec, std::string& device
       return v;
     };
     Row row;
+    if (f[1] != r.model) row.model = f[1];
     row.method = f[2];
     row.dt = number_(3);
     row.substeps = int(number_(4));
@@ -160,12 +161,14 @@ void drawChart(const Result& result, const std::string& device, const fs::path& 
   if (!onPath("gnuplot")) throw Error("charts need gnuplot, which is not installed (apt-get install gnuplot-nox)");
   std::error_code ec;
   fs::create_directories(base.parent_path(), ec);
-  // One gnuplot data block per method (in first-seen order), then the Pareto front.
+  // One gnuplot data block per method (in first-seen order), then the Pareto front. A row of its
+  // own model (a study of several) names it: "balls: spring-dashpot, symplectic-euler".
   std::vector<std::string> order;
   std::map<std::string, std::vector<const Row*>> byMethod;
   for (const Row& r : result.rows) {
-    if (!byMethod.count(r.method)) order.push_back(r.method);
-    byMethod[r.method].push_back(&r);
+    const std::string curve = r.model.empty() ? r.method : r.model + ": " + r.method;
+    if (!byMethod.count(curve)) order.push_back(curve);
+    byMethod[curve].push_back(&r);
   }
   const fs::path dat = fs::path(base.string() + ".dat.tmp");
   {

@@ -15,6 +15,8 @@
 namespace tidepool::sweep {
 
 struct Row {
+  std::string
+      model;  // the model of this row where a study measures several (water: balls, fluid); empty: Result::model
   std::string method;  // curve: integrator, contact model, Courant number...
   double dt = 0;       // s (0 when not applicable)
   int substeps = 1;
@@ -35,7 +37,7 @@ struct ChartSpec {
 };
 
 struct Result {
-  std::string model;
+  std::string model;                 // written into every row whose Row::model is empty
   std::vector<std::string> metrics;  // CSV column names of Row::metrics
   std::vector<Row> rows;
   ChartSpec chart;
@@ -69,8 +71,9 @@ void writeCsv(const Result& result, const std::string& study, const std::string&
 // The chart's settings beside the CSV (<study>.chart.json), so that charts can be redrawn from
 // rows measured elsewhere (the GPU machine has no gnuplot): `tidepool sweep <study> --from-csv`.
 void writeChartSpec(const Result& result, const std::filesystem::path& path);
-// Reads a CSV written by writeCsv and its chart settings; returns the rows (method, chart x and y,
-// stable, pareto) and the device they were measured on. Throws Error naming the file and line.
+// Reads a CSV written by writeCsv and its chart settings; returns the rows (model where it is not
+// the result's, method, chart x and y, stable, pareto) and the device they were measured on.
+// Throws Error naming the file and line.
 Result readResult(const std::filesystem::path& csv, const std::filesystem::path& spec, std::string& device);
 // Draws the chart with gnuplot into <base>.png and <base>.svg; throws Error when gnuplot is
 // missing or fails.

@@ -8,6 +8,7 @@
 #include "io/png.h"
 #include "support/gl_test.h"
 #include "support/run_process.h"
+#include "support/sweep_column.h"
 #include "sweep/sweep.h"
 
 using namespace tidepool;
@@ -26,19 +27,12 @@ sweep::Result quickStudy(const test::TempDir& dir, const std::string& study) {
   return sweep::readResult(dir / (study + ".csv"), dir / (study + ".chart.json"), device);
 }
 
-// Rows of one method by dt, and a metric's column.
+// Rows of one method by dt.
 std::map<double, const sweep::Row*> byDt(const sweep::Result& r, const std::string& method) {
   std::map<double, const sweep::Row*> out;
   for (const sweep::Row& row : r.rows)
     if (row.method == method) out[row.dt] = &row;
   return out;
-}
-
-std::size_t column(const sweep::Result& r, const std::string& metric) {
-  for (std::size_t i = 0; i < r.metrics.size(); ++i)
-    if (r.metrics[i] == metric) return i;
-  ADD_FAILURE() << "no metric " << metric;
-  return 0;
 }
 
 }  // namespace
@@ -49,7 +43,7 @@ TEST(BallsStudies, SettleOverlapFallsWithDtAtEachLawsOrder) {
   test::TempDir dir;
   const sweep::Result r = quickStudy(dir, "balls-settle");
   ASSERT_EQ(r.rows.size(), 7u);
-  const std::size_t overlap = column(r, "max_overlap_r"), drift = column(r, "energy_drift");
+  const std::size_t overlap = test::metricColumn(r, "max_overlap_r"), drift = test::metricColumn(r, "energy_drift");
   const std::map<std::string, std::pair<double, double>> orders = {
       {"penalty, symplectic-euler", {1.6, 2.5}},
       {"spring-dashpot tc = 20 dt, symplectic-euler", {3.2, 5.0}},
@@ -76,7 +70,7 @@ TEST(BallsStudies, DambreakFrontConvergesToTheFinestDtReference) {
   test::TempDir dir;
   const sweep::Result r = quickStudy(dir, "balls-dambreak");
   ASSERT_EQ(r.rows.size(), 7u);
-  const std::size_t early = column(r, "rms_deviation_early"), full = column(r, "rms_deviation");
+  const std::size_t early = test::metricColumn(r, "rms_deviation_early"), full = test::metricColumn(r, "rms_deviation");
   const auto rows = byDt(r, "symplectic-euler");  // the scene's own method, t_c/dt 20, 10, 5
   const auto reruns = byDt(r, "reference rerun (run-to-run spread)");
   ASSERT_EQ(rows.size(), 3u);
