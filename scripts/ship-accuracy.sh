@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Regenerates the study data that "method": "auto" picks from (assets/accuracy/<study>.csv).
+# Regenerates the study data that "method": "auto" and "model": "auto" pick from (assets/accuracy/<study>.csv).
 #
 #   scripts/ship-accuracy.sh              run every study here and ship its rows (the GPU machine:
 #                                         source .gl/prelude.sh first; no charts, it has no gnuplot)
@@ -9,7 +9,7 @@
 # The list is the studies src/scene/auto_models.cpp reads (a test checks they agree).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-studies=(swarm-orbit swarm-precision ripples-dispersion balls-restitution balls-settle)
+studies=(swarm-orbit swarm-precision ripples-dispersion balls-restitution balls-settle fluid-density water-front)
 flags=(--no-chart --ship)
 if [[ "${1:-}" == "--from-csv" ]]; then
   flags+=(--from-csv)
