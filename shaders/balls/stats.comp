@@ -27,16 +27,16 @@ uniform vec3 uWallMin;
 uniform vec3 uWallMax;
 
 const int kValues = BALLS_STATS_VALUES;
-shared float sValues[kValues][BALLS_GROUP_SIZE];
-
 bool reducedByMax(int k) {
   return k == BALLS_STATS_MAX_OVERLAP || k == BALLS_STATS_MAX_SPEED || k == BALLS_STATS_FRONT ||
          k == BALLS_STATS_BACK_HEIGHT;
 }
 
+#define GROUP_SIZE BALLS_GROUP_SIZE
+#include "common/group_reduce.glsl"
+
 void main() {
   const uint i = globalIndex();
-  const uint t = gl_LocalInvocationIndex;
   const float kNone = -3.0e38;
   float values[kValues];
   for (int k = 0; k < kValues; ++k) values[k] = 0.0;
@@ -62,16 +62,5 @@ void main() {
       if (p.x < uWallMin.x + 2.0 * uRadius) values[BALLS_STATS_BACK_HEIGHT] = p.z;
     }
   }
-  for (int k = 0; k < kValues; ++k) sValues[k][t] = values[k];
-  barrier();
-  for (uint stride = uint(BALLS_GROUP_SIZE) / 2u; stride > 0u; stride /= 2u) {
-    if (t < stride)
-      for (int k = 0; k < kValues; ++k) {
-        const float other = sValues[k][t + stride];
-        sValues[k][t] = reducedByMax(k) ? max(sValues[k][t], other) : sValues[k][t] + other;
-      }
-    barrier();
-  }
-  if (t == 0u)
-    for (int k = 0; k < kValues; ++k) partials[groupIndex() * uint(kValues) + uint(k)] = sValues[k][0];
+  reduceGroup(values);
 }

@@ -23,6 +23,9 @@ uniform float uScorrInvQ;  // 1 / (1 − Δq²/h²): W(r)/W(Δq) = ((1 − r²/h
 float gLambda = 0.0;
 vec3 gDelta;
 vec3 gBoundaryGradient;
+bool gPushing = false;  // the boundary loop's second use: pushing gPushed out to uContact
+vec3 gPushed = vec3(0.0);
+uniform float uContact;  // m: the closest a fluid particle comes to an obstacle particle
 void onFluid(uint j, vec3 r, float r2) {
   const float len = sqrt(r2);
   if (len <= 0.0) return;
@@ -36,39 +39,18 @@ void onFluid(uint j, vec3 r, float r2) {
 }
 void onBoundary(vec3 r, float r2, float volume) {
   const float len = sqrt(r2);
-  if (len > 0.0) gBoundaryGradient += volume * spikyGrad(r, len);
+  if (len <= 0.0) return;
+  if (gPushing)
+    gPushed += (uContact - len) / len * r;  // r from the corrected position: out to uContact
+  else
+    gBoundaryGradient += volume * spikyGrad(r, len);
 }
 
 #include "fluid/neighbours.glsl"
 #include "fluid/walls.glsl"
 
 uniform uint uCount;
-uniform float uContact;  // m: the closest a fluid particle comes to an obstacle particle
 
-#ifdef HAS_OBSTACLE
-// The obstacle particles within uContact of the corrected position, each pushing it out to uContact.
-void pushOutOfObstacles(inout vec3 p) {
-  const vec3 g = (p - uObstacleOrigin) * uObstacleInvCell;
-  if (any(lessThan(g, vec3(-1.0))) || any(greaterThan(g, vec3(uObstacleDims) + 1.0))) return;
-  const ivec3 last = ivec3(uObstacleDims) - 1;
-  const ivec3 oc = clamp(ivec3(floor(g)), ivec3(0), last);
-  const int ox0 = max(oc.x - 1, 0), ox1 = min(oc.x + 1, last.x);
-  for (int dz = -1; dz <= 1; ++dz)
-    for (int dy = -1; dy <= 1; ++dy) {
-      const ivec3 row = ivec3(ox0, oc.y + dy, oc.z + dz);
-      if (row.y < 0 || row.z < 0 || row.y > last.y || row.z > last.z) continue;
-      const uint first = uint(row.x) + uObstacleDims.x * (uint(row.y) + uObstacleDims.y * uint(row.z));
-      const uint end = obstacleCellStart[first + uint(ox1 - ox0) + 1u];
-      for (uint j = obstacleCellStart[first]; j < end; ++j) {
-        const vec3 r = p - obstaclePos[j].xyz;
-        const float r2 = dot(r, r);
-        if (r2 >= uContact * uContact || r2 == 0.0) continue;
-        const float len = sqrt(r2);
-        p += (uContact - len) / len * r;
-      }
-    }
-}
-#endif
 
 void main() {
   const uint i = globalIndex();
@@ -86,7 +68,11 @@ void main() {
   wallsDensity(p, unused, gBoundaryGradient);
   vec3 q = p + gDelta + gLambda * gBoundaryGradient;
 #ifdef HAS_OBSTACLE
-  pushOutOfObstacles(q);
+  // Each obstacle particle within uContact of the corrected position pushes it out to uContact.
+  gPushing = true;
+  gPushed = vec3(0.0);
+  forEachBoundary(q, uContact);
+  q += gPushed;
 #endif
   predOut[i] = vec4(clampToWalls(q), pi.w);
 }

@@ -28,16 +28,16 @@ uniform vec3 uDomainMin;
 uniform float uSpacing;  // m
 
 const int kValues = FLUID_STATS_VALUES;
-shared float sValues[kValues][FLUID_GROUP_SIZE];
-
 bool reducedByMax(int k) {
   return k == FLUID_STATS_MAX_COMPRESSION || k == FLUID_STATS_MAX_SPEED || k == FLUID_STATS_FRONT ||
          k == FLUID_STATS_BACK_HEIGHT;
 }
 
+#define GROUP_SIZE FLUID_GROUP_SIZE
+#include "common/group_reduce.glsl"
+
 void main() {
   const uint i = globalIndex();
-  const uint t = gl_LocalInvocationIndex;
   const float kNone = -3.0e38;
   float values[kValues];
   for (int k = 0; k < kValues; ++k) values[k] = 0.0;
@@ -68,16 +68,5 @@ void main() {
       if (p.x < uWallMin.x + uSpacing) values[FLUID_STATS_BACK_HEIGHT] = p.z;
     }
   }
-  for (int k = 0; k < kValues; ++k) sValues[k][t] = values[k];
-  barrier();
-  for (uint stride = uint(FLUID_GROUP_SIZE) / 2u; stride > 0u; stride /= 2u) {
-    if (t < stride)
-      for (int k = 0; k < kValues; ++k) {
-        const float other = sValues[k][t + stride];
-        sValues[k][t] = reducedByMax(k) ? max(sValues[k][t], other) : sValues[k][t] + other;
-      }
-    barrier();
-  }
-  if (t == 0u)
-    for (int k = 0; k < kValues; ++k) partials[groupIndex() * uint(kValues) + uint(k)] = sValues[k][0];
+  reduceGroup(values);
 }

@@ -41,6 +41,17 @@ float DivergenceWatch::largest(const Words& w) {
 
 std::uint32_t DivergenceWatch::flagged(const Words& w) { return w[HEALTH_FLAGGED]; }
 
+std::optional<std::string> DivergenceWatch::particles(const Words& w, const char* many, const char* one,
+                                                      const char* limit, double bound) {
+  if (auto what = nonFinite(w, many)) return what;
+  if (flagged(w) > 0) return std::to_string(flagged(w)) + " " + many + " left the domain";
+  const float maxSpeed = largest(w);
+  if (maxSpeed <= bound) return std::nullopt;
+  char what[200];
+  std::snprintf(what, sizeof what, "a %s moves at %.3g m/s, more than %s (%.3g m/s)", one, maxSpeed, limit, bound);
+  return what;
+}
+
 DivergenceWatch::DivergenceWatch(gl::ShaderLibrary& shaders, std::string model, std::size_t maxCopied, int interval)
     : m_ops(shaders),
       m_model(std::move(model)),

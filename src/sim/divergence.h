@@ -63,6 +63,10 @@ class DivergenceWatch {
   static std::optional<std::string> nonFinite(const Words& words, const char* elements);
   static float largest(const Words& words);
   static std::uint32_t flagged(const Words& words);
+  // The verdict of particle water (balls, fluid): NaN particles, particles flagged outside the
+  // walls, or a speed above `bound` m/s ("a <one> moves at 3.1 m/s, more than <limit> (2 m/s)").
+  static std::optional<std::string> particles(const Words& words, const char* many, const char* one, const char* limit,
+                                              double bound);
 
   // What a model supplies to its watch.
   class Subject {

@@ -2,7 +2,7 @@
 // (position-based fluid), on the same water and the same metrics (water_run.h).
 //
 // fluid-density: the resting tank (fluid-tank.json: 0.2 m of water, d = 0.02 m). The fluid at
-//   1–12 iterations × dt 1, 2, 4 ms; the balls (r = d/2, a slab on the HCP lattice, t_c = 20 dt,
+//   1–12 iterations × dt 1, 2, 4 ms; the balls (r = d·2^(1/6)/2 as asBalls, a slab on the HCP lattice, t_c = 20 dt,
 //   e = 0.5) at dt 0.1, 0.2, 0.4 ms. Each settles 0.4 s; then the density error (mean over the
 //   particles of max(ρ/ρ0 − 1, 0), read with the fluid's kernel for both models) is averaged over
 //   five samples in the next 0.1 s, and its max kept. The full run widens the tank to 1.6 × 1.6 m
@@ -26,6 +26,7 @@
 #include "scene/balls_stage.h"
 #include "scene/fluid_stage.h"
 #include "scene/scene.h"
+#include "scene/water_stage.h"
 #include "sim/balls/measure/balls_measure.h"
 #include "sim/fluid/rest_lattice.h"
 #include "sweep/sweep.h"
@@ -39,7 +40,7 @@ constexpr float kStepsPerContact = 20.0f;
 
 std::string fluidMethod(int iterations) { return "pbf, " + std::to_string(iterations) + " iterations"; }
 
-// The balls on a fluid scene's water: radius d/2, spring-dashpot contacts of t_c = 20 dt (e = 0.5).
+// The balls with spring-dashpot contacts of t_c = 20 dt (e = 0.5), symplectic Euler.
 balls::Params ballsOn(const balls::Params& water, double dt) {
   balls::Params p = water;
   p.contact = balls::Contact::SpringDashpot;
@@ -120,7 +121,8 @@ Result fluidDensity(Env& env) {
       std::fflush(stdout);
     }
   for (double dt : ballsDts) {
-    const Density d = restingDensity(env.shaders, ballsOn(water, dt));
+    // The same water as balls (asBalls: the radius of equal particles per volume), as model auto runs it.
+    const Density d = restingDensity(env.shaders, ballsOn(asBalls(tank, water), dt));
     addCostRow(r, densityRow("balls", kBallsMethod, dt, d, 0, depth, tank.spacing), d.mean);
     std::printf("  balls, dt = %.3g ms (t_c = %.3g ms): density error mean %.3g, max %.3g, %.3g GPU ms per s, %s\n",
                 1e3 * dt, 1e3 * kStepsPerContact * dt, d.mean, d.max, d.cost, d.stable ? "stable" : "UNSTABLE");
@@ -213,7 +215,7 @@ Result waterFront(Env& env) {
     f.water.dt = 0.05f * d;  // 1 ms at d = 0.02 m, as the scene
     runs.push_back({"fluid", fluidMethod(f.iterations), d, f.water.dt, frontCurve(env.shaders, f, end)});
     balls::Params b = ballsOn(ballsBase, 0.01 * d);  // 0.2 ms at r = 0.01 m, t_c = 4 ms: as the scene
-    b.radius = 0.5f * d;
+    b.radius = asBalls(f, b).radius;                 // the same water volume as the fluid's, as model auto runs it
     runs.push_back({"balls", kBallsMethod, d, b.dt, frontCurve(env.shaders, b, end)});
   }
   auto find = [&](const std::string& model, float d) -> const Run& {

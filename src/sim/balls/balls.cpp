@@ -118,15 +118,7 @@ gl::Program& Balls::healthKernel() {
 }
 
 std::optional<std::string> Balls::unhealthy(const sim::DivergenceWatch::Words& w) {
-  using Watch = sim::DivergenceWatch;
-  if (auto what = Watch::nonFinite(w, "balls")) return what;
-  if (Watch::flagged(w) > 0) return std::to_string(Watch::flagged(w)) + " balls left the domain";
-  const float maxSpeed = Watch::largest(w);
-  if (maxSpeed <= speedBound()) return std::nullopt;
-  char what[160];
-  std::snprintf(what, sizeof what, "a ball moves at %.3g m/s, more than its diameter per step (%.3g m/s)", maxSpeed,
-                speedBound());
-  return what;
+  return sim::DivergenceWatch::particles(w, "balls", "ball", "its diameter per step", speedBound());
 }
 
 std::string Balls::method() const {

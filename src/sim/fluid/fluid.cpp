@@ -175,15 +175,7 @@ gl::Program& Fluid::healthKernel() {
 }
 
 std::optional<std::string> Fluid::unhealthy(const sim::DivergenceWatch::Words& words) {
-  using Watch = sim::DivergenceWatch;
-  if (auto what = Watch::nonFinite(words, "fluid particles")) return what;
-  if (Watch::flagged(words) > 0) return std::to_string(Watch::flagged(words)) + " fluid particles left the domain";
-  const float maxSpeed = Watch::largest(words);
-  if (maxSpeed <= speedBound()) return std::nullopt;
-  char what[200];
-  std::snprintf(what, sizeof what, "a particle moves at %.3g m/s, more than h per step (%.3g m/s)", maxSpeed,
-                speedBound());
-  return what;
+  return sim::DivergenceWatch::particles(words, "fluid particles", "particle", "h per step", speedBound());
 }
 
 std::string Fluid::method() const {

@@ -107,11 +107,13 @@ inline std::vector<glm::dvec3> iterate(const Setup& s, const std::vector<glm::dv
     double unused = 0;
     walls(s, p[i], unused, boundary);
     glm::dvec3 q = p[i] + delta + lambda[i] * boundary;
+    glm::dvec3 pushed(0.0);  // each obstacle particle within the contact distance pushes q out to it
     for (const Boundary& b : s.boundary) {
       const glm::dvec3 r = q - b.pos;
       const double len = glm::length(r);
-      if (len > 0 && len < s.contact) q += (s.contact - len) / len * r;
+      if (len > 0 && len < s.contact) pushed += (s.contact - len) / len * r;
     }
+    q += pushed;
     out[i] = glm::clamp(q, s.wallMin + s.inset, s.wallMax - s.inset);
   }
   return out;
