@@ -128,8 +128,13 @@ void Fluid::reset() {
 void Fluid::emitFromTap() {
   const balls::Params& w = m_water;
   if (!w.tap || m_tapEmitted >= std::size_t(w.tapMax) || m_time < m_tapNextLayer || w.tapSpeed <= 0) return;
+  // The jet at the fluid's rest density (one particle per d³): hexagonal layers of spacing s, one
+  // every s of travel (a stack of hexagonal prisms, 2/√3 particles per s³), so s = d·(2/√3)^(1/3).
+  // The balls' layers (s = 2r·1.02 at r = d/2, 0.82 s apart) would start the jet 60% compressed
+  // and burst it into spray.
+  const float s = m_params.spacing * std::cbrt(2.0f / std::sqrt(3.0f));
   const balls::TapLayer layer =
-      balls::tapLayer(w, w.radius, std::min(std::size_t(w.tapMax) - m_tapEmitted, m_capacity - m_count));
+      balls::tapLayer(w, s / 2.04f, std::min(std::size_t(w.tapMax) - m_tapEmitted, m_capacity - m_count));
   if (layer.pos.empty()) return;
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);  // shader writes land before the uploads
   const std::size_t at = m_count * sizeof(glm::vec4), bytes = layer.pos.size() * sizeof(glm::vec4);
@@ -137,7 +142,7 @@ void Fluid::emitFromTap() {
   m_v.upload(layer.vel.data(), bytes, at);
   m_count += layer.pos.size();
   m_tapEmitted += layer.pos.size();
-  m_tapNextLayer = m_time + layer.interval;
+  m_tapNextLayer = m_time + s / w.tapSpeed;
 }
 
 float Fluid::domainRotation() const { return balls::domainRotation(m_water, m_time); }

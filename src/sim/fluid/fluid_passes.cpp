@@ -37,10 +37,8 @@ void Fluid::stepOnce(gl::GpuProfiler* profiler) {
     m_water.obstacles = m_params.water.obstacles;
   }
   emitFromTap();
-  {
-    auto scope = timed(profiler, "fluid.obstacles");
-    m_obstacles.place(m_water.obstacles, m_time + m_water.dt, m_water.domainMin, m_water.domainMax, profiler);
-  }
+  // Placed where they are at the step's end, when the collisions see them (timed as "balls.obstacles").
+  m_obstacles.place(m_water.obstacles, m_time + m_water.dt, m_water.domainMin, m_water.domainMax, profiler);
   m_walls = balls::wallsAt(m_water, m_time + m_water.dt);  // the collisions see the walls at the step's end
   if (m_count > 0) {
     predict(profiler);

@@ -136,3 +136,27 @@ TEST_F(FluidPhysics, NoParticleEntersAnObstacle) {
   EXPECT_EQ(worst, 0u);
   expectInsideTheWalls(f);
 }
+
+// The tap emits at the fluid's rest density: a jet falling from the nozzle is nowhere compressed
+// (layers at the balls' packing would start it 60% over ρ0 and burst it into spray).
+TEST_F(FluidPhysics, TapJetLeavesTheNozzleUncompressed) {
+  Params p;
+  p.spacing = 0.02f;
+  p.water.domainMax = glm::vec3(0.4f, 0.4f, 0.6f);
+  p.water.fill = balls::Fill::None;
+  p.water.dt = 0.001f;
+  p.water.tap = true;
+  p.water.tapPosition = glm::vec3(0.2f, 0.2f, 0.5f);
+  p.water.tapDirection = glm::vec3(0.0f, 0.0f, -1.0f);
+  p.water.tapSpeed = 1.5f;
+  p.water.tapRadius = 0.05f;
+  Fluid f(shaders(), p);
+  double worst = -1;
+  for (int k = 1; k <= 10; ++k) {
+    run(f, 0.02 * k);
+    worst = std::max(worst, f.stats().compressionMax);
+  }
+  std::printf("tap jet: %zu particles, largest compression %.3g\n", f.count(), worst);
+  EXPECT_GT(f.count(), 200u);
+  EXPECT_LT(worst, 0.02);
+}
