@@ -32,6 +32,7 @@ void onBoundary(vec3 r, float r2, float volume) {
 }
 
 #include "fluid/neighbours.glsl"
+#include "fluid/boundary.glsl"
 #include "fluid/walls.glsl"
 
 uniform uint uCount;

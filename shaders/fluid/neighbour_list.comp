@@ -20,7 +20,6 @@ uint gIndex = 0u, gCount = 0u;
 void onFluid(uint j, vec3 r, float r2) {
   if (gCount < uint(FLUID_MAX_NEIGHBOURS)) list[(++gCount) * uListStride + gIndex] = j;
 }
-void onBoundary(vec3 r, float r2, float volume) {}  // obstacles are searched through their own grid
 
 #include "fluid/neighbours.glsl"
 

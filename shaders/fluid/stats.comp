@@ -20,6 +20,7 @@ void onFluid(uint j, vec3 r, float r2) { gDensity += uVolume * poly6(r2); }
 void onBoundary(vec3 r, float r2, float volume) { gDensity += volume * poly6(r2); }
 
 #include "fluid/neighbours.glsl"
+#include "fluid/boundary.glsl"
 #include "fluid/walls.glsl"
 
 uniform uint uCount;

@@ -28,7 +28,6 @@ void onFluid(uint j, vec3 r, float r2) {
   if (len > 0.0) gOmega += uVolume * cross(dv, -spikyGrad(r, len));  // ∇_j W = −∇_i W
 #endif
 }
-void onBoundary(vec3 r, float r2, float volume) {}
 
 #include "fluid/neighbours.glsl"
 

@@ -20,7 +20,6 @@ void onFluid(uint j, vec3 r, float r2) {
   const float len = sqrt(r2);
   if (len > 0.0) gEta += uVolume * length(omega[j].xyz) * spikyGrad(r, len);
 }
-void onBoundary(vec3 r, float r2, float volume) {}
 
 #include "fluid/neighbours.glsl"
 

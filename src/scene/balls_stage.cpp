@@ -49,16 +49,7 @@ SceneParams parseBallsParams(const io::Json& params, const std::string& where) {
 std::unique_ptr<Stage> createBallsStage(const SceneParams& params, const std::string& where,
                                         gl::ShaderLibrary& shaders) {
   const BallsSceneParams& p = params.as<BallsSceneParams>();
-  try {
-    WaterSetup setup;
-    setup.active = WaterModel::Balls;
-    setup.balls = p.model;
-    setup.fluid = asFluid(p.model, fluid::Params{});
-    setup.view = p.view;
-    return createWaterStage(shaders, setup);
-  } catch (const Error& e) {  // e.g. a missing or open obstacle mesh: say which scene asked for it
-    throw Error(where + ": " + e.what());
-  }
+  return createWaterStage(shaders, p.model, p.view, where);
 }
 
 }  // namespace

@@ -23,16 +23,7 @@ SceneParams parseFluidParams(const io::Json& params, const std::string& where) {
 std::unique_ptr<Stage> createFluidStage(const SceneParams& params, const std::string& where,
                                         gl::ShaderLibrary& shaders) {
   const FluidSceneParams& p = params.as<FluidSceneParams>();
-  try {
-    WaterSetup setup;
-    setup.active = WaterModel::Fluid;
-    setup.fluid = p.model;
-    setup.balls = asBalls(p.model, balls::Params{});
-    setup.view = p.view;
-    return createWaterStage(shaders, setup);
-  } catch (const Error& e) {  // e.g. a missing obstacle mesh, too many particles: say which scene asked
-    throw Error(where + ": " + e.what());
-  }
+  return createWaterStage(shaders, p.model, p.view, where);
 }
 
 }  // namespace

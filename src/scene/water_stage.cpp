@@ -55,6 +55,14 @@ fluid::Params asFluid(const balls::Params& b, fluid::Params own) {
 
 namespace {
 
+// Balls and fluid parameters for a scene of either model; `active` says which one it runs.
+struct WaterSetup {
+  WaterModel active = WaterModel::Balls;
+  balls::Params balls;
+  fluid::Params fluid;
+  BallsViewSettings view;
+};
+
 constexpr int kStatsInterval = 30;  // frames between statistics read-backs
 
 class WaterStage final : public Stage {
@@ -199,10 +207,24 @@ class WaterStage final : public Stage {
   long m_frames = 0;
 };
 
+std::unique_ptr<Stage> build(gl::ShaderLibrary& shaders, const WaterSetup& setup, const std::string& where) {
+  try {
+    return std::make_unique<WaterStage>(shaders, setup);
+  } catch (const Error& e) {  // e.g. a missing or open obstacle mesh: say which scene asked for it
+    throw Error(where + ": " + e.what());
+  }
+}
+
 }  // namespace
 
-std::unique_ptr<Stage> createWaterStage(gl::ShaderLibrary& shaders, const WaterSetup& setup) {
-  return std::make_unique<WaterStage>(shaders, setup);
+std::unique_ptr<Stage> createWaterStage(gl::ShaderLibrary& shaders, const balls::Params& balls,
+                                        const BallsViewSettings& view, const std::string& where) {
+  return build(shaders, {WaterModel::Balls, balls, asFluid(balls, fluid::Params{}), view}, where);
+}
+
+std::unique_ptr<Stage> createWaterStage(gl::ShaderLibrary& shaders, const fluid::Params& fluid,
+                                        const BallsViewSettings& view, const std::string& where) {
+  return build(shaders, {WaterModel::Fluid, asBalls(fluid, balls::Params{}), fluid, view}, where);
 }
 
 }  // namespace tidepool

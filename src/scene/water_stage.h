@@ -19,14 +19,6 @@ namespace tidepool {
 enum class WaterModel { Balls, Fluid };
 constexpr std::array<const char*, 2> kWaterModelNames = {"balls", "fluid"};
 
-// Balls and fluid parameters for a scene of either model; `active` says which one it runs.
-struct WaterSetup {
-  WaterModel active = WaterModel::Balls;
-  balls::Params balls;
-  fluid::Params fluid;
-  BallsViewSettings view;
-};
-
 // The balls parameters a fluid scene's particles would be as balls, and the fluid parameters of a
 // balls scene's; `own` keeps the target's own keys. The water keeps its volume: balls at rest pack
 // hexagonally (√2 per (2r)³), the fluid's rest lattice is cubic (one per d³), so d = 2r / 2^(1/6)
@@ -34,6 +26,11 @@ struct WaterSetup {
 balls::Params asBalls(const fluid::Params& f, balls::Params own);
 fluid::Params asFluid(const balls::Params& b, fluid::Params own);
 
-std::unique_ptr<Stage> createWaterStage(gl::ShaderLibrary& shaders, const WaterSetup& setup);
+// The stage of a balls scene or a fluid scene (the other model's parameters follow by asFluid or
+// asBalls); an error building it (a missing mesh, too many particles) is prefixed with `where`.
+std::unique_ptr<Stage> createWaterStage(gl::ShaderLibrary& shaders, const balls::Params& balls,
+                                        const BallsViewSettings& view, const std::string& where);
+std::unique_ptr<Stage> createWaterStage(gl::ShaderLibrary& shaders, const fluid::Params& fluid,
+                                        const BallsViewSettings& view, const std::string& where);
 
 }  // namespace tidepool

@@ -78,7 +78,12 @@ Stats DensityProbe::measure(const sim::ParticleWater& water, const DensityKernel
   const std::size_t n = water.count();
   if (n == 0) return st;
   const double h = double(kernel.smoothing) * kernel.spacing;
-  const RestLattice rest = restLattice(kernel.spacing, h, kernel.packing);
+  if (!m_restFor || m_restFor->spacing != kernel.spacing || m_restFor->smoothing != kernel.smoothing ||
+      m_restFor->packing != kernel.packing) {  // measured once per kernel, not per call
+    m_rest = restLattice(kernel.spacing, h, kernel.packing);
+    m_restFor = kernel;
+  }
+  const RestLattice& rest = m_rest;
   const balls::Params& w = water.water();
   if (!m_grid || m_grid->params().domainMin != w.domainMin || m_grid->params().domainMax != w.domainMax ||
       m_grid->params().cellSize != float(h))

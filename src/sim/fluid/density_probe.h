@@ -14,6 +14,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <optional>
 
 #include "gl/buffer.h"
 #include "gl/program.h"
@@ -64,6 +65,8 @@ class DensityProbe {
   gl::ShaderLibrary& m_shaders;
   std::unique_ptr<grid::UniformGrid> m_grid;
   gl::Buffer m_pos, m_vel, m_stats;
+  std::optional<DensityKernel> m_restFor;  // the kernel m_rest was measured for
+  RestLattice m_rest;
 };
 
 }  // namespace tidepool::fluid

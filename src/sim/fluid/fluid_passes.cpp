@@ -31,7 +31,6 @@ void Fluid::stepOnce(gl::GpuProfiler* profiler) {
     gp.cellSize = cellSize();
     m_grid = std::make_unique<grid::UniformGrid>(m_shaders, gp, m_capacity);
   }
-  m_walls = balls::wallsAt(m_water, m_time);
   if (std::string error; m_obstacles.update(m_params.water.obstacles, m_water.radius, error)) {
     m_obstacleError = error;
     m_water.obstacles = m_params.water.obstacles;
