@@ -4,7 +4,9 @@
 #define GRID_CELL_START 2  // uint per cell + 1, exclusive scan of the counts (reorder pass)
 #define GRID_PERMUTATION 3  // uint per particle, permutation[sorted] = original (optional)
 #define GRID_REORDER_SRC 4  // first of GRID_REORDER_MAX_ARRAYS consecutive source arrays
+#define GRID_MEMBERS 4  // uint per particle, the stable grid's cell members (rank pass only, so it shares 4)
 #define GRID_REORDER_DST 6  // first of GRID_REORDER_MAX_ARRAYS consecutive destination arrays
+#define GRID_STABLE_MAX_CELL 1024  // larger cells keep their atomicAdd order (grid_rank.comp)
 #define GRID_REORDER_MAX_ARRAYS 2  // arrays per reorder pass: bindings 0..7 fit GL 4.3's minimum of 8
 #define SCAN_IN_VEC 0  // scan input as uvec4 (full blocks)
 #define SCAN_IN_WORD 1  // the same buffer as uint (the last, partial block)

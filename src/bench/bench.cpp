@@ -221,4 +221,12 @@ std::vector<grid::ReorderMode> parseReorderModes(const std::string& text) {
   return parseList(text, one, "--reorder: no modes given (scatter, gather or scatter,gather)");
 }
 
+std::vector<bool> parseOnOff(const std::string& text, const std::string& option) {
+  auto one = [&](const std::string& token) {
+    if (token != "on" && token != "off") throw Error(option + " '" + token + "' is not on or off");
+    return token == "on";
+  };
+  return parseList(text, one, option + ": nothing given (on, off or on,off)");
+}
+
 }  // namespace tidepool::bench

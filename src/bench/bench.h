@@ -115,5 +115,7 @@ auto parseList(const std::string& text, One&& one, const std::string& none) {
 std::vector<std::size_t> parseSizes(const std::string& text);
 // "scatter,gather" -> grid reorder modes in that order; throws Error naming the bad token.
 std::vector<grid::ReorderMode> parseReorderModes(const std::string& text);
+// "on,off" -> flags in that order for `option` (e.g. "--deterministic"); throws Error naming the bad token.
+std::vector<bool> parseOnOff(const std::string& text, const std::string& option);
 
 }  // namespace tidepool::bench

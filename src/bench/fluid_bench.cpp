@@ -49,18 +49,9 @@ std::vector<float> parseCells(const std::string& text) {
   return out;
 }
 
-std::vector<bool> parseLists(const std::string& text) {
-  std::vector<bool> out;
-  std::stringstream ss(text);
-  for (std::string item; std::getline(ss, item, ',');) {
-    if (item != "on" && item != "off") throw Error("--list '" + item + "' is not on or off");
-    out.push_back(item == "on");
-  }
-  return out;
-}
-
 int run(Env& env, const std::string& sceneName, const std::string& sizes, const std::string& iterations,
-        const std::string& cells, const std::string& lists, const std::string& window) {
+        const std::string& cells, const std::string& lists, const std::string& deterministic,
+        const std::string& window) {
   const Scene scene = loadScene(resolveScenePath(sceneName));
   const fluid::Params base = fluidScene(scene).model;
   const StepWindow w = parseStepWindow(window);
@@ -68,34 +59,40 @@ int run(Env& env, const std::string& sceneName, const std::string& sizes, const 
   std::printf("fluid benchmark on %s: scene %s, steps %d..%d, medians per step\n", env.device.c_str(),
               scene.name.c_str(), w.first, w.last);
   const std::vector<float> cellFractions = cells.empty() ? std::vector<float>{base.gridCell} : parseCells(cells);
-  const std::vector<bool> listModes = lists.empty() ? std::vector<bool>{base.neighbourList} : parseLists(lists);
-  Table table({"particles", "spacing", "iters", "list", "cell/h", "cells", "predict ms", "count ms", "scan ms",
-               "reorder ms", "list ms", "lambda ms", "delta ms", "velocity ms", "viscosity ms", "ms/step", "steps/s",
-               "bytes/particle"});
+  const std::vector<bool> listModes =
+      lists.empty() ? std::vector<bool>{base.neighbourList} : parseOnOff(lists, "--list");
+  const std::vector<bool> orders = deterministic.empty() ? std::vector<bool>{base.water.deterministic}
+                                                         : parseOnOff(deterministic, "--deterministic");
+  Table table({"particles", "spacing", "iters", "list", "determ.", "cell/h", "cells", "predict ms", "count ms",
+               "scan ms", "reorder ms", "list ms", "lambda ms", "delta ms", "velocity ms", "viscosity ms", "ms/step",
+               "steps/s", "bytes/particle"});
   const std::vector<std::size_t> counts = block ? parseSizes(sizes) : std::vector<std::size_t>{0};
   for (std::size_t n : counts)
     for (int k : parseIterations(iterations))
       for (bool list : listModes)
-        for (float cell : cellFractions) {
-          fluid::Params p = base;
-          p.gridCell = cell;
-          p.neighbourList = list;
-          if (block) {
-            p.spacing = spacingFor(base, n);
-            p.water.maxParticles = std::max(p.water.maxParticles, int(n + n / 8));
+        for (float cell : cellFractions)
+          for (bool stable : orders) {
+            fluid::Params p = base;
+            p.gridCell = cell;
+            p.water.deterministic = stable;
+            p.neighbourList = list;
+            if (block) {
+              p.spacing = spacingFor(base, n);
+              p.water.maxParticles = std::max(p.water.maxParticles, int(n + n / 8));
+            }
+            p.iterations = k;
+            fluid::Fluid model(env.shaders, p);
+            const PassTimes t = timePasses(w.first, w.last - w.first, [&](gl::GpuProfiler& g) { model.stepOnce(&g); });
+            const double perStep = t.frameMs();
+            table.add({std::to_string(model.count()), fixed(p.spacing, 5), std::to_string(k), list ? "on" : "off",
+                       stable ? "on" : "off", fixed(cell, 2), std::to_string(model.cells()),
+                       fixed(t.median("fluid.predict"), 4), fixed(t.median("fluid.count"), 4),
+                       fixed(t.median("fluid.scan"), 4), fixed(t.median("fluid.reorder"), 4),
+                       fixed(t.median("fluid.neighbours"), 4), fixed(t.median("fluid.lambda"), 4),
+                       fixed(t.median("fluid.delta"), 4), fixed(t.median("fluid.velocity"), 4),
+                       fixed(t.median("fluid.viscosity"), 4), fixed(perStep, 4),
+                       fixed(perStep > 0 ? 1000.0 / perStep : 0.0, 0), std::to_string(model.bytesPerParticle())});
           }
-          p.iterations = k;
-          fluid::Fluid model(env.shaders, p);
-          const PassTimes t = timePasses(w.first, w.last - w.first, [&](gl::GpuProfiler& g) { model.stepOnce(&g); });
-          const double perStep = t.frameMs();
-          table.add({std::to_string(model.count()), fixed(p.spacing, 5), std::to_string(k), list ? "on" : "off",
-                     fixed(cell, 2), std::to_string(model.cells()), fixed(t.median("fluid.predict"), 4),
-                     fixed(t.median("fluid.count"), 4), fixed(t.median("fluid.scan"), 4),
-                     fixed(t.median("fluid.reorder"), 4), fixed(t.median("fluid.neighbours"), 4),
-                     fixed(t.median("fluid.lambda"), 4), fixed(t.median("fluid.delta"), 4),
-                     fixed(t.median("fluid.velocity"), 4), fixed(t.median("fluid.viscosity"), 4), fixed(perStep, 4),
-                     fixed(perStep > 0 ? 1000.0 / perStep : 0.0, 0), std::to_string(model.bytesPerParticle())});
-        }
   return finish(env, table, "; its per-pass timer queries read 0");
 }
 
@@ -105,7 +102,8 @@ Benchmark addFluidBench(CLI::App& bench) {
   auto* sub =
       bench.add_subcommand("fluid", "fluid (PBF) step: ms per pass over a step window, steps/s, bytes per particle");
   struct Opts {
-    std::string scene = "bench-fluid", sizes = "65536,1M", iterations = "4", cells, lists, window = "10:110";
+    std::string scene = "bench-fluid", sizes = "65536,1M", iterations = "4", cells, lists, deterministic,
+                window = "10:110";
   };
   auto o = std::make_shared<Opts>();
   sub->add_option("scene", o->scene, "scene (default bench-fluid)");
@@ -113,8 +111,12 @@ Benchmark addFluidBench(CLI::App& bench) {
   sub->add_option("--iterations", o->iterations, "solver iterations, one row each, e.g. 2,4,8");
   sub->add_option("--cell", o->cells, "neighbour grid cells as fractions of h, one row each, e.g. 1,0.5");
   sub->add_option("--list", o->lists, "neighbour list on or off, one row each, e.g. on,off");
+  sub->add_option("--deterministic", o->deterministic,
+                  "stable grid order (bit-identical runs) on or off, one row each, e.g. on,off");
   sub->add_option("--steps", o->window, "timed step window FIRST:LAST");
-  return {sub, [o](Env& env) { return run(env, o->scene, o->sizes, o->iterations, o->cells, o->lists, o->window); }};
+  return {sub, [o](Env& env) {
+            return run(env, o->scene, o->sizes, o->iterations, o->cells, o->lists, o->deterministic, o->window);
+          }};
 }
 
 }  // namespace tidepool::bench

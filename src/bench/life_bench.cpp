@@ -26,6 +26,7 @@ struct LifeOptions {
   int seed = 1;
   int settle = 100;  // steps before timing
   bool looping = false;
+  std::string deterministic = "on";  // stable grid order: "on", "off" or "on,off" (one row each)
 };
 
 life::Rules rulesFor(const LifeOptions& o, std::size_t n) {
@@ -90,27 +91,30 @@ int run(Env& env, const LifeOptions& o) {
       "steps, medians of %d)\n",
       env.device.c_str(), o.species, o.seed, o.looping ? "looping" : "walls", o.settle, env.common.repeats);
   const gl::BufferOps ops(env.shaders);  // read-backs that leave the model's buffers where they are
-  Table table({"N", "box", "grid", "pairs/particle", "ms/step", "steps/s", "sort ms", "forces ms", "integrate ms",
-               "pairs/s", "3x3 pairs/s"});
-  for (std::size_t n : parseSizes(o.sizes)) {
-    life::Life model(env.shaders, rulesFor(o, n));
-    settle(model, o.settle);
-    const float dt = model.params().maxDt;
-    const double stepMs = gpuMedianMs(env.common, [&] { model.stepOnce(dt); });
-    const double sortMs = gpuMedianMs(env.common, [&] { model.sortByCell(); });
-    const double forcesMs = gpuMedianMs(env.common, [&] { model.evaluateForces(); });
-    const double pairs = double(model.countCandidatePairs());
-    const double block = blockPairs(ops, model);  // the counts of the last sort, i.e. these positions
-    const glm::uvec3 dims = model.grid().dims();
-    char box[64], grid[64], rate[32], blockRate[32];
-    std::snprintf(box, sizeof box, "%.0fx%.0f", double(model.rules().size.x), double(model.rules().size.y));
-    std::snprintf(grid, sizeof grid, "%ux%u", dims.x, dims.y);
-    std::snprintf(rate, sizeof rate, "%.3g", pairs / (forcesMs * 1e-3));
-    std::snprintf(blockRate, sizeof blockRate, "%.3g", block / (forcesMs * 1e-3));
-    table.add({std::to_string(n), box, grid, fixed(pairs / double(n), 1), fixed(stepMs, 4), fixed(1000.0 / stepMs, 1),
-               fixed(sortMs, 4), fixed(forcesMs, 4), fixed(std::max(0.0, stepMs - sortMs - forcesMs), 4), rate,
-               blockRate});
-  }
+  Table table({"N", "determ.", "box", "grid", "pairs/particle", "ms/step", "steps/s", "sort ms", "forces ms",
+               "integrate ms", "pairs/s", "3x3 pairs/s"});
+  for (std::size_t n : parseSizes(o.sizes))
+    for (bool stable : parseOnOff(o.deterministic, "--deterministic")) {
+      life::Params params;
+      params.deterministic = stable;
+      life::Life model(env.shaders, rulesFor(o, n), params);
+      settle(model, o.settle);
+      const float dt = model.params().maxDt;
+      const double stepMs = gpuMedianMs(env.common, [&] { model.stepOnce(dt); });
+      const double sortMs = gpuMedianMs(env.common, [&] { model.sortByCell(); });
+      const double forcesMs = gpuMedianMs(env.common, [&] { model.evaluateForces(); });
+      const double pairs = double(model.countCandidatePairs());
+      const double block = blockPairs(ops, model);  // the counts of the last sort, i.e. these positions
+      const glm::uvec3 dims = model.grid().dims();
+      char box[64], grid[64], rate[32], blockRate[32];
+      std::snprintf(box, sizeof box, "%.0fx%.0f", double(model.rules().size.x), double(model.rules().size.y));
+      std::snprintf(grid, sizeof grid, "%ux%u", dims.x, dims.y);
+      std::snprintf(rate, sizeof rate, "%.3g", pairs / (forcesMs * 1e-3));
+      std::snprintf(blockRate, sizeof blockRate, "%.3g", block / (forcesMs * 1e-3));
+      table.add({std::to_string(n), stable ? "on" : "off", box, grid, fixed(pairs / double(n), 1), fixed(stepMs, 4),
+                 fixed(1000.0 / stepMs, 1), fixed(sortMs, 4), fixed(forcesMs, 4),
+                 fixed(std::max(0.0, stepMs - sortMs - forcesMs), 4), rate, blockRate});
+    }
   table.print();
   if (o.brute != "none") {
     std::printf("\nforces: grid (sort + force pass) against the shared-memory-tiled N^2 brute force\n");
@@ -156,6 +160,8 @@ Benchmark addLifeBench(CLI::App& bench) {
   sub->add_option("--seed", o->seed, "rule seed")->check(CLI::Range(0, 2147483647));
   sub->add_option("--settle", o->settle, "steps run before timing (clusters form)")->check(CLI::Range(0, 100000));
   sub->add_flag("--looping", o->looping, "looping borders instead of walls");
+  sub->add_option("--deterministic", o->deterministic,
+                  "stable grid order (bit-identical runs) on or off, one row each, e.g. on,off");
   return {sub, [o](Env& env) { return run(env, *o); }};
 }
 

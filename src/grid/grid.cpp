@@ -67,6 +67,7 @@ UniformGrid::UniformGrid(gl::ShaderLibrary& shaders, const GridParams& params, s
   m_scan.reserve(cells());
   if (particleCapacity) m_indexInCell = gl::Buffer(particleCapacity * kWord);
   if (particleCapacity && params.reorder == ReorderMode::Gather) m_permutation = gl::Buffer(particleCapacity * kWord);
+  if (particleCapacity && params.stable) m_members = gl::Buffer(particleCapacity * kWord);
 }
 
 void UniformGrid::setUniforms(const gl::Program& program) const {
@@ -119,10 +120,12 @@ void UniformGrid::reorder(const gl::Buffer& positions, std::span<const ReorderAr
   positions.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_POSITIONS);
   m_indexInCell.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_INDEX_IN_CELL);
   m_cellStart.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_CELL_START);
-  if (m_params.reorder == ReorderMode::Gather && !arrays.empty())
+  if (m_params.reorder == ReorderMode::Gather && !arrays.empty()) {
     gather(arrays, permutation);
-  else
+  } else {
+    if (m_params.stable) rankWithinCells(nullptr);
     scatter(arrays, permutation);  // a permutation alone is the gather's first pass anyway
+  }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
@@ -168,9 +171,13 @@ void UniformGrid::gather(std::span<const ReorderArray> arrays, gl::Buffer* permu
     if (m_permutation.size() < m_count * kWord) m_permutation = gl::Buffer(m_count * kWord);
     permutation = &m_permutation;
   }
-  permutation->bindBase(GL_SHADER_STORAGE_BUFFER, GRID_PERMUTATION);
-  reorderPass(0, true).dispatchThreads(m_count);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  if (m_params.stable) {
+    rankWithinCells(permutation);
+  } else {
+    permutation->bindBase(GL_SHADER_STORAGE_BUFFER, GRID_PERMUTATION);
+    reorderPass(0, true).dispatchThreads(m_count);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  }
   for (std::size_t first = 0; first < arrays.size(); first += GRID_REORDER_MAX_ARRAYS) {
     const std::size_t batch = bindBatch(arrays, first);
     gl::Program*& program = m_gatherPass[batch];
@@ -183,8 +190,30 @@ void UniformGrid::gather(std::span<const ReorderArray> arrays, gl::Buffer* permu
   }
 }
 
+// The members pass is the scatter of the particle index (the gather's permutation pass) into
+// m_members; the rank pass then gives each particle its rank among them: into indexInCell for
+// the scatter, or straight into the gather's permutation (saving the gather its own pass).
+void UniformGrid::rankWithinCells(gl::Buffer* permutation) {
+  if (m_members.size() < m_count * kWord) m_members = gl::Buffer(m_count * kWord);
+  m_members.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_PERMUTATION);
+  reorderPass(0, true).dispatchThreads(m_count);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  gl::Program*& program = m_rankPass[permutation != nullptr];
+  if (!program)
+    program = &m_shaders->program({"grid/grid_rank.comp"}, {{"WRITE_PERMUTATION", permutation ? "1" : "0"},
+                                                            {"HALF_POSITIONS", halfDefine(m_params)}});
+  program->use();
+  setUniforms(*program);
+  program->set("uCount", uint32_t(m_count));
+  m_members.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_MEMBERS);
+  if (permutation) permutation->bindBase(GL_SHADER_STORAGE_BUFFER, GRID_PERMUTATION);
+  program->dispatchThreads(m_count);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
 std::size_t UniformGrid::memoryBytes() const {
-  return m_cellCount.size() + m_cellStart.size() + m_indexInCell.size() + m_permutation.size() + m_scan.memoryBytes();
+  return m_cellCount.size() + m_cellStart.size() + m_indexInCell.size() + m_permutation.size() + m_members.size() +
+         m_scan.memoryBytes();
 }
 
 }  // namespace tidepool::grid

@@ -17,9 +17,17 @@
 //            coalesced writes. Without a caller's permutation buffer the grid keeps its own.
 // Both place particle i at the same slot, so they give identical arrays and permutations.
 //
-// Determinism: cellCount and cellStart are the same on every run; the order of particles inside
-// a cell (indexInCell, hence the reordered arrays and the permutation) follows the atomicAdd
-// order and may differ between runs and drivers.
+// Determinism (GridParams::stable, on by default): cellCount and cellStart are the same on every
+// run, but the count pass's atomicAdd hands out the slots within a cell in scheduling order. A
+// stable grid ranks each cell's particles by their index before the reorder, in two more passes:
+//   members  members[cellStart[cell] + atomic slot] = i      (the cell's particles, any order)
+//   rank     indexInCell[i] = #{ members of i's cell < i }   (the same on every run); the gather
+//            writes permutation[cellStart[cell] + rank] = i instead, in place of its own pass
+//   cell 2 holds particles {0, 2, 4}; atomicAdd gave them slots {2, 0, 1} -> ranks {0, 1, 2}
+// so the reordered arrays and the permutation are a stable counting sort: bit-identical runs for
+// the models that sum over neighbours in grid order. A cell of more than GRID_STABLE_MAX_CELL
+// particles (a blow-up piling into a border cell) keeps its atomic order rather than spend
+// O(count^2) there. With stable = false the grid skips both passes (atomicAdd order).
 // Positions are vec4 (xyz + w) std430 SSBOs, or for a 2D grid with Layout::Half2 uvec2 (x =
 // packHalf2x16 of xy, y = any word), and then every reordered array has 8-byte elements. Positions outside the domain
 // are clamped into the border cells (never dropped, never written out of bounds); a position exactly on a cell border
@@ -62,6 +70,7 @@ struct GridParams {
   float cellSize = 0.1f;      // world units; at least the model's interaction radius
   Layout layout = Layout::Vec4;
   ReorderMode reorder = ReorderMode::Scatter;  // how reorder() moves the arrays (see above)
+  bool stable = true;                          // order within a cell by particle index (see above)
 };
 
 // One array to move by reorder(): src is read in particle order, dst written in cell order.
@@ -91,6 +100,7 @@ class UniformGrid {
 
   void setUniforms(const gl::Program& program) const;                 // uGridOrigin, uGridInvCellSize, uGridDims
   void setReorderMode(ReorderMode mode) { m_params.reorder = mode; }  // for the next reorder()
+  void setStable(bool stable) { m_params.stable = stable; }           // for the next reorder()
   ReorderMode reorderMode() const { return m_params.reorder; }
 
   const GridParams& params() const { return m_params; }
@@ -98,10 +108,12 @@ class UniformGrid {
   glm::uvec3 dims() const { return m_shape.dims; }
   bool is2D() const { return m_shape.dims.z == 1 && m_params.domainMax.z == m_params.domainMin.z; }
   std::size_t cells() const { return m_shape.cells(); }
-  std::size_t particleCount() const { return m_count; }            // of the last build
-  const gl::Buffer& cellCount() const { return m_cellCount; }      // uint per cell
-  const gl::Buffer& cellStart() const { return m_cellStart; }      // uint per cell + 1 (total)
-  const gl::Buffer& indexInCell() const { return m_indexInCell; }  // uint per particle
+  std::size_t particleCount() const { return m_count; }        // of the last build
+  const gl::Buffer& cellCount() const { return m_cellCount; }  // uint per cell
+  const gl::Buffer& cellStart() const { return m_cellStart; }  // uint per cell + 1 (total)
+  const gl::Buffer& indexInCell() const {
+    return m_indexInCell;
+  }                                 // uint per particle (stable: the rank, after reorder)
   std::size_t memoryBytes() const;  // all GPU buffers the grid owns, scan levels and gather permutation included
   std::size_t elementBytes() const { return m_params.layout == Layout::Half2 ? 8 : 16; }  // of positions and arrays
 
@@ -112,16 +124,20 @@ class UniformGrid {
   std::size_t m_maxBlockBytes;  // GL_MAX_SHADER_STORAGE_BLOCK_SIZE, queried once
   gl::BufferOps m_ops;          // the cellCount clear
   gl::Program* m_countPass;
+  gl::Program* m_rankPass[2] = {};  // stable grid (grid_rank.comp) [writes permutation], made on use
   gl::Program* m_reorderPass[GRID_REORDER_MAX_ARRAYS + 1][2] = {};  // [arrays][writes permutation], made on use
   gl::Program* m_gatherPass[GRID_REORDER_MAX_ARRAYS + 1] = {};      // [arrays], made on use
   PrefixScan m_scan;
   gl::Buffer m_cellCount, m_cellStart, m_indexInCell;
   gl::Buffer m_permutation;  // gather mode without a caller's permutation: uint per particle
+  gl::Buffer m_members;      // stable grid: each cell's particles in atomic order, uint per particle
 
   gl::Program& reorderPass(std::size_t arrays, bool writePermutation);
   static std::size_t bindBatch(std::span<const ReorderArray> arrays, std::size_t first);
   void scatter(std::span<const ReorderArray> arrays, gl::Buffer* permutation);
   void gather(std::span<const ReorderArray> arrays, gl::Buffer* permutation);
+  // Stable grid: the rank by index (see above) into indexInCell, or as the gather's permutation.
+  void rankWithinCells(gl::Buffer* permutation);
   std::size_t m_count = 0;
 };
 

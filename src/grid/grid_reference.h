@@ -52,4 +52,13 @@ inline std::vector<uint32_t> exclusiveScan(std::span<const uint32_t> values) {
   return out;
 }
 
+// The stable grid's order (GridParams::stable): slot -> particle index, cells in index order and
+// each cell's particles by index, a stable counting sort.
+inline std::vector<uint32_t> stableOrder(const GridShape& g, std::span<const glm::vec4> positions) {
+  const std::vector<uint32_t> counts = histogram(g, positions);
+  std::vector<uint32_t> next = exclusiveScan(counts), order(positions.size());
+  for (std::size_t i = 0; i < positions.size(); ++i) order[next[cellOf(g, glm::vec3(positions[i]))]++] = uint32_t(i);
+  return order;
+}
+
 }  // namespace tidepool::grid::reference

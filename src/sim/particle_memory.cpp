@@ -1,7 +1,9 @@
 #include "sim/particle_memory.h"
 
 #include <algorithm>
-#include <string>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
 
 #include "base/error.h"
 #include "gl/gl.h"
@@ -9,26 +11,62 @@
 namespace tidepool::sim {
 namespace {
 std::string mib(std::size_t bytes) { return std::to_string((bytes + (1 << 20) - 1) >> 20) + " MiB"; }
+
+// The tighter of the current fit and `count` under `limit`.
+void tighten(ParticleFit& fit, std::size_t count, const std::string& limit) {
+  if (count < fit.count) fit = {count, limit};
+}
 }  // namespace
 
-void checkParticleMemory(const char* model, const char* particles, std::size_t capacity, std::size_t maxParticles,
-                         std::size_t arrayBytes, std::size_t totalBytes) {
-  const std::string head = std::string(model) + ": " + std::to_string(capacity) + " " + particles;
-  if (capacity > maxParticles)
-    throw Error(head + " requested, more than max_particles = " + std::to_string(maxParticles));
-  const std::size_t bytes = std::max<std::size_t>(capacity, 1) * arrayBytes;
+std::optional<std::size_t> freeGpuBytes() {
+  if (GLAD_GL_NVX_gpu_memory_info) {
+    GLint kb = 0;
+    glGetIntegerv(GL_GPU_MEMORY_INFO_CURRENT_AVAILABLE_VIDMEM_NVX, &kb);
+    if (kb > 0) return std::size_t(kb) * 1024;
+  }
+  if (GLAD_GL_ATI_meminfo) {
+    GLint kb[4] = {};  // free, largest free block, free auxiliary, largest auxiliary block (KiB)
+    glGetIntegerv(GL_VBO_FREE_MEMORY_ATI, kb);
+    if (kb[0] > 0) return std::size_t(kb[0]) * 1024;
+  }
+  return std::nullopt;
+}
+
+std::optional<std::size_t> freeHostBytes() {
+  std::ifstream meminfo("/proc/meminfo");
+  std::string key;
+  std::size_t kb = 0;
+  std::string unit;
+  while (meminfo >> key >> kb >> unit)
+    if (key == "MemAvailable:") return kb * 1024;
+  return std::nullopt;
+}
+
+ParticleFit particlesThatFit(const ParticleCost& cost, const char* particle) {
+  ParticleFit fit{cost.maxParticles, "max_particles = " + std::to_string(cost.maxParticles)};
   GLint64 maxBlock = 0;
   glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
-  if (bytes > std::size_t(maxBlock))
-    throw Error(head + " need " + mib(bytes) + " per state array, more than this GPU's storage-buffer limit of " +
-                mib(std::size_t(maxBlock)));
-  if (GLAD_GL_NVX_gpu_memory_info) {
-    GLint freeKb = 0;
-    glGetIntegerv(GL_GPU_MEMORY_INFO_CURRENT_AVAILABLE_VIDMEM_NVX, &freeKb);
-    if (freeKb > 0 && totalBytes > std::size_t(freeKb) * 1024)
-      throw Error(head + " need about " + mib(totalBytes) + ", but only " + mib(std::size_t(freeKb) * 1024) +
-                  " of GPU memory are free");
-  }
+  if (cost.arrayBytes)
+    tighten(fit, std::size_t(maxBlock) / cost.arrayBytes,
+            "the storage-block limit, " + mib(std::size_t(maxBlock)) + " per array of " +
+                std::to_string(cost.arrayBytes) + " B per " + particle);
+  if (const std::optional<std::size_t> gpu = freeGpuBytes(); gpu && cost.gpuBytes)
+    tighten(fit, *gpu / cost.gpuBytes,
+            "free GPU memory, " + mib(*gpu) + " at " + std::to_string(cost.gpuBytes) + " B per " + particle);
+  if (const std::optional<std::size_t> host = freeHostBytes(); host && cost.hostBytes)
+    tighten(fit, *host / cost.hostBytes,
+            "free host memory, " + mib(*host) + " at " + std::to_string(cost.hostBytes) + " B per " + particle);
+  return fit;
+}
+
+void checkParticleRequest(const char* model, const char* particle, double requested, const std::string& what,
+                          const ParticleCost& cost, const std::string& fix) {
+  const ParticleFit fit = particlesThatFit(cost, particle);
+  if (!(requested > double(fit.count)) && std::isfinite(requested)) return;
+  char count[64];
+  std::snprintf(count, sizeof count, requested < 1e6 ? "%.0f" : "%.3g", requested);
+  throw Error(std::string(model) + ": " + what + " would make about " + count + " " + particle + "s, but at most " +
+              std::to_string(fit.count) + " fit (" + fit.limit + "): " + fix);
 }
 
 }  // namespace tidepool::sim

@@ -60,6 +60,19 @@ std::vector<glm::vec4> makePositions(const GridParams& p, std::size_t n, float o
   return out;
 }
 
+// The stable grid's permutation against the CPU's stable order, cell by cell: a cell of more than
+// GRID_STABLE_MAX_CELL particles keeps its atomic order, so there only the members must agree.
+void expectStableOrder(const std::vector<uint32_t>& got, const std::vector<uint32_t>& want,
+                       const std::vector<uint32_t>& starts) {
+  ASSERT_EQ(got.size(), want.size());
+  for (std::size_t cell = 0; cell + 1 < starts.size(); ++cell) {
+    std::vector<uint32_t> a(got.begin() + starts[cell], got.begin() + starts[cell + 1]),
+        b(want.begin() + starts[cell], want.begin() + starts[cell + 1]);
+    if (a.size() > GRID_STABLE_MAX_CELL) std::sort(a.begin(), a.end());
+    ASSERT_EQ(a, b) << "cell " << cell << " of " << a.size() << " particles";
+  }
+}
+
 // Builds, reorders positions + two more arrays (two reorder batches) with the permutation, and
 // checks everything against the CPU.
 void checkGrid(gl::ShaderLibrary& shaders, const GridParams& params, const std::vector<glm::vec4>& pos) {
@@ -102,6 +115,8 @@ void checkGrid(gl::ShaderLibrary& shaders, const GridParams& params, const std::
     ASSERT_EQ(sortedVel[j], vel[i]);
     ASSERT_EQ(sortedExtra[j], extra[i]);
   }
+  // A stable grid is a stable counting sort: a cell's particles by index (but for crowded cells).
+  if (params.stable) expectStableOrder(permutation, reference::stableOrder(shape, pos), starts);
   // indexInCell is a slot in the cell: distinct 0..count-1 per cell.
   const std::vector<uint32_t> slots = grid.indexInCell().read<uint32_t>(n);
   for (std::size_t i = 0; i < n; ++i)
@@ -194,10 +209,7 @@ TEST_P(GridModes, ExampleFromTheHeader) {
   EXPECT_EQ(grid.cellCount().readAll<uint32_t>(), (std::vector<uint32_t>{2, 0, 3, 1}));
   EXPECT_EQ(grid.cellStart().readAll<uint32_t>(), (std::vector<uint32_t>{0, 2, 2, 5, 6}));
   grid.reorder(posBuf, {{&posBuf, &posOut}}, &perm);
-  std::vector<uint32_t> p = perm.readAll<uint32_t>();
-  std::sort(p.begin(), p.begin() + 2);  // the order inside a cell may vary
-  std::sort(p.begin() + 2, p.begin() + 5);
-  EXPECT_EQ(p, (std::vector<uint32_t>{1, 5, 0, 2, 4, 3}));
+  EXPECT_EQ(perm.readAll<uint32_t>(), (std::vector<uint32_t>{1, 5, 0, 2, 4, 3})) << "stable: by index in a cell";
 }
 
 TEST_P(GridModes, Random3DWithBordersAndOutsiders) {
@@ -216,6 +228,24 @@ TEST_P(GridModes, ManyParticlesPerCellAndManyCells) {
   checkGrid(shaders(), wide, makePositions(wide, 8 * 24 * 24 * 24, 0.0f, 3));
   const GridParams tiny = withMode({.domainMin = {0, 0, 0}, .domainMax = {1, 1, 1}, .cellSize = 0.5f});
   checkGrid(shaders(), tiny, makePositions(tiny, 5000, 0.1f, 4));
+}
+
+// Without the stable order the cells are the same and any order within a cell is allowed.
+TEST_P(GridModes, AtomicOrderWhenNotStable) {
+  GridParams params = withMode({.domainMin = {-1, 0, 2}, .domainMax = {3, 2, 3.5f}, .cellSize = 0.25f});
+  params.stable = false;
+  checkGrid(shaders(), params, makePositions(params, 20000, 0.5f, 21));
+}
+
+// A cell of more than GRID_STABLE_MAX_CELL particles keeps its atomic order (still a valid
+// reorder); the cells beside it are ranked as usual.
+TEST_P(GridModes, CrowdedCellKeepsAValidOrder) {
+  const GridParams params = withMode({.domainMin = {0, 0, 0}, .domainMax = {4, 4, 4}, .cellSize = 1.0f});
+  std::vector<glm::vec4> pos = makePositions(params, 6000, 0.0f, 22);
+  for (std::size_t i = 0; i < 3000; i += 2) pos[i] = glm::vec4(0.5f, 0.5f, 0.5f, float(i));
+  ASSERT_GT(reference::histogram(UniformGrid(shaders(), params).shape(), pos)[0], uint32_t(GRID_STABLE_MAX_CELL))
+      << "cell 0 must be crowded";
+  checkGrid(shaders(), params, pos);
 }
 
 TEST_P(GridModes, NonMultipleCellSizeRoundsDimsUp) {
@@ -344,9 +374,12 @@ TEST_F(Grid, CountsAndStartsAreDeterministic) {
 TEST_F(Grid, MemoryIsReported) {
   UniformGrid grid(shaders(), {.domainMin = {0, 0, 0}, .domainMax = {64, 64, 64}, .cellSize = 1.0f}, 1000);
   const std::size_t cells = 64 * 64 * 64;
-  // counts + starts + indexInCell + scan levels (64 + 1 block sums)
+  // counts + starts + indexInCell + the stable order's members + scan levels (64 + 1 block sums)
   EXPECT_EQ(grid.memoryBytes(),
-            cells * 4 + (cells + 1) * 4 + 1000 * 4 + (cells / PrefixScan::Config{}.block() + 1) * 4);
+            cells * 4 + (cells + 1) * 4 + 2 * 1000 * 4 + (cells / PrefixScan::Config{}.block() + 1) * 4);
+  UniformGrid atomic(shaders(), {.domainMin = {0, 0, 0}, .domainMax = {64, 64, 64}, .cellSize = 1.0f, .stable = false},
+                     1000);
+  EXPECT_EQ(atomic.memoryBytes(), grid.memoryBytes() - 1000 * 4);
   // The gather keeps its own permutation (uint per particle) when the caller gives none.
   UniformGrid gather(
       shaders(), {.domainMin = {0, 0, 0}, .domainMax = {64, 64, 64}, .cellSize = 1.0f, .reorder = ReorderMode::Gather},

@@ -22,10 +22,20 @@ Balls::Balls(gl::ShaderLibrary& shaders, const Params& params)
   reset();
 }
 
+// GPU: positions and velocities twice, the accelerations (vec4 each), the permutation, the
+// grid's index in cell, stable members and gather permutation (a word each). Host: the initial
+// water (vec4) and its lattice (vec3).
+sim::ParticleCost Balls::cost() const {
+  return {.maxParticles = std::size_t(m_params.maxParticles),
+          .arrayBytes = sizeof(glm::vec4),
+          .gpuBytes = 5 * sizeof(glm::vec4) + 4 * sizeof(GLuint),
+          .hostBytes = sizeof(glm::vec4) + sizeof(glm::vec3)};
+}
+
 void Balls::allocate(std::size_t count, std::size_t capacity) {
   const std::size_t bytes = std::max<std::size_t>(capacity, 1) * sizeof(glm::vec4);
-  sim::checkParticleMemory("balls", "balls", capacity, std::size_t(m_params.maxParticles), sizeof(glm::vec4),
-                           bytes * 5 + capacity * 8);
+  sim::checkParticleRequest("balls", "ball", double(capacity), std::to_string(capacity) + " balls requested", cost(),
+                            "lower it or raise max_particles");
   m_count = count;
   if (m_capacity == capacity && m_pos[0].size() == bytes) return;
   for (int k = 0; k < 2; ++k) {
@@ -42,7 +52,15 @@ void Balls::reset() {
   const Params p = resolved(m_params);
   if (glm::any(glm::lessThanEqual(p.domainMax, p.domainMin)))
     throw Error("balls: domain_max must exceed domain_min on every axis");
-  m_obstacles.build(m_params.obstacles, p.radius);  // first: a bad mesh fails before anything is allocated
+  // First the count, from the fill's volume: a radius that asks for 10^11 balls fails here, with
+  // the numbers, before any array is built.
+  char radius[48];
+  std::snprintf(radius, sizeof radius, "particles.radius = %g m", double(p.radius));
+  sim::checkParticleRequest(
+      "balls", "ball",
+      estimatedWater(m_params) + (m_params.tap ? m_params.tapMax : 0) + obstacleBound(m_params.obstacles, p.radius),
+      radius, cost(), "raise particles.radius or shrink the fill and the obstacles");
+  m_obstacles.build(m_params.obstacles, p.radius);  // a bad mesh fails before anything is allocated
   m_radius = p.radius;
   m_obstacles.place(m_params.obstacles, 0.0, p.domainMin, p.domainMax);
   const std::vector<glm::vec4> water =
@@ -57,8 +75,11 @@ void Balls::reset() {
   m_posIndex = m_velIndex = 0;
   m_time = 0;
   m_accValid = false;
-  grid::GridParams gp{
-      .domainMin = p.domainMin, .domainMax = p.domainMax, .cellSize = 2.0f * m_radius, .reorder = p.gridReorder};
+  grid::GridParams gp{.domainMin = p.domainMin,
+                      .domainMax = p.domainMax,
+                      .cellSize = 2.0f * m_radius,
+                      .reorder = p.gridReorder,
+                      .stable = p.deterministic};
   m_grid = std::make_unique<grid::UniformGrid>(m_shaders, gp, m_capacity);
   m_obstacleError.clear();
   updateWalls();

@@ -22,6 +22,7 @@
 #include "sim/balls/balls_params.h"
 #include "sim/balls/obstacles.h"
 #include "sim/model.h"
+#include "sim/particle_memory.h"
 #include "sim/particle_water.h"
 
 namespace tidepool::balls {
@@ -98,6 +99,7 @@ class Balls final : public sim::Model, public sim::ParticleWater {
   };
 
   void allocate(std::size_t count, std::size_t capacity);
+  sim::ParticleCost cost() const;  // per ball, for the checks before allocating (sim/particle_memory.h)
   // The passes of stepOnce(), in order.
   void updateWalls();       // the piston's wall positions and velocities at t
   void rebuildObstacles();  // obstacles added, removed or reshaped since the last step

@@ -53,6 +53,40 @@ Params resolved(const Params& p) {
   return q;
 }
 
+double fillVolume(const Params& p) {
+  if (p.fill != Fill::Block && p.fill != Fill::Slab) return 0;
+  glm::vec3 lo = glm::max(p.fillMin, p.domainMin), hi = glm::min(p.fillMax, p.domainMax);
+  if (p.fill == Fill::Slab) {
+    lo = p.domainMin;
+    hi = glm::vec3(p.domainMax.x, p.domainMax.y, std::min(p.domainMax.z, p.domainMin.z + p.slabHeight));
+  }
+  const glm::dvec3 extent = glm::max(glm::dvec3(hi - lo), glm::dvec3(0.0));
+  return extent.x * extent.y * extent.z;
+}
+
+namespace {
+double hcpCell(double r) { return 4.0 * std::sqrt(2.0) * r * r * r; }  // volume per ball of the HCP lattice
+}  // namespace
+
+double estimatedWater(const Params& input) {
+  const Params p = resolved(input);
+  switch (p.fill) {
+    case Fill::Random: return p.randomCount;
+    case Fill::Lattice: return p.latticeCount;
+    case Fill::None: return 0;
+    default: return fillVolume(p) / hcpCell(p.radius);
+  }
+}
+
+double obstacleBound(const std::vector<ObstacleParams>& obstacles, float radius) {
+  double n = 0;
+  for (const ObstacleParams& o : obstacles) {
+    const glm::dvec3 box = 2.0 * glm::dvec3(glm::abs(o.size)) + 2.0 * double(radius);
+    n += box.x * box.y * box.z / hcpCell(radius);
+  }
+  return n;
+}
+
 std::vector<glm::vec4> waterParticles(const Params& input, const std::function<bool(glm::vec3)>& occupied) {
   const Params p = resolved(input);
   const float r = p.radius;

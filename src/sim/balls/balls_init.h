@@ -42,6 +42,12 @@ class Obstacle {
   std::unique_ptr<MeshSolid> m_mesh;
 };
 
+// Before anything is built (sim/particle_memory.h checks these against what fits):
+double fillVolume(const Params& p);      // m³ of a block or slab fill's region (0 for other fills)
+double estimatedWater(const Params& p);  // balls a fill makes: volume / (4√2 r³) on the HCP lattice
+// An upper bound on the obstacles' particles: each obstacle's box (2 size per axis) filled solid.
+double obstacleBound(const std::vector<ObstacleParams>& obstacles, float radius);
+
 // Water particles (vec4: position m, w = 1), none where `occupied` (inside an obstacle, say).
 // Deterministic: same parameters, same particles.
 std::vector<glm::vec4> waterParticles(const Params& p, const std::function<bool(glm::vec3)>& occupied);

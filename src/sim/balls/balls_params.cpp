@@ -22,6 +22,8 @@ void visit(ParamVisitor& v, Params& p) {
     v.choice({"grid_reorder", "Grid reorder",
               "scatter (one pass, random writes) or gather (permutation, then coalesced writes): same result"},
              p.gridReorder, grid::kReorderModeNames);
+    v.flag({"deterministic", "Deterministic", "bit-identical runs: the grid orders each cell's balls by index"},
+           p.deterministic);
     v.real({"contact_time", "Contact time", "t_c of spring-dashpot, s"}, p.contactTime, 1e-6f, 10.0f);
     v.real({"restitution", "Restitution", "e of spring-dashpot"}, p.restitution, 0.01f, 1.0f);
     v.real({"friction", "Friction", "tangential Coulomb coefficient (spring-dashpot)"}, p.friction, 0.0f, 2.0f);

@@ -77,6 +77,9 @@ struct Params {
   // How each step's grid moves the balls; gather is 4% faster per step at 4M-16M on the H100
   // (docs/PERFORMANCE.md §4) and equal at 1M.
   grid::ReorderMode gridReorder = grid::ReorderMode::Gather;
+  // Reproducible runs: the grid orders each cell's balls by index (grid/grid.h, GridParams::stable),
+  // so every step sums contacts in the same order and a run is bit-identical on the same GPU.
+  bool deterministic = true;
   // spring-dashpot: k and gamma from the contact duration and restitution (per unit effective mass)
   float contactTime = 0.01f;  // t_c, s
   float restitution = 0.5f;   // e

@@ -142,6 +142,7 @@ void Balls::sortByCell(gl::GpuProfiler* profiler) {
   }
   auto scope = timed(profiler, "balls.reorder");
   m_grid->setReorderMode(m_params.gridReorder);  // may change while running
+  m_grid->setStable(m_params.deterministic);
   m_grid->reorder(m_pos[p], {{&m_pos[p], &m_pos[1 - p]}, {&m_vel[v], &m_vel[1 - v]}},
                   m_trackOrder ? &m_permutation : nullptr);
 }

@@ -17,16 +17,9 @@ constexpr std::size_t kMaxCheckpointParticles = std::size_t(4) << 20;  // larger
 
 // Particles a fill would make, from its volume (one per d³), before making them.
 double estimatedParticles(const balls::Params& w, float spacing) {
-  if (w.fill == balls::Fill::None) return 0;
-  if (w.fill == balls::Fill::Random) return w.randomCount;
-  if (w.fill == balls::Fill::Lattice) return w.latticeCount;
-  glm::vec3 lo = glm::max(w.fillMin, w.domainMin), hi = glm::min(w.fillMax, w.domainMax);
-  if (w.fill == balls::Fill::Slab) {
-    lo = w.domainMin;
-    hi = glm::vec3(w.domainMax.x, w.domainMax.y, std::min(w.domainMax.z, w.domainMin.z + w.slabHeight));
-  }
-  const glm::dvec3 extent = glm::max(glm::dvec3(hi - lo), glm::dvec3(0.0));
-  return extent.x * extent.y * extent.z / std::pow(double(spacing), 3.0);
+  if (w.fill == balls::Fill::None || w.fill == balls::Fill::Random || w.fill == balls::Fill::Lattice)
+    return balls::estimatedWater(w);
+  return balls::fillVolume(w) / std::pow(double(spacing), 3.0);
 }
 
 // The initial water: blocks and slabs on a cubic lattice that tiles the region exactly (particle
@@ -73,12 +66,21 @@ void Fluid::calibrate() {
   m_obstacles.refreshVolumes();
 }
 
+// GPU: x, v, p, two scratch arrays (vec4 each), λ (two floats), the permutation, the grid's index
+// in cell, stable members and gather permutation (a word each), the neighbour list when on.
+// Host: the initial water (vec4) and the lattice it is cut from (vec4).
+sim::ParticleCost Fluid::cost() const {
+  const std::size_t list = m_params.neighbourList ? (FLUID_MAX_NEIGHBOURS + 1) * sizeof(GLuint) : 0;
+  return {.maxParticles = std::size_t(m_water.maxParticles),
+          .arrayBytes = std::max(sizeof(glm::vec4), list),
+          .gpuBytes = 5 * sizeof(glm::vec4) + 2 * sizeof(float) + 4 * sizeof(GLuint) + list,
+          .hostBytes = 2 * sizeof(glm::vec4)};
+}
+
 void Fluid::allocate(std::size_t count, std::size_t capacity) {
   const std::size_t n = std::max<std::size_t>(capacity, 1), bytes = n * sizeof(glm::vec4);
-  // x, v, p, two scratch, λ, the permutation, the grid's index in cell and permutation, the list
-  const std::size_t list = m_params.neighbourList ? (FLUID_MAX_NEIGHBOURS + 1) * sizeof(GLuint) : 0;
-  sim::checkParticleMemory("fluid", "particles", capacity, std::size_t(m_water.maxParticles),
-                           std::max(sizeof(glm::vec4), list), bytes * 5 + n * (8 + 4 + 8 + list));
+  sim::checkParticleRequest("fluid", "particle", double(capacity), std::to_string(capacity) + " particles requested",
+                            cost(), "lower it or raise max_particles");
   m_count = count;
   if (m_capacity == capacity && m_x.size() == bytes) return;
   m_x = gl::Buffer(bytes);
@@ -96,14 +98,14 @@ void Fluid::reset() {
   const balls::Params& w = m_water;
   if (glm::any(glm::lessThanEqual(w.domainMax, w.domainMin)))
     throw Error("fluid: domain_max must exceed domain_min on every axis");
-  if (const double n = estimatedParticles(w, m_params.spacing); n > double(w.maxParticles)) {
-    char what[240];
-    std::snprintf(what, sizeof what,
-                  "fluid: particles.spacing = %g m would make about %.3g particles, more than max_particles = %d "
-                  "(raise spacing or max_particles)",
-                  double(m_params.spacing), n, w.maxParticles);
-    throw Error(what);
-  }
+  // First the count, from the fill's volume: a spacing that asks for 10^11 particles fails here,
+  // with the numbers, before any array is built.
+  char spacing[48];
+  std::snprintf(spacing, sizeof spacing, "particles.spacing = %g m", double(m_params.spacing));
+  sim::checkParticleRequest(
+      "fluid", "particle",
+      estimatedParticles(w, m_params.spacing) + (w.tap ? w.tapMax : 0) + balls::obstacleBound(w.obstacles, w.radius),
+      spacing, cost(), "raise particles.spacing or shrink the fill and the obstacles");
   m_restSpacing = m_restSmoothing = 0;
   calibrate();
   m_obstacles.build(w.obstacles, w.radius);  // first: a bad mesh fails before anything is allocated
@@ -118,8 +120,11 @@ void Fluid::reset() {
   m_v.fillZero();
   m_time = 0;
   m_steps = 0;
-  grid::GridParams gp{
-      .domainMin = w.domainMin, .domainMax = w.domainMax, .cellSize = cellSize(), .reorder = w.gridReorder};
+  grid::GridParams gp{.domainMin = w.domainMin,
+                      .domainMax = w.domainMax,
+                      .cellSize = cellSize(),
+                      .reorder = w.gridReorder,
+                      .stable = w.deterministic};
   m_grid = std::make_unique<grid::UniformGrid>(m_shaders, gp, m_capacity);
   m_obstacleError.clear();
   m_walls = balls::wallsAt(w, 0.0);

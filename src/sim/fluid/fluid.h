@@ -29,6 +29,7 @@
 #include "sim/fluid/fluid_params.h"
 #include "sim/fluid/rest_lattice.h"
 #include "sim/model.h"
+#include "sim/particle_memory.h"
 #include "sim/particle_water.h"
 
 namespace tidepool::fluid {
@@ -91,7 +92,8 @@ class Fluid final : public sim::Model, public sim::ParticleWater {
   void resume(const sim::StateStamp& good) override;
 
   void allocate(std::size_t count, std::size_t capacity);
-  void calibrate();  // the rest lattice for the current spacing and smoothing
+  sim::ParticleCost cost() const;  // per particle, for the checks before allocating (sim/particle_memory.h)
+  void calibrate();                // the rest lattice for the current spacing and smoothing
   float cellSize() const { return float(m_params.h()) / float(m_params.reach()); }  // of the neighbour grid
   // The passes of stepOnce(), in order.
   void emitFromTap();

@@ -115,6 +115,7 @@ void Fluid::sortByCell(gl::GpuProfiler* profiler) {
   }
   auto scope = timed(profiler, "fluid.reorder");
   m_grid->setReorderMode(m_water.gridReorder);
+  m_grid->setStable(m_water.deterministic);
   m_grid->reorder(m_pred, {{&m_pred, &m_scratch[0]}, {&m_x, &m_scratch[1]}}, m_trackOrder ? &m_permutation : nullptr);
   std::swap(m_pred, m_scratch[0]);
   std::swap(m_x, m_scratch[1]);

@@ -7,6 +7,7 @@
 
 #include "base/error.h"
 #include "life/bindings.glsl"
+#include "sim/particle_memory.h"
 
 namespace tidepool::life {
 namespace {
@@ -22,6 +23,7 @@ Life::Life(gl::ShaderLibrary& shaders, const Rules& rules, const Params& params)
 
 void Life::setRules(const Rules& rules, bool respawn) {
   validateRules(rules, "life rules");
+  checkCount(rules, m_grid ? m_storage : m_params.storage);  // before anything changes
   const bool sameShape = m_grid && rules.particleCount == m_rules.particleCount && rules.size == m_rules.size &&
                          rules.speciesCount() == m_rules.speciesCount();
   const bool newGrid = !m_grid || rules.size != m_rules.size || rules.maxRadius() != m_rules.maxRadius();
@@ -34,6 +36,19 @@ void Life::setRules(const Rules& rules, bool respawn) {
     reset();
   }
   m_needAccel = true;
+}
+
+void Life::checkCount(const Rules& rules, Storage storage) {
+  // Positions and velocities twice, ids when tracked (layout elements each), the grid's words;
+  // the host builds the initial positions and velocities as vec4.
+  const std::size_t element = storage == Storage::Fp16 ? sizeof(glm::uvec2) : sizeof(glm::vec4);
+  sim::checkParticleRequest("life", "particle", double(rules.particleCount),
+                            "particle_count = " + std::to_string(rules.particleCount),
+                            {.maxParticles = std::size_t(kMaxParticles),
+                             .arrayBytes = element,
+                             .gpuBytes = 6 * element + 3 * sizeof(GLuint),
+                             .hostBytes = 2 * sizeof(glm::vec4)},
+                            "lower particle_count (or use storage fp16: half the bytes)");
 }
 
 void Life::makeGrid() {
@@ -168,6 +183,7 @@ void Life::push(glm::vec2 point, glm::vec2 velocity, float radius) {
 }
 
 void Life::sortByCell() {
+  m_grid->setStable(m_params.deterministic);
   m_grid->build(m_pos[m_current], m_count);
   const int next = 1 - m_current;
   if (m_trackIds)

@@ -91,6 +91,8 @@ class Life final : public sim::Model {
   void resume(const sim::StateStamp& good) override;
 
   void allocate();
+  // Throws when the count does not fit in `storage` (sim/particle_memory.h).
+  static void checkCount(const Rules& rules, Storage storage);
   void makeGrid();
   void applyStorage();  // converts the state when params().storage changed
   void resetIds();

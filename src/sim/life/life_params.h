@@ -19,6 +19,7 @@ struct Params {
   Storage storage = Storage::Fp32;            // fp16: packHalf2x16 positions and velocities, half the bytes
   float maxDt = 0.025f;                       // s: dt = min(maxDt, frame seconds), one step per frame
   float pushStrength = 20.0f;                 // mouse brush: velocity added per unit of drag (the article's 20)
+  bool deterministic = true;                  // bit-identical runs: the grid orders each cell by index
 };
 
 inline void visit(ParamVisitor& v, Params& p) {
@@ -30,6 +31,8 @@ inline void visit(ParamVisitor& v, Params& p) {
            p.storage, kStorageNames);
   v.real({"max_dt", "Max dt", "s; each frame advances min(max dt, frame time) in one step"}, p.maxDt, 1e-4f, 0.1f);
   v.real({"push_strength", "Push strength", "mouse brush: velocity per unit of drag"}, p.pushStrength, 0.0f, 200.0f);
+  v.flag({"deterministic", "Deterministic", "bit-identical runs: the grid orders each cell's particles by index"},
+         p.deterministic);
 }
 
 }  // namespace tidepool::life
