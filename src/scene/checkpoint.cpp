@@ -35,12 +35,18 @@ void restoreCheckpoint(Stage& stage, const Scene& scene, const io::Checkpoint& c
     throw Error(where + " is a " + c.model + " checkpoint" + (c.scene.empty() ? "" : " (of " + c.scene + ")") +
                 ", the scene runs " + scene.model);
   sim::StateLoader loader(c, where);
-  stage.visitSetupState(loader);
-  readParams(
-      io::parseJson(c.params, where + ": params"), [&](ParamVisitor& v) { stage.visitParams(v); }, where + ": params");
-  stage.reset();
-  stage.visitState(loader);
-  loader.finish();
+  try {
+    stage.visitSetupState(loader);
+    readParams(
+        io::parseJson(c.params, where + ": params"), [&](ParamVisitor& v) { stage.visitParams(v); },
+        where + ": params");
+    stage.reset();
+    stage.visitState(loader);
+    loader.finish();
+  } catch (const Error& e) {  // what a model built at these parameters says (too many particles, ...)
+    if (std::string(e.what()).rfind(where, 0) == 0) throw;
+    throw Error(where + ": " + e.what());
+  }
 }
 
 void loadCheckpoint(Stage& stage, const Scene& scene, const std::filesystem::path& file) {

@@ -252,6 +252,13 @@ TEST_F(Checkpoints, EntriesThatDoNotFitTheSceneAreRefusedNamingThem) {
     c.params = p.dump();
   });
   EXPECT_EQ(params.rfind("run.ckpt: params.engine.dt = 0 is out of range", 0), 0u) << params;
+  const std::string tooMany = refusal([&](io::Checkpoint& c) {  // the model itself refuses these parameters
+    io::Json p = io::parseJson(c.params, "p");
+    p["particles"]["max_particles"] = 10;
+    c.params = p.dump();
+  });
+  EXPECT_EQ(tooMany.rfind("run.ckpt: balls: ", 0), 0u) << tooMany;
+  EXPECT_NE(tooMany.find("more than max_particles = 10"), std::string::npos) << tooMany;
   EXPECT_NE(refusal([&](io::Checkpoint& c) { c.params = "{"; }).find("run.ckpt: params:1:2: malformed JSON"),
             std::string::npos);
 }
