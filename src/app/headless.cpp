@@ -7,6 +7,7 @@
 #include "app/progress.h"
 #include "base/log.h"
 #include "io/video.h"
+#include "scene/checkpoint.h"
 #include "scene/scene.h"
 
 namespace tidepool {
@@ -30,6 +31,15 @@ int renderHeadless(const RenderJob& job) {
   auto context = gl::createHeadlessContext({job.backend, job.debugGl});
   gl::ShaderLibrary shaders(gl::ShaderLibrary::findRoot());
   auto stage = createStage(scene, shaders);
+  if (!job.resume.empty()) {
+    loadCheckpoint(*stage, scene, job.resume);
+    log::info("resumed from " + job.resume.string() + " at t = " + std::to_string(stage->simTime()) + " s");
+  }
+  const bool checkpoints = job.saveLast || !job.checkpoint.empty() || job.checkpointEvery > 0;
+  const std::filesystem::path checkpoint =
+      job.checkpoint.empty() ? defaultCheckpointPath(job.outDir, job.video, scene.file) : job.checkpoint;
+  CheckpointSchedule schedule(job.checkpointEvery, stage->simTime());
+  int saved = 0;
   RenderTarget target(width, height);
   gl::GpuProfiler profiler;
   FrameWriter writer;
@@ -40,6 +50,10 @@ int renderHeadless(const RenderJob& job) {
     profiler.beginFrame();
     if (i > 0) stage->step(1.0 / scene.clip.fps, profiler);
     if (const auto d = stage->divergence()) throw Error(d->message);
+    if (checkpoints && i + 1 < frames && schedule.due(stage->simTime())) {
+      saveCheckpoint(*stage, scene, checkpoint);
+      ++saved;
+    }
     stage->render(target, profiler);
     profiler.endFrame();
     std::vector<std::uint8_t> pixels = target.readRgba8();
@@ -54,6 +68,11 @@ int renderHeadless(const RenderJob& job) {
   writer.finish();
   stage->flushChecks();
   if (const auto d = stage->divergence()) throw Error(d->message);
+  if (checkpoints) {
+    saveCheckpoint(*stage, scene, checkpoint);
+    log::info("wrote checkpoint " + checkpoint.string() + " at t = " + std::to_string(stage->simTime()) + " s (" +
+              std::to_string(saved + 1) + " saved)");
+  }
   if (video) video->close();
   progress.finish();
   if (!job.outDir.empty())

@@ -17,6 +17,10 @@ struct RenderJob {
   std::optional<int> width, height;  // default: the scene's clip size
   std::filesystem::path outDir;      // PNG frames (frame_00000.png ...); empty: none
   std::filesystem::path video;       // .mp4 through ffmpeg; empty: none
+  std::filesystem::path resume;      // a checkpoint to start from (scene/checkpoint.h); empty: the scene's start
+  std::filesystem::path checkpoint;  // where checkpoints go; empty: defaultCheckpointPath when any is asked for
+  double checkpointEvery = 0;        // simulated s between checkpoints (0: none but the last)
+  bool saveLast = false;             // a checkpoint after the last frame (implied by checkpoint or checkpointEvery)
   gl::Backend backend = gl::Backend::Auto;
   bool debugGl = false;
   bool progress = true;

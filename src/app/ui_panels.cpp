@@ -72,7 +72,8 @@ void autoChoicePanel(const AutoChoice& c) {
 }
 }  // namespace
 
-bool drawMainPanel(const Scene& scene, Stage& stage, const gl::GpuProfiler& profiler, UiState& ui) {
+bool drawMainPanel(const Scene& scene, Stage& stage, const gl::GpuProfiler& profiler, UiState& ui,
+                   float& autosaveEvery) {
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSizeConstraints(ImVec2(340, 0), ImVec2(520, 10000));
   ImGui::Begin("tidepool", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
@@ -91,6 +92,11 @@ bool drawMainPanel(const Scene& scene, Stage& stage, const gl::GpuProfiler& prof
   if (ImGui::Button("Reload shaders (F5)")) ui.reloadRequested = true;
   ImGui::SameLine();
   if (ImGui::Button("Screenshot (F12)")) ui.screenshotRequested = true;
+  if (ImGui::Button("Save checkpoint (F6)")) ui.checkpointRequested = true;
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(90);
+  ImGui::DragFloat("autosave every (sim s)", &autosaveEvery, 0.1f, 0.0f, 3600.0f, autosaveEvery > 0 ? "%.2f" : "off");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("a checkpoint at every multiple of this simulated time; 0: off");
   if (const std::string share = stage.shareText(); !share.empty()) {
     ImGui::SameLine();
     if (ImGui::Button("Copy share code")) {

@@ -26,13 +26,16 @@ struct UiState {
   bool screenshotRequested = false;
   bool showUi = true;
   bool recoverRequested = false;
-  std::string divergence;  // the model\'s blow-up report; the run is paused while it is set
-  std::string message;     // last action's result (reload, screenshot)
+  bool checkpointRequested = false;  // F6
+  std::string divergence;            // the model\'s blow-up report; the run is paused while it is set
+  std::string message;               // last action's result (reload, screenshot)
   bool messageIsError = false;
   History history;
 };
 
 // Main panel: scene, timing table, transport buttons, parameters. Returns true when parameters changed.
-bool drawMainPanel(const Scene& scene, Stage& stage, const gl::GpuProfiler& profiler, UiState& ui);
+// `autosaveEvery`: the checkpoint autosave period, simulated s (0: off).
+bool drawMainPanel(const Scene& scene, Stage& stage, const gl::GpuProfiler& profiler, UiState& ui,
+                   float& autosaveEvery);
 
 }  // namespace tidepool

@@ -11,6 +11,7 @@
 #include <ctime>
 
 #include "app/ui_panels.h"
+#include "app/window_checkpoints.h"
 #include "base/log.h"
 #include "gl/context_window.h"
 #include "io/png.h"
@@ -81,6 +82,8 @@ int runWindow(const WindowJob& job) {
   GLFWwindow* window = context.window();
   gl::ShaderLibrary shaders(gl::ShaderLibrary::findRoot());
   auto stage = createStage(scene, shaders);
+  if (!job.resume.empty()) loadCheckpoint(*stage, scene, job.resume);
+  WindowCheckpoints checkpoints(scene, job.checkpoint, job.autosaveEvery, stage->simTime());
 
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
@@ -112,6 +115,7 @@ int runWindow(const WindowJob& job) {
     if (keys.pressed(GLFW_KEY_PERIOD)) ui.stepOnce = true;
     if (keys.pressed(GLFW_KEY_R)) ui.resetRequested = true;
     if (keys.pressed(GLFW_KEY_F5)) ui.reloadRequested = true;
+    if (keys.pressed(GLFW_KEY_F6)) ui.checkpointRequested = true;
     if (keys.pressed(GLFW_KEY_F12)) ui.screenshotRequested = true;
     if (keys.pressed(GLFW_KEY_H)) ui.showUi = !ui.showUi;
     for (int k = GLFW_KEY_A; k <= GLFW_KEY_Z; ++k)  // other letters are the model's (life: C, N, S)
@@ -120,7 +124,7 @@ int runWindow(const WindowJob& job) {
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
-    if (ui.showUi) drawMainPanel(scene, *stage, profiler, ui);
+    if (ui.showUi) drawMainPanel(scene, *stage, profiler, ui, checkpoints.autosaveEvery());
 
     if (ui.reloadRequested) {
       ui.reloadRequested = false;
@@ -167,6 +171,10 @@ int runWindow(const WindowJob& job) {
       ui.divergence = d->message;
       log::error(d->message);
       ui.paused = true;  // say which method failed at which dt, and wait for the user
+    }
+    if (auto saved = checkpoints.afterFrame(*stage, std::exchange(ui.checkpointRequested, false))) {
+      ui.message = saved->message;
+      ui.messageIsError = saved->error;
     }
 
     glBindFramebuffer(GL_READ_FRAMEBUFFER, target.framebuffer().id());

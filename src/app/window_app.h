@@ -1,5 +1,6 @@
 // The interactive window: GLFW + Dear ImGui, live parameter tuning, per-pass GPU times.
-// Keys: Space pause, . single step, R reset, F5 reload shaders, F12 screenshot, H hide UI, Esc quit.
+// Keys: Space pause, . single step, R reset, F5 reload shaders, F6 save a checkpoint, F12 screenshot,
+// H hide UI, Esc quit.
 // Other letters go to the stage (Stage::key; life: C centre, N new rules, S save rules).
 #pragma once
 
@@ -18,7 +19,10 @@ struct WindowJob {
   std::filesystem::path screenshot;  // written after the last frame when set
   bool debugGl = false;
   bool vsync = true;
-  io::Json paramOverrides;  // scene params set from the command line (--rules)
+  io::Json paramOverrides;           // scene params set from the command line (--rules)
+  std::filesystem::path resume;      // a checkpoint to start from; empty: the scene's start
+  std::filesystem::path checkpoint;  // where F6 and the autosave write; empty: "<scene name>.ckpt" here
+  double autosaveEvery = 0;          // simulated s between autosaves (0: off; the panel edits it)
 };
 
 int runWindow(const WindowJob& job);  // exit code; throws Error

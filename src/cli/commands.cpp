@@ -22,6 +22,27 @@ constexpr bool kDebugBuild = false;
 constexpr bool kDebugBuild = true;
 #endif
 
+// --resume, --checkpoint and --checkpoint-every, alike for render and run.
+struct CheckpointOpts {
+  std::string resume, checkpoint;
+  double every = 0;
+};
+
+void addCheckpointOptions(CLI::App* sub, CheckpointOpts& o) {
+  sub->add_option("--resume", o.resume, "start from this checkpoint (a file --checkpoint wrote) instead of t = 0");
+  sub->add_option("--checkpoint", o.checkpoint,
+                  "write checkpoints to this file (atomically; default: beside the output, e.g. out/dam.ckpt)");
+  sub->add_option("--checkpoint-every", o.every,
+                  "save a checkpoint every this many simulated seconds, and after the last frame")
+      ->check(CLI::PositiveNumber);
+}
+
+void applyCheckpointOptions(const CheckpointOpts& o, RenderJob& job) {
+  job.resume = o.resume;
+  job.checkpoint = o.checkpoint;
+  job.checkpointEvery = o.every;
+}
+
 }  // namespace
 
 void parseSize(const std::string& text, int& width, int& height) {
@@ -57,6 +78,7 @@ Command addRender(CLI::App& app) {
     std::string size, backend = "auto";
     bool quiet = false;
     std::string rules;
+    CheckpointOpts checkpoints;
   };
   auto o = std::make_shared<Opts>();
   sub->add_option("scene", o->job.scene, "scene file, or a name from assets/scenes (e.g. blank)")->required();
@@ -69,8 +91,10 @@ Command addRender(CLI::App& app) {
   sub->add_flag("--debug-gl", o->job.debugGl, "log KHR_debug driver messages");
   sub->add_flag("--quiet", o->quiet, "no progress bar");
   sub->add_option("--rules", o->rules, "life: rules JSON file, preset name or share code (sets params.rules)");
+  addCheckpointOptions(sub, o->checkpoints);
   return {sub, [o] {
             RenderJob job = o->job;
+            applyCheckpointOptions(o->checkpoints, job);
             if (o->frames > 0) job.frames = o->frames;
             if (!o->size.empty()) {
               int w = 0, h = 0;
@@ -93,6 +117,7 @@ Command addRun(CLI::App& app) {
     std::string scene = "default", size = "1280x720", backend = "auto", screenshot, out = "out", rules;
     int frames = 0;
     bool noVsync = false, debugGl = false;
+    CheckpointOpts checkpoints;
   };
   auto o = std::make_shared<Opts>();
   sub->add_option("scene", o->scene, "scene file, or a name from assets/scenes (default: default)");
@@ -105,6 +130,7 @@ Command addRun(CLI::App& app) {
   sub->add_flag("--no-vsync", o->noVsync, "render as fast as possible");
   sub->add_option("--rules", o->rules, "life: rules JSON file, preset name or share code (sets params.rules)");
   sub->add_flag("--debug-gl", o->debugGl, "log KHR_debug driver messages");
+  addCheckpointOptions(sub, o->checkpoints);
   return {sub, [o] {
             int w = 0, h = 0;
             parseSize(o->size, w, h);
@@ -114,7 +140,17 @@ Command addRun(CLI::App& app) {
                 backend == gl::Backend::Window || (backend == gl::Backend::Auto && gl::displayAvailable());
             if (window) {
               const bool debugGl = o->debugGl || kDebugBuild;
-              WindowJob job{o->scene, w, h, std::nullopt, o->screenshot, debugGl, !o->noVsync, overrides};
+              WindowJob job{o->scene,
+                            w,
+                            h,
+                            std::nullopt,
+                            o->screenshot,
+                            debugGl,
+                            !o->noVsync,
+                            overrides,
+                            o->checkpoints.resume,
+                            o->checkpoints.checkpoint,
+                            o->checkpoints.every};
               if (o->frames > 0) job.maxFrames = o->frames;
               return runWindow(job);
             }
@@ -127,6 +163,7 @@ Command addRun(CLI::App& app) {
             if (o->frames > 0) job.frames = o->frames;
             job.backend = backend;
             job.debugGl = o->debugGl || kDebugBuild;
+            applyCheckpointOptions(o->checkpoints, job);
             log::info("no display: rendering '" + scene.name + "' headless");
             renderHeadless(job);
             return 0;

@@ -61,6 +61,11 @@ void SwarmRenderer::colorFromImage(const sim::Swarm& swarm, const io::Image& ima
   glMemoryBarrier(GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
+void SwarmRenderer::adoptColors(const sim::Swarm& swarm, gl::Buffer colors) {
+  m_colors = std::move(colors);
+  m_colorCount = swarm.count();
+}
+
 void SwarmRenderer::drawPoints(const sim::Swarm& swarm, const SwarmViewParams& view, glm::vec3 singleColor,
                                bool accumulate) {
   const bool perParticle = view.colorMode == SwarmColorMode::Image && hasColors(swarm);

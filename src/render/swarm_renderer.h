@@ -60,6 +60,7 @@ class SwarmRenderer {
   void colorFromImage(const sim::Swarm& swarm, const io::Image& image);
   bool hasColors(const sim::Swarm& swarm) const { return m_colors && m_colorCount == swarm.count(); }
   const gl::Buffer& colors() const { return m_colors; }
+  void adoptColors(const sim::Swarm& swarm, gl::Buffer colors);  // colours made earlier (a checkpoint's)
 
   // singleColor: the colour used in single mode (the caller resolves hue cycling).
   void render(const sim::Swarm& swarm, const SwarmViewParams& view, glm::vec3 singleColor,

@@ -18,6 +18,10 @@ class BlankStage final : public Stage {
   }
   double simTime() const override { return m_time; }
   std::string status() const override { return "no model: blank scene"; }
+  void visitState(sim::StateVisitor& v) override {
+    std::uint64_t steps = 0;
+    v.clock(m_time, steps);
+  }
 
  private:
   BlankParams m_params;

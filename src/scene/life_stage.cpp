@@ -182,6 +182,28 @@ class LifeStage final : public ModelStage<life::Life> {
   }
   std::string shareText() const override { return m_shareCode; }
 
+  // The refusal the panel shows comes before the parameters: it is one of their keys while set.
+  void visitSetupState(sim::StateVisitor& v) override { v.text("stage.error", m_error, 4096); }
+  // The rules as they run (bit-identical through a share code: they may come from a file, a
+  // drop or edits the setup cannot say), then the model. The setup read back describes them.
+  void visitState(sim::StateVisitor& v) override {
+    std::string code = life::encodeShareCode(m_model.rules());
+    v.text("stage.rules", code, std::size_t(1) << 20);
+    if (v.loading()) {
+      try {
+        const life::Rules rules = life::decodeShareCode(code);
+        life::validateRules(rules, "entry 'stage.rules'");
+        m_model.setRules(rules, true);
+      } catch (const Error& e) {
+        v.fail(std::string("entry 'stage.rules': ") + e.what());
+      }
+      m_shareCode = code;
+      m_applied = m_setup;
+      m_cameraPlaced = false;
+    }
+    ModelStage::visitState(v);
+  }
+
  private:
   // Applies UI edits of the setup: a new seed or species count generates new rules; the box or
   // count respawns; the rest changes the running system.

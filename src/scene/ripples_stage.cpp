@@ -95,6 +95,10 @@ class RipplesStage final : public ModelStage<ripples::Ripples> {
     m_pressed = true;
   }
   std::pair<std::string, double> liveMetric() const override { return {"max |h| (m)", m_model.lastMaxHeight()}; }
+  void visitState(sim::StateVisitor& v) override {
+    ModelStage::visitState(v);
+    v.count("stage.next_drop", m_nextDrop, m_drops.size());  // the scene's drops already made
+  }
 
  private:
   // The UI edits m_view; the views take their copies before drawing.

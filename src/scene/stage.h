@@ -21,6 +21,7 @@
 #include "scene/scene_params.h"
 #include "sim/divergence.h"
 #include "sim/model.h"
+#include "sim/model_state.h"
 
 namespace tidepool {
 
@@ -46,6 +47,13 @@ class Stage {
   virtual std::pair<std::string, double> liveMetric() const { return {"", NAN}; }
   virtual bool recover() { return false; }
   virtual void flushChecks() {}
+
+  // Checkpoints (scene/checkpoint.h): the state beyond the parameters. A save visits
+  // visitSetupState and visitState with a saver; a restore visits visitSetupState (what must be in
+  // place before the parameters are read back: the water stage's running model), reads the
+  // parameters through visitParams, calls reset() and then visits visitState with a loader.
+  virtual void visitSetupState(sim::StateVisitor&) {}
+  virtual void visitState(sim::StateVisitor& v) = 0;  // the model's state and the stage's own
 };
 
 // A stage whose model is a sim::Model (every model but blank): stepping, the clock, the status
@@ -63,6 +71,7 @@ class ModelStage : public Stage {
   std::optional<DivergenceReport> divergence() const override { return m_model.divergence(); }
   bool recover() override { return m_model.recover(); }
   void flushChecks() override { m_model.flushChecks(); }
+  void visitState(sim::StateVisitor& v) override { m_model.visitState(v); }
 
  protected:
   template <class... Args>

@@ -84,6 +84,26 @@ class SwarmStage final : public ModelStage<sim::Swarm> {
     return m_warning.empty() ? m_model.status() : m_model.status() + "\n" + m_warning;
   }
 
+  // The model, the hue clock, and the colours an image gave the particles at their start
+  // positions (they cannot be sampled again from where the particles are now).
+  void visitState(sim::StateVisitor& v) override {
+    ModelStage::visitState(v);
+    v.value("stage.clock", m_clock);
+    bool colored =
+        m_view.colorMode == SwarmColorMode::Image && m_renderer.hasColors(m_model) && m_coloredImage == m_view.image;
+    v.flag("stage.image_colors", colored);
+    if (!colored) return;
+    const std::size_t bytes = m_model.count() * sizeof(std::uint32_t);
+    if (!v.loading()) {
+      v.buffer("stage.colors", const_cast<gl::Buffer&>(m_renderer.colors()), bytes);  // a saver only reads it
+      return;
+    }
+    gl::Buffer colors(bytes);
+    v.buffer("stage.colors", colors, bytes);
+    m_renderer.adoptColors(m_model, std::move(colors));
+    m_coloredImage = m_view.image;
+  }
+
  private:
   // Count and storage changes (UI, scene) re-allocate; a request that does not fit is refused
   // with the message in the status line, keeping the current particles.

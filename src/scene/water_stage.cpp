@@ -6,6 +6,7 @@
 
 #include "io/obj.h"
 #include "render/balls_view.h"
+#include "scene/param_json.h"
 #include "sim/balls/balls.h"
 #include "sim/balls/balls_init.h"
 #include "sim/fluid/fluid.h"
@@ -142,6 +143,38 @@ class WaterStage final : public Stage {
   std::optional<DivergenceReport> divergence() const override { return model().divergence(); }
   bool recover() override { return model().recover(); }
   void flushChecks() override { model().flushChecks(); }
+
+  // Checkpoints: which model runs comes before the parameters (they are that model's keys).
+  void visitSetupState(sim::StateVisitor& v) override {
+    WaterModel running = active();
+    v.choice("stage.water_model", running, kWaterModelNames.size());
+    if (v.loading() && running != active()) {
+      m_choice = running;
+      start(nullptr);
+    }
+  }
+  // The model's state, the statistics' frame phase and values, and the other model's parameters
+  // (what a later switch keeps of them).
+  void visitState(sim::StateVisitor& v) override {
+    model().visitState(v);
+    v.value("stage.frames", m_frames);
+    v.value("stage.balls_stats", m_ballsStats);
+    v.value("stage.fluid_stats", m_fluidStats);
+    const ParamVisit other = [this](ParamVisitor& p) {
+      if (m_balls)
+        fluid::visit(p, m_setup.fluid);
+      else
+        balls::visit(p, m_setup.balls);
+    };
+    std::string json = writeParams(other).dump();
+    v.text("stage.other_model_params", json, std::size_t(1) << 20);
+    if (!v.loading()) return;
+    try {
+      readParams(io::parseJson(json, "stage.other_model_params"), other, "stage.other_model_params");
+    } catch (const Error& e) {
+      v.fail(e.what());
+    }
+  }
 
  private:
   WaterModel active() const { return m_balls ? WaterModel::Balls : WaterModel::Fluid; }

@@ -69,13 +69,41 @@ void DivergenceWatch::frame(Subject& s) {
   start(s, now);
 }
 
-void DivergenceWatch::start(Subject& s, const StateStamp& now) {
-  m_health.fillZero();
+void DivergenceWatch::reduce(Subject& s, std::size_t count, gl::Buffer& words) {
+  words.fillZero();
   gl::Program& kernel = s.healthKernel();
-  kernel.set("uCount", GLuint(now.count));
-  m_health.bindBase(GL_SHADER_STORAGE_BUFFER, HEALTH_BINDING);
-  kernel.dispatchThreads(now.count);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  kernel.set("uCount", GLuint(count));
+  words.bindBase(GL_SHADER_STORAGE_BUFFER, HEALTH_BINDING);
+  kernel.dispatchThreads(count);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+}
+
+std::optional<std::string> DivergenceWatch::checkNow(Subject& s) {
+  const StateStamp now = s.stamp();
+  if (now.count == 0) return std::nullopt;
+  if (!m_healthNow) m_healthNow = gl::Buffer(HEALTH_WORDS * sizeof(std::uint32_t));
+  reduce(s, now.count, m_healthNow);
+  Words w{};
+  m_healthNow.download(w.data(), sizeof w);
+  return s.unhealthy(w);
+}
+
+void DivergenceWatch::visitState(StateVisitor& v) {
+  int frames = m_frames;
+  v.value("watch.frames", frames);
+  if (frames < 0) v.fail("entry 'watch.frames' = " + std::to_string(frames) + " is not a frame count");
+  std::string report = m_report ? m_report->message : "";
+  double reportTime = m_report ? m_report->time : 0.0;
+  v.text("watch.report", report, 4096);
+  v.value("watch.report_time", reportTime);
+  if (!v.loading()) return;
+  restart();
+  m_frames = frames;
+  if (!report.empty()) m_report = DivergenceReport{report, reportTime};
+}
+
+void DivergenceWatch::start(Subject& s, const StateStamp& now) {
+  reduce(s, now.count, m_health);
   // The state this check judges, copied now: the buffers grow to the largest state seen.
   m_pending.stamp = now;
   m_pending.kept = now.count <= m_maxCopied;

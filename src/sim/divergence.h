@@ -25,6 +25,7 @@
 #include "gl/buffer_ops.h"
 #include "gl/program.h"
 #include "gl/shader_library.h"
+#include "sim/model_state.h"
 
 namespace tidepool {
 
@@ -92,6 +93,11 @@ class DivergenceWatch {
   bool recover(Subject& s);  // back to the last good state (see above); false if nothing failed or none was kept
   void restart();            // a new state (reset, upload): forgets the check in flight, the good state, the report
   const std::optional<DivergenceReport>& report() const { return m_report; }
+  // The verdict on the state as it is now, waiting for it (a checkpoint refuses a diverged state).
+  std::optional<std::string> checkNow(Subject& s);
+  // Checkpoints: the frame phase of the checks and the report. Loading starts afresh (nothing in
+  // flight, no good state kept: the first healthy check after it makes one).
+  void visitState(StateVisitor& v);
 
  private:
   // The state buffers copied at one check, and their stamp.
@@ -102,6 +108,7 @@ class DivergenceWatch {
     bool kept = false;  // false: too large to copy
   };
   void start(Subject& s, const StateStamp& now);
+  void reduce(Subject& s, std::size_t count, gl::Buffer& words);  // the health kernel into `words`
   void judge(Subject& s, const Words& words);
   void dropCheck();  // waits out the check in flight without judging it; counts frames from 0
 
@@ -110,7 +117,7 @@ class DivergenceWatch {
   std::size_t m_maxCopied;
   int m_interval;
   int m_frames = 0;
-  gl::Buffer m_health;  // HEALTH_WORDS words
+  gl::Buffer m_health, m_healthNow;  // HEALTH_WORDS words: of the check in flight, of checkNow()
   gl::AsyncReadback m_readback;
   Copy m_pending, m_good;
   bool m_hasGood = false;

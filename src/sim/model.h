@@ -39,15 +39,33 @@ class Model : private DivergenceWatch::Subject {
   bool recover() { return m_watch.recover(*this); }  // last good state, half the time step; false if none
   void flushChecks() { m_watch.flush(*this); }       // waits for the check in flight (end of a headless run)
 
+  // Checkpoints (scene/checkpoint.h): everything a later step reads beyond the parameters — the
+  // watch's phase, the model's own state (visitOwnState: clock, counters, RNG, extra buffers),
+  // then the stateBuffers(). Loading expects the model reset() at the checkpoint's parameters.
+  // Saving first judges the state now and refuses a diverged one (Error), so that a periodic save
+  // never replaces a good checkpoint with a blown-up state.
+  void visitState(StateVisitor& v) {
+    if (!v.loading())
+      if (std::optional<std::string> bad = m_watch.checkNow(*this)) v.fail(std::string(m_name) + " state: " + *bad);
+    m_watch.visitState(v);
+    visitOwnState(v);
+    for (const StateBuffer& b : stateBuffers()) v.buffer((std::string("model.") + b.name).c_str(), *b.buffer, b.bytes);
+  }
+
  protected:
   // `name` words the reports ("balls diverged by ..."); no copies of more than maxCopied elements.
-  Model(gl::ShaderLibrary& shaders, const char* name, std::size_t maxCopied) : m_watch(shaders, name, maxCopied) {}
+  Model(gl::ShaderLibrary& shaders, const char* name, std::size_t maxCopied)
+      : m_name(name), m_watch(shaders, name, maxCopied) {}
   void watch() { m_watch.frame(*this); }      // once per frame, after its steps
   void restartWatch() { m_watch.restart(); }  // a new state (reset, upload): nothing judged yet
+  // The model's state besides its stateBuffers(): the clock first, then counts (checked against
+  // the capacity) before anything sized by them. Loading may reallocate to the parameters' size.
+  virtual void visitOwnState(StateVisitor& v) = 0;
 
  private:
   StateStamp stamp() const final { return {time(), count(), stepCount()}; }
 
+  const char* m_name;
   DivergenceWatch m_watch;
 };
 

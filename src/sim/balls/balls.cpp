@@ -157,6 +157,27 @@ void Balls::resume(const sim::StateStamp& good) {
   m_params.substeps = std::min(m_params.substeps * 2, 1000);  // same simulated time per frame
 }
 
+void Balls::visitOwnState(sim::StateVisitor& v) {
+  std::uint64_t steps = 0;
+  v.clock(m_time, steps);
+  // The capacity bounds what the tap may still add: a model that took over another's particles
+  // (upload) may hold more than its own fill and tap.
+  std::size_t capacity = m_capacity;
+  v.value("model.capacity", capacity);
+  if (v.loading() && capacity != m_capacity) try {
+      allocate(0, capacity);
+      m_acc.fillZero();
+    } catch (const Error& e) {
+      v.fail(std::string("entry 'model.capacity': ") + e.what());
+    }
+  v.count("model.count", m_count, m_capacity);
+  v.count("model.tap_emitted", m_tapEmitted, m_capacity);
+  v.value("model.tap_next_layer", m_tapNextLayer);
+  v.flag("model.acc_valid", m_accValid);
+  if (m_accValid) v.buffer("model.accelerations", m_acc, m_count * sizeof(glm::vec4));
+  if (v.loading()) updateWalls();
+}
+
 std::size_t Balls::bytesPerBall() const {
   if (m_count == 0) return 0;
   const std::size_t own = m_pos[0].size() * 2 + m_vel[0].size() * 2 + m_acc.size() + m_permutation.size();

@@ -90,6 +90,9 @@ class Balls final : public sim::Model, public sim::ParticleWater {
   std::optional<std::string> unhealthy(const sim::DivergenceWatch::Words& words) override;
   std::string method() const override;
   void resume(const sim::StateStamp& good) override;
+  // Checkpoints: the clock, the count and the tap's counters, Verlet's a(x) (obstacle poses and
+  // walls follow from the time and the parameters).
+  void visitOwnState(sim::StateVisitor& v) override;
 
   // What a collide pass does after summing the accelerations (collide.comp).
   enum class Collide {

@@ -203,6 +203,22 @@ void Fluid::resume(const sim::StateStamp& good) {
   m_water = resolvedWater(m_params);
 }
 
+void Fluid::visitOwnState(sim::StateVisitor& v) {
+  v.clock(m_time, m_steps);
+  // The capacity bounds what the tap may still add (see Balls::visitOwnState).
+  std::size_t capacity = m_capacity;
+  v.value("model.capacity", capacity);
+  if (v.loading() && capacity != m_capacity) try {
+      allocate(0, capacity);
+    } catch (const Error& e) {
+      v.fail(std::string("entry 'model.capacity': ") + e.what());
+    }
+  v.count("model.count", m_count, m_capacity);
+  v.count("model.tap_emitted", m_tapEmitted, m_capacity);
+  v.value("model.tap_next_layer", m_tapNextLayer);
+  if (v.loading()) m_walls = balls::wallsAt(m_water, m_time);  // as the last step left them, for the watch
+}
+
 std::size_t Fluid::bytesPerParticle() const {
   if (m_count == 0) return 0;
   const std::size_t own = m_x.size() + m_v.size() + m_pred.size() + m_scratch[0].size() + m_scratch[1].size() +

@@ -90,6 +90,9 @@ class Fluid final : public sim::Model, public sim::ParticleWater {
   std::optional<std::string> unhealthy(const sim::DivergenceWatch::Words& words) override;
   std::string method() const override;
   void resume(const sim::StateStamp& good) override;
+  // Checkpoints: the clock, the count and the tap's counters (obstacle poses and walls follow
+  // from the time and the parameters; λ and the predictions are made anew every step).
+  void visitOwnState(sim::StateVisitor& v) override;
 
   void allocate(std::size_t count, std::size_t capacity);
   sim::ParticleCost cost() const;  // per particle, for the checks before allocating (sim/particle_memory.h)

@@ -309,6 +309,31 @@ void Life::resume(const sim::StateStamp& good) {
   m_lastDt = m_params.maxDt;
 }
 
+void Life::visitOwnState(sim::StateVisitor& v) {
+  v.clock(m_time, m_steps);
+  Storage storage = m_storage;
+  v.choice("model.storage", storage, kStorageNames.size());
+  if (v.loading() && storage != m_storage) {  // the buffers as they were, whatever params().storage says now
+    m_storage = storage;
+    makeGrid();
+    allocate();
+  }
+  std::size_t count = m_count;
+  v.count("model.count", count, m_count);
+  if (count != m_count)
+    v.fail("entry 'model.count' = " + std::to_string(count) + ", the rules have " + std::to_string(m_count) +
+           " particles");
+  v.flag("model.need_accel", m_needAccel);
+  v.value("model.push_point", m_pushPoint);
+  v.value("model.push_velocity", m_pushVelocity);
+  v.value("model.push_radius", m_pushRadius);
+  v.value("model.last_dt", m_lastDt);
+  if (v.loading()) {
+    m_current = 0;
+    if (m_trackIds) resetIds();
+  }
+}
+
 std::uint64_t Life::countCandidatePairs() {
   m_groupPairs.fillZero();
   forcePass(true);

@@ -89,6 +89,9 @@ class Life final : public sim::Model {
   std::optional<std::string> unhealthy(const sim::DivergenceWatch::Words& words) override;
   std::string method() const override;
   void resume(const sim::StateStamp& good) override;
+  // Checkpoints: the clock, the storage of the buffers, whether Verlet's a(x) is in vel.zw, the
+  // brush and the last dt (the rules are the stage's to save).
+  void visitOwnState(sim::StateVisitor& v) override;
 
   void allocate();
   // Throws when the count does not fit in `storage` (sim/particle_memory.h).

@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include <limits>
+#include <sstream>
 
 #include "base/log.h"
 #include "ripples/bindings.glsl"
@@ -161,6 +162,26 @@ void Ripples::resume(const sim::StateStamp& good) {
     m_params.courantTarget *= 0.5f;
   else
     m_params.substeps = std::min(m_params.substeps * 2, 256);
+}
+
+void Ripples::visitOwnState(sim::StateVisitor& v) {
+  if (v.loading() && (m_params.width != m_width || m_params.height != m_height)) allocate();
+  std::uint64_t steps = 0;
+  v.clock(m_time, steps);
+  v.value("model.rain_debt", m_rainDebt);
+  std::ostringstream rng;
+  rng << m_rng;
+  std::string text = rng.str();
+  v.text("model.rng", text, 1 << 16);
+  if (v.loading()) {
+    std::istringstream in(text);
+    in >> m_rng;
+    if (in.fail()) v.fail("entry 'model.rng' is not the state of a Mersenne Twister");
+  }
+  v.value("model.last_dt", m_lastDt);
+  v.value("model.last_substeps", m_lastSubsteps);
+  v.value("model.last_courant", m_lastCourant);
+  v.value("model.last_max_height", m_lastMaxHeight);
 }
 
 void Ripples::touch(float x, float y, float radius, float depth) {

@@ -55,6 +55,8 @@ class Ripples final : public sim::Model {
   std::optional<std::string> unhealthy(const sim::DivergenceWatch::Words& words) override;
   std::string method() const override;
   void resume(const sim::StateStamp& good) override;
+  // Checkpoints: the clock, the rain's debt and random generator, the last step's figures.
+  void visitOwnState(sim::StateVisitor& v) override;
 
   gl::Program& stepProgram();
   void pushBody(double dt);    // the sphere's displacement change over the next step

@@ -219,6 +219,19 @@ std::string Swarm::method() const {
   return method;
 }
 
+void Swarm::visitOwnState(StateVisitor& v) {
+  std::uint64_t steps = 0;
+  v.clock(m_time, steps);
+  v.value("model.aspect", m_aspect);
+  bool mouse = m_mouse.has_value();
+  glm::dvec2 at = m_mouse.value_or(glm::dvec2(0.0));
+  v.flag("model.mouse_held", mouse);
+  v.value("model.mouse", at);
+  m_mouse = mouse ? std::optional<glm::dvec2>(at) : std::nullopt;
+  v.array("model.extra_attractors", m_extra, SWARM_MAX_ATTRACTORS);
+  v.value("model.last_dt", m_lastDt);
+}
+
 void Swarm::resume(const StateStamp& good) {
   m_time = good.time;
   if (m_params.substeps < kMaxSubsteps)

@@ -84,6 +84,8 @@ class Swarm final : public Model {
   std::optional<std::string> unhealthy(const DivergenceWatch::Words& words) override;
   std::string method() const override;
   void resume(const StateStamp& good) override;
+  // Checkpoints: the clock, the aspect, the mouse and the extra attractors, the last dt.
+  void visitOwnState(StateVisitor& v) override;
 
   void allocate(std::size_t count, Storage storage);
   gl::Program& stepProgram() const;

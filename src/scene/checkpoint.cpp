@@ -1,0 +1,79 @@
+#include "scene/checkpoint.h"
+
+#include <cmath>
+#include <limits>
+
+#include "base/error.h"
+#include "scene/param_json.h"
+#include "sim/model_state.h"
+
+namespace tidepool {
+namespace {
+// Simulated times are sums of frame steps (1/30 s ten times is not exactly 1/3): a save is due
+// within this fraction of a period before its time.
+constexpr double kDueSlack = 1e-9;
+}  // namespace
+
+io::Checkpoint captureCheckpoint(Stage& stage, const Scene& scene) {
+  io::Checkpoint c;
+  c.model = scene.model;
+  c.scene = scene.file.string();
+  sim::StateSaver saver(c);
+  stage.visitSetupState(saver);
+  c.params = writeParams([&](ParamVisitor& v) { stage.visitParams(v); }).dump();
+  stage.visitState(saver);
+  return c;
+}
+
+void saveCheckpoint(Stage& stage, const Scene& scene, const std::filesystem::path& file) {
+  const io::Checkpoint c = captureCheckpoint(stage, scene);
+  io::writeFileAtomically(file, io::encodeCheckpoint(c));
+}
+
+void restoreCheckpoint(Stage& stage, const Scene& scene, const io::Checkpoint& c, const std::string& where) {
+  if (c.model != scene.model)
+    throw Error(where + " is a " + c.model + " checkpoint" + (c.scene.empty() ? "" : " (of " + c.scene + ")") +
+                ", the scene runs " + scene.model);
+  sim::StateLoader loader(c, where);
+  try {
+    stage.visitSetupState(loader);
+    readParams(
+        io::parseJson(c.params, where + ": params"), [&](ParamVisitor& v) { stage.visitParams(v); },
+        where + ": params");
+    stage.reset();
+    stage.visitState(loader);
+    loader.finish();
+  } catch (const Error& e) {  // what a model built at these parameters says (too many particles, ...)
+    if (std::string(e.what()).rfind(where, 0) == 0) throw;
+    throw Error(where + ": " + e.what());
+  }
+}
+
+void loadCheckpoint(Stage& stage, const Scene& scene, const std::filesystem::path& file) {
+  restoreCheckpoint(stage, scene, io::readCheckpointFile(file), file.string());
+}
+
+void CheckpointSchedule::reset(double every, double time) {
+  m_every = every > 0 && std::isfinite(every) ? every : 0;
+  m_next =
+      m_every > 0 ? (std::floor(time / m_every + kDueSlack) + 1) * m_every : std::numeric_limits<double>::infinity();
+}
+
+bool CheckpointSchedule::due(double time) {
+  if (m_every <= 0 || time < m_next - kDueSlack * m_every) return false;
+  reset(m_every, time);
+  return true;
+}
+
+std::filesystem::path defaultCheckpointPath(const std::filesystem::path& outDir, const std::filesystem::path& video,
+                                            const std::filesystem::path& sceneFile) {
+  if (!outDir.empty()) {
+    std::filesystem::path dir = outDir;
+    if (!dir.has_filename()) dir = dir.parent_path();  // "out/dam/" -> "out/dam"
+    return dir.string() + ".ckpt";
+  }
+  if (!video.empty()) return std::filesystem::path(video).replace_extension(".ckpt");
+  return sceneFile.stem().string() + ".ckpt";
+}
+
+}  // namespace tidepool

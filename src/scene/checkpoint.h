@@ -1,0 +1,55 @@
+// Checkpoints of a running scene: the stage's parameters as they are now (JSON, so live edits
+// survive) and all the state a later step reads (Stage::visitState: the model's clock, counters,
+// RNG and GPU buffers, the divergence watch's phase, the stage's own), in the versioned file of
+// io/checkpoint_file.h, written atomically. Restoring into a fresh stage of the same scene and
+// stepping on equals the uninterrupted run bit for bit.
+//
+//   saveCheckpoint(*stage, scene, "run.ckpt");          // after a frame
+//   auto fresh = createStage(scene, shaders);
+//   loadCheckpoint(*fresh, scene, "run.ckpt");          // throws Error "run.ckpt: ..." naming the problem
+//
+// Periodic saves (`--checkpoint-every`, the window's autosave) follow a CheckpointSchedule.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "io/checkpoint_file.h"
+#include "scene/scene.h"
+#include "scene/stage.h"
+
+namespace tidepool {
+
+// The checkpoint of `stage`, a stage of `scene`. Throws Error when the model's state is diverged.
+io::Checkpoint captureCheckpoint(Stage& stage, const Scene& scene);
+// captureCheckpoint, written atomically to `file` (a previous checkpoint there stays whole until
+// the new one is complete). Throws Error.
+void saveCheckpoint(Stage& stage, const Scene& scene, const std::filesystem::path& file);
+
+// Puts `checkpoint` into `stage`, a freshly created stage of `scene`: its model must be the
+// scene's; its parameters override the scene file's; every entry must fit the state at those
+// parameters. Errors start with `where` (the file). After a failure the stage is half restored:
+// reset it or make a new one.
+void restoreCheckpoint(Stage& stage, const Scene& scene, const io::Checkpoint& checkpoint, const std::string& where);
+void loadCheckpoint(Stage& stage, const Scene& scene, const std::filesystem::path& file);  // read, then restore
+
+// When periodic checkpoints are due: at every multiple of `every` simulated seconds (0: never),
+// counted from t = 0 so that a resumed run keeps the cadence of the run it continues.
+class CheckpointSchedule {
+ public:
+  explicit CheckpointSchedule(double every = 0, double startTime = 0) { reset(every, startTime); }
+  void reset(double every, double time);  // a new period (the window's parameter), from `time`
+  bool due(double time);                  // true once per multiple of `every` reached; advances to the next
+  double every() const { return m_every; }
+  double next() const { return m_next; }  // simulated s of the next save (infinity: off)
+
+ private:
+  double m_every = 0, m_next = 0;
+};
+
+// Where checkpoints go when no --checkpoint path is given: beside the output, "out/dam" ->
+// "out/dam.ckpt", "clip.mp4" -> "clip.ckpt"; with neither, "<scene name>.ckpt" here.
+std::filesystem::path defaultCheckpointPath(const std::filesystem::path& outDir, const std::filesystem::path& video,
+                                            const std::filesystem::path& sceneFile);
+
+}  // namespace tidepool

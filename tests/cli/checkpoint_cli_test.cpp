@@ -1,0 +1,140 @@
+// Checkpoints through the program: render 41 frames straight, or 21 with a checkpoint and 21 more
+// resumed from it, and get the same state and the same last image; periodic checkpoints beside
+// the output; bad checkpoints refused in one line; the window's autosave and --resume.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "io/checkpoint_file.h"
+#include "io/png.h"
+#include "support/gl_test.h"
+#include "support/one_line_error.h"
+
+using namespace tidepool;
+using test::runTidepool;
+
+namespace {
+
+// Rain (a random generator), a scheduled drop after the split and a moving sphere: state that is
+// not in the height buffer alone.
+const char* kRipples = R"({"name": "r", "model": "ripples", "params": {"width": 48, "height": 32,
+  "touch": {"rain": 15}, "sphere": {"enabled": true}, "drops": [{"time": 0.9, "x": 0.5, "y": 0.5}]},
+  "clip": {"fps": 30, "width": 64, "height": 40}})";
+
+std::map<std::string, std::vector<std::uint8_t>> buffersOf(const std::filesystem::path& file) {
+  std::map<std::string, std::vector<std::uint8_t>> out;
+  for (const io::CheckpointEntry& e : io::readCheckpointFile(file).entries)
+    if (e.name != "watch.frames") out[e.name] = e.bytes;
+  return out;
+}
+
+void render(const std::vector<std::string>& args) {
+  std::vector<std::string> all = {"render"};
+  all.insert(all.end(), args.begin(), args.end());
+  all.push_back("--quiet");
+  const auto r = runTidepool(all);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+}
+
+}  // namespace
+
+TEST(CheckpointCli, ResumedRenderEqualsTheStraightOne) {
+  test::TempDir dir;
+  dir.write("r.json", kRipples);
+  const std::string scene = (dir / "r.json").string();
+  render({scene, "--frames", "41", "--out", (dir / "straight").string(), "--checkpoint", (dir / "s.ckpt").string()});
+  render({scene, "--frames", "21", "--out", (dir / "first").string(), "--checkpoint", (dir / "half.ckpt").string()});
+  render({scene, "--resume", (dir / "half.ckpt").string(), "--frames", "21", "--out", (dir / "second").string(),
+          "--checkpoint", (dir / "end.ckpt").string()});
+  EXPECT_EQ(io::readCheckpointFile(dir / "s.ckpt").time, io::readCheckpointFile(dir / "end.ckpt").time);
+  EXPECT_TRUE(buffersOf(dir / "s.ckpt") == buffersOf(dir / "end.ckpt"));
+  EXPECT_FALSE(buffersOf(dir / "half.ckpt") == buffersOf(dir / "end.ckpt"));
+  // Frame 0 of a resumed render shows the restored state; its last frame is the straight run's.
+  EXPECT_EQ(io::readPng(dir / "straight/frame_00040.png").rgba, io::readPng(dir / "second/frame_00020.png").rgba);
+  EXPECT_EQ(io::readPng(dir / "straight/frame_00020.png").rgba, io::readPng(dir / "second/frame_00000.png").rgba);
+}
+
+TEST(CheckpointCli, CheckpointEverySavesBesideTheOutputAndAfterTheLastFrame) {
+  test::TempDir dir;
+  dir.write("r.json", kRipples);
+  const auto r = runTidepool({"render", (dir / "r.json").string(), "--frames", "31", "--out", (dir / "out").string(),
+                              "--checkpoint-every", "0.25", "--quiet"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("wrote checkpoint " + (dir / "out.ckpt").string() + " at t = 1.0"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("(4 saved)"), std::string::npos) << r.err;  // 0.25, 0.5, 0.75 s and the end
+  EXPECT_NEAR(io::readCheckpointFile(dir / "out.ckpt").time, 1.0, 1e-9);
+  EXPECT_FALSE(std::filesystem::exists(io::temporaryPath(dir / "out.ckpt")));
+  test::expectOneLineError({"render", "blank", "--out", (dir / "b").string(), "--checkpoint-every", "0"},
+                           "--checkpoint-every", 2);
+}
+
+TEST(CheckpointCli, BadCheckpointsAreOneLineErrors) {
+  test::TempDir dir;
+  dir.write("r.json", kRipples);
+  dir.write("s.json", R"({"model": "swarm", "params": {"particles": 1000}})");
+  const std::string out = (dir / "o").string();
+  test::expectOneLineError({"render", "blank", "--out", out, "--resume", (dir / "none.ckpt").string()},
+                           "checkpoint not found: '" + (dir / "none.ckpt").string() + "'");
+  render({(dir / "r.json").string(), "--frames", "3", "--out", out, "--checkpoint", (dir / "r.ckpt").string()});
+  test::expectOneLineError({"render", (dir / "s.json").string(), "--out", out, "--resume", (dir / "r.ckpt").string()},
+                           (dir / "r.ckpt").string() + " is a ripples checkpoint (of " + (dir / "r.json").string() +
+                               "), the scene runs swarm");
+  std::ifstream in(dir / "r.ckpt", std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  dir.write("cut.ckpt", bytes.substr(0, 1000));
+  test::expectOneLineError({"render", (dir / "r.json").string(), "--out", out, "--resume", (dir / "cut.ckpt").string()},
+                           "cut.ckpt: truncated at byte 1000 of " + std::to_string(bytes.size()));
+  bytes[bytes.size() / 2] ^= 0x10;
+  dir.write("flip.ckpt", bytes);
+  test::expectOneLineError(
+      {"render", (dir / "r.json").string(), "--out", out, "--resume", (dir / "flip.ckpt").string()},
+      "flip.ckpt: checksum mismatch (payload corrupt");
+  bytes[8] = 2;
+  dir.write("v2.ckpt", bytes);
+  test::expectOneLineError({"render", (dir / "r.json").string(), "--out", out, "--resume", (dir / "v2.ckpt").string()},
+                           "v2.ckpt: format version 2, this build reads 1");
+}
+
+TEST(CheckpointCli, RunWithoutADisplayResumesAndCheckpoints) {
+  test::TempDir dir;
+  dir.write("r.json", kRipples);
+  render({(dir / "r.json").string(), "--frames", "5", "--out", (dir / "a").string(), "--checkpoint",
+          (dir / "a.ckpt").string()});
+  const auto r = runTidepool({"run", (dir / "r.json").string(), "--frames", "5", "--out", (dir / "run").string(),
+                              "--resume", (dir / "a.ckpt").string(), "--checkpoint", (dir / "b.ckpt").string()},
+                             {"DISPLAY=", "WAYLAND_DISPLAY="});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("resumed from " + (dir / "a.ckpt").string()), std::string::npos) << r.err;
+  EXPECT_NEAR(io::readCheckpointFile(dir / "b.ckpt").time, 8.0 / 30, 1e-9);
+}
+
+TEST(CheckpointCli, TheWindowAutosavesAndResumesUnderXvfb) {
+  ASSERT_EQ(test::runProcess({"sh", "-c", "command -v xvfb-run"}).exitCode, 0) << "xvfb-run is needed";
+  test::TempDir dir;
+  dir.write("r.json", kRipples);
+  const std::string ckpt = (dir / "w.ckpt").string();
+  const std::vector<std::string> window = {"xvfb-run",
+                                           "-a",
+                                           "-s",
+                                           "-screen 0 640x480x24",
+                                           TIDEPOOL_EXE,
+                                           "run",
+                                           (dir / "r.json").string(),
+                                           "--backend",
+                                           "window",
+                                           "--size",
+                                           "320x240"};
+  auto args = window;
+  for (const char* a : {"--frames", "40", "--checkpoint-every", "0.25", "--checkpoint"}) args.push_back(a);
+  args.push_back(ckpt);
+  auto r = test::runProcess(args);
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  // 40 frames of 1/60 s: autosaves at 0.25 and 0.5 s.
+  EXPECT_NE(r.err.find("autosaved " + ckpt + " at t = 0.250 s"), std::string::npos) << r.err;
+  EXPECT_NEAR(io::readCheckpointFile(ckpt).time, 0.5, 1e-9);
+  args = window;
+  for (const char* a : {"--frames", "2", "--resume"}) args.push_back(a);
+  args.push_back(ckpt);
+  r = test::runProcess(args);
+  EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
+}
