@@ -66,7 +66,8 @@ TEST_F(BadDrop, SwarmKeepsItsImageAndParticles) {
   test::TempDir dir;
   dir.write("text.png", "not a png at all");
   io::writePng(dir / "good.png", io::Image{2, 2, std::vector<std::uint8_t>(16, 200)});
-  std::string truncated(std::istreambuf_iterator<char>(std::ifstream(dir / "good.png", std::ios::binary)), {});
+  std::ifstream good(dir / "good.png", std::ios::binary);
+  const std::string truncated(std::istreambuf_iterator<char>(good), {});
   dir.write("truncated.png", truncated.substr(0, truncated.size() / 2));
   auto stage = stageOf(R"({"model": "swarm", "params": {"particles": 4000}})", shaders());
   gl::GpuProfiler profiler;
