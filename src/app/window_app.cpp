@@ -153,8 +153,10 @@ int runWindow(const WindowJob& job) {
     }
     stage->input(readInput(window, lastCursor, g_scroll));
     for (const std::string& path : std::exchange(g_dropped, {})) {
-      ui.messageIsError = !stage->dropFile(path);
-      ui.message = (ui.messageIsError ? "this model takes no files: " : "dropped ") + path;
+      const std::string refused = stage->dropFile(path);
+      ui.messageIsError = !refused.empty();
+      ui.message = refused.empty() ? "dropped " + path : refused;
+      if (!refused.empty()) log::error(refused);
     }
 
     context.framebufferSize(fbw, fbh);

@@ -30,7 +30,8 @@ void GpuProfiler::harvest(Slot& slot) {
   // Passes issued several times in a frame are summed.
   std::vector<Pass> next;
   for (const auto& [name, ms] : frame.passes) {
-    auto it = std::find_if(next.begin(), next.end(), [&](const Pass& p) { return p.name == name; });
+    // An init-capture: clang 14 (the fuzz build) cannot capture a structured binding implicitly.
+    auto it = std::find_if(next.begin(), next.end(), [&n = name](const Pass& p) { return p.name == n; });
     if (it == next.end())
       next.push_back({name, ms, ms});
     else

@@ -2,44 +2,146 @@
 
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include "base/error.h"
 
 namespace tidepool::io {
+namespace {
 
-std::string readTextFile(const std::filesystem::path& path) {
+// 1-based line and column of byte `offset` of `text`.
+std::string lineColumn(const std::string& text, std::size_t offset) {
+  int line = 1, column = 1;
+  for (std::size_t i = 0; i < std::min(offset, text.size()); ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else
+      ++column;
+  }
+  return std::to_string(line) + ":" + std::to_string(column);
+}
+
+// nlohmann's parser keeps its own stack, but copying, comparing and dumping a value recurse once
+// per level: refuse deep nesting before parsing, at the bracket that goes too deep.
+void checkDepth(const std::string& text, const std::string& name) {
+  int depth = 0;
+  bool inString = false, escaped = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (inString) {
+      if (escaped)
+        escaped = false;
+      else if (c == '\\')
+        escaped = true;
+      else if (c == '"')
+        inString = false;
+    } else if (c == '"') {
+      inString = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > kMaxJsonDepth)
+        throw Error(name + ":" + lineColumn(text, i) + ": JSON nested deeper than " + std::to_string(kMaxJsonDepth) +
+                    " levels");
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+}
+
+}  // namespace
+
+std::string printable(std::string_view text, std::size_t max) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (out.size() >= max) return out + "...";
+    const unsigned char c = static_cast<unsigned char>(text[i]);
+    if (c < 0x20 || c == 0x7f) {
+      static const char hex[] = "0123456789abcdef";
+      out += std::string("\\x") + hex[c >> 4] + hex[c & 15];
+    } else {
+      out += char(c);
+    }
+  }
+  return out;
+}
+
+std::string excerpt(const Json& value, std::size_t max) {
+  // Strings were valid UTF-8 when parsed; replace keeps a value built in code from throwing here.
+  return printable(value.dump(-1, ' ', false, Json::error_handler_t::replace), max);
+}
+
+std::string byteSize(std::uintmax_t bytes) {
+  if (bytes < kMiB) return std::to_string(bytes) + " bytes";
+  std::ostringstream o;
+  o.precision(bytes % kMiB == 0 ? 0 : 1);
+  o << std::fixed << double(bytes) / double(kMiB) << " MiB";
+  return o.str();
+}
+
+std::string readFileLimited(const std::filesystem::path& path, std::uintmax_t maxBytes, const char* kind) {
+  namespace fs = std::filesystem;
   std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw Error("file not found: '" + path.string() + "'");
-  if (std::filesystem::is_directory(path, ec)) throw Error("'" + path.string() + "' is a directory, not a file");
+  const fs::file_status status = fs::status(path, ec);
+  if (!fs::exists(status)) throw Error("file not found: '" + path.string() + "'");
+  if (fs::is_directory(status)) throw Error("'" + path.string() + "' is a directory, not a file");
+  if (!fs::is_regular_file(status))
+    throw Error("'" + path.string() + "' is not a regular file (a device, pipe or socket): give " + kind);
+  const std::uintmax_t size = fs::file_size(path, ec);
+  const auto tooLarge = [&](const std::string& size) {
+    return Error("'" + path.string() + "' is " + size + ", larger than the " + byteSize(maxBytes) + " allowed for " +
+                 kind);
+  };
+  if (!ec && size > maxBytes) throw tooLarge(byteSize(size));
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error("cannot read '" + path.string() + "': permission denied or unreadable");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+  // Reads in pieces, stopping one piece past the limit: a file that grows while it is read (or
+  // whose size was unknown) is still refused.
+  std::string text;
+  if (!ec) text.reserve(std::size_t(size));
+  std::vector<char> piece(64 * 1024);
+  while (in) {
+    in.read(piece.data(), std::streamsize(piece.size()));
+    text.append(piece.data(), std::size_t(in.gcount()));
+    if (text.size() > maxBytes) throw tooLarge("more than that");
+  }
+  if (in.bad()) throw Error("cannot read '" + path.string() + "': read error");
+  return text;
+}
+
+std::string readTextFile(const std::filesystem::path& path) {
+  return readFileLimited(path, kMaxTextFileBytes, "a text file");
 }
 
 Json parseJson(const std::string& text, const std::string& name) {
+  if (text.size() > kMaxJsonFileBytes)
+    throw Error(name + ": " + byteSize(text.size()) + " of JSON, larger than the " + byteSize(kMaxJsonFileBytes) +
+                " allowed");
+  checkDepth(text, name);
   try {
     return Json::parse(text);
   } catch (const Json::parse_error& e) {
     // Line and column of the byte where parsing stopped (1-based).
     const std::size_t end = std::min<std::size_t>(e.byte == 0 ? 0 : e.byte - 1, text.size());
-    int line = 1, column = 1;
-    for (std::size_t i = 0; i < end; ++i) {
-      if (text[i] == '\n') {
-        ++line;
-        column = 1;
-      } else
-        ++column;
-    }
     std::string what = e.what();
     const std::size_t colon = what.find(": ", what.find("parse error"));
     if (colon != std::string::npos) what = what.substr(colon + 2);
-    throw Error(name + ":" + std::to_string(line) + ":" + std::to_string(column) + ": malformed JSON: " + what);
+    throw Error(name + ":" + lineColumn(text, end) + ": malformed JSON: " + printable(what, 200));
+  } catch (const Json::exception& e) {
+    // A number too large for a double ("number overflow parsing '1e999'") has no byte offset:
+    // the place is where its text first appears.
+    std::string what = e.what();
+    what = what.substr(what.find(']') + std::min<std::size_t>(2, what.size() - what.find(']')));
+    std::size_t at = std::string::npos;
+    if (const std::size_t q = what.find('\''); q != std::string::npos)
+      at = text.find(what.substr(q + 1, what.find('\'', q + 1) - q - 1));
+    throw Error(name + (at == std::string::npos ? "" : ":" + lineColumn(text, at)) +
+                ": malformed JSON: " + printable(what, 200));
   }
 }
 
-Json readJsonFile(const std::filesystem::path& path) { return parseJson(readTextFile(path), path.string()); }
+Json readJsonFile(const std::filesystem::path& path) {
+  return parseJson(readFileLimited(path, kMaxJsonFileBytes, "a JSON file"), path.string());
+}
 
 void writeJsonFile(const std::filesystem::path& path, const Json& json) {
   std::ofstream out(path);

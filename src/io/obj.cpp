@@ -10,17 +10,22 @@
 #include "base/error.h"
 #include "io/assets.h"
 #include "io/json.h"
+#include "io/limits.h"
 
 namespace tidepool::io {
 namespace {
+
+// Blanks between tokens: spaces, tabs, and the carriage returns, vertical tabs and form feeds
+// that old or odd exporters leave mid-line.
+bool blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
 std::vector<std::string_view> tokens(std::string_view line) {
   std::vector<std::string_view> out;
   std::size_t i = 0;
   while (i < line.size()) {
-    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    while (i < line.size() && blank(line[i])) ++i;
     const std::size_t start = i;
-    while (i < line.size() && line[i] != ' ' && line[i] != '\t') ++i;
+    while (i < line.size() && !blank(line[i])) ++i;
     if (i > start) out.push_back(line.substr(start, i - start));
   }
   return out;
@@ -39,7 +44,7 @@ class Parser {
     const char* first = text.data() + (!text.empty() && text[0] == '+' ? 1 : 0);
     const auto [end, ec] = std::from_chars(first, text.data() + text.size(), value);
     if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(value))
-      fail("bad number '" + std::string(text) + "' in " + what);
+      fail("bad number '" + printable(text) + "' in " + what);
     return value;
   }
 
@@ -48,12 +53,14 @@ class Parser {
     const char* first = text.data() + (!text.empty() && text[0] == '+' ? 1 : 0);
     const auto [end, ec] = std::from_chars(first, text.data() + text.size(), value);
     if (text.empty() || ec != std::errc() || end != text.data() + text.size())
-      fail("bad index '" + std::string(text) + "' in " + what);
+      fail("bad index '" + printable(text) + "' in " + what);
     return value;
   }
 
   void vertex(const std::vector<std::string_view>& t) {
     if (t.size() < 4) fail("a vertex needs x y z ('v 0 1 0')");
+    if (m_mesh.vertices.size() >= kMaxObjVertices)
+      fail("more than " + std::to_string(kMaxObjVertices) + " vertices, the most a mesh may have");
     m_mesh.vertices.emplace_back(number(t[1], "vertex"), number(t[2], "vertex"), number(t[3], "vertex"));
   }
 
@@ -67,7 +74,7 @@ class Parser {
       if (slash == std::string_view::npos) break;
       from = slash + 1;
     }
-    if (parts.size() > 3) fail("bad face corner '" + std::string(text) + "' (v, v/vt, v/vt/vn or v//vn)");
+    if (parts.size() > 3) fail("bad face corner '" + printable(text) + "' (v, v/vt, v/vt/vn or v//vn)");
     for (std::size_t k = 1; k < parts.size(); ++k)
       if (!parts[k].empty()) integer(parts[k], "face");
     const long index = integer(parts[0], "face");
@@ -84,7 +91,10 @@ class Parser {
     for (std::size_t i = 1; i < t.size(); ++i) v.push_back(corner(t[i]));
     for (std::size_t i = 1; i + 1 < v.size(); ++i) {  // fan from the first corner
       const glm::uvec3 tri(v[0], v[i], v[i + 1]);
-      if (tri.x != tri.y && tri.y != tri.z && tri.z != tri.x) m_mesh.triangles.push_back(tri);
+      if (tri.x == tri.y || tri.y == tri.z || tri.z == tri.x) continue;
+      if (m_mesh.triangles.size() >= kMaxObjTriangles)
+        fail("more than " + std::to_string(kMaxObjTriangles) + " triangles, the most a mesh may have");
+      m_mesh.triangles.push_back(tri);
     }
   }
 
@@ -95,7 +105,6 @@ class Parser {
       ++m_line;
       std::string_view view(line);
       view = view.substr(0, view.find('#'));
-      if (!view.empty() && view.back() == '\r') view.remove_suffix(1);
       const std::vector<std::string_view> t = tokens(view);
       if (t.empty()) continue;
       if (t[0] == "v")
@@ -132,9 +141,16 @@ glm::vec3 TriangleMesh::boundsMax() const {
   return hi;
 }
 
-TriangleMesh parseObj(const std::string& text, const std::string& name) { return Parser(name).parse(text); }
+TriangleMesh parseObj(const std::string& text, const std::string& name) {
+  if (text.size() > kMaxObjFileBytes)
+    throw Error(name + ": " + byteSize(text.size()) + ", larger than the " + byteSize(kMaxObjFileBytes) +
+                " allowed for an OBJ mesh");
+  return Parser(name).parse(text);
+}
 
-TriangleMesh readObj(const std::filesystem::path& path) { return parseObj(readTextFile(path), path.string()); }
+TriangleMesh readObj(const std::filesystem::path& path) {
+  return parseObj(readFileLimited(path, kMaxObjFileBytes, "an OBJ mesh"), path.string());
+}
 
 EdgeCheck checkClosed(const TriangleMesh& mesh) {
   // Weld vertices at equal positions, then count the triangles on each undirected edge.

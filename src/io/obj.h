@@ -7,6 +7,7 @@
 //   f 1 2 3            # also f 1/1 2/2 3/3, f 1/1/1 2/2/1 3/3/1, f 1//1 2//1 3//1, f -3 -2 -1
 //
 // Errors are one line naming the file and line: "cube.obj:7: vertex index 9 out of range (8 defined so far)".
+// Files over kMaxObjFileBytes, kMaxObjVertices vertices or kMaxObjTriangles triangles are refused (io/limits.h).
 #pragma once
 
 #include <cstddef>

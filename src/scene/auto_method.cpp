@@ -28,9 +28,9 @@ std::string knownKeys(const std::string& model) {
 }
 
 double boundValue(const io::Json& value, const std::string& where) {
-  if (!value.is_number()) throw Error(where + ": expected a number, got " + value.dump());
+  if (!value.is_number()) throw Error(where + ": expected a number, got " + io::excerpt(value));
   const double v = value.get<double>();
-  if (!(v > 0 && v <= 1)) throw Error(where + " = " + value.dump() + " is out of range (0, 1]");
+  if (!(v > 0 && v <= 1)) throw Error(where + " = " + io::excerpt(value) + " is out of range (0, 1]");
   return v;
 }
 
@@ -50,7 +50,8 @@ std::vector<Bound> readBounds(const Scene& scene, const std::string& where, std:
       throw Error(where + "." + key + " is a water metric, for \"model\": \"auto\" (balls or fluid as it needs); a " +
                   scene.model + " scene states " + knownKeys(scene.model));
     if (!source)
-      throw Error(where + "." + key + ": unknown key (known for " + scene.model + ": " + knownKeys(scene.model) + ")");
+      throw Error(where + "." + io::printable(key) + ": unknown key (known for " + scene.model + ": " +
+                  knownKeys(scene.model) + ")");
     bounds.push_back({key, boundValue(value, where + "." + key)});
     metrics.push_back(source);
   }
@@ -184,7 +185,8 @@ void resolveModelAuto(Scene& scene, const io::Json& stated, const std::string& s
         if (key == s.key)
           throw Error(where + "." + key + " is a " + s.model +
                       " metric of \"method\": \"auto\"; a \"model\": \"auto\" scene states " + waterKeys());
-      throw Error(where + "." + key + ": unknown key (known for \"model\": \"auto\": " + waterKeys() + ")");
+      throw Error(where + "." + io::printable(key) + ": unknown key (known for \"model\": \"auto\": " + waterKeys() +
+                  ")");
     }
     bounds.push_back({key, boundValue(value, where + "." + key)});
     metrics.push_back(source);

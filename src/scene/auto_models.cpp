@@ -117,7 +117,7 @@ std::vector<Candidate> ripplesCandidates(const ModelInput& in) {
   if (fixedGrid) {
     const io::Json& given = in.accuracy.at("wavelengthCells");
     if (!given.is_number() || !(given.get<double>() >= 2 && given.get<double>() <= 1e5))
-      throw Error(in.where + ".wavelengthCells = " + given.dump() + " is out of range [2, 100000]");
+      throw Error(in.where + ".wavelengthCells = " + io::excerpt(given) + " is out of range [2, 100000]");
     double coarsest = INFINITY;
     for (std::size_t r = 0; r < t.rows(); ++r) {
       const double n = t.number(r, "cells_per_wavelength");
@@ -130,7 +130,7 @@ std::vector<Candidate> ripplesCandidates(const ModelInput& in) {
   } else {
     const io::Json& given = in.accuracy.at("wavelength");
     if (!given.is_number() || !(given.get<double>() > 0 && given.get<double>() <= 1e4))
-      throw Error(in.where + ".wavelength = " + given.dump() + " is out of range (0, 10000] m");
+      throw Error(in.where + ".wavelength = " + io::excerpt(given) + " is out of range (0, 10000] m");
   }
   std::vector<Candidate> out;
   for (std::size_t r = 0; r < t.rows(); ++r) {

@@ -165,9 +165,9 @@ class LifeStage final : public ModelStage<life::Life> {
       m_setup.seed = int(next.nextU32() % (kMaxSeed + 1u));  // a new seed, itself reproducible
     }
   }
-  // A rules JSON dropped on the window: the web app's "Load system". Errors show in the panel
-  // (true: the file was this model's to read), nothing is half-loaded.
-  bool dropFile(const std::string& path) override {
+  // A rules JSON dropped on the window: the web app's "Load system". The file is read and
+  // validated whole before anything changes; errors show in the panel too.
+  std::string dropFile(const std::string& path) override {
     try {
       const life::Rules rules = life::loadRules(path);
       m_model.setRules(rules, true);
@@ -178,7 +178,7 @@ class LifeStage final : public ModelStage<life::Life> {
     } catch (const Error& e) {
       m_error = std::string("not loaded: ") + e.what();
     }
-    return true;
+    return m_error;
   }
   std::string shareText() const override { return m_shareCode; }
 

@@ -35,19 +35,19 @@ class Reader final : public ParamVisitor {
   void integer(const ParamInfo& info, int& value, int min, int max) override {
     if (const io::Json* j = find(info)) {
       if (!j->is_number_integer() && !(j->is_number_float() && std::floor(j->get<double>()) == j->get<double>()))
-        throw Error(path(info) + ": expected a whole number, got " + j->dump());
+        throw Error(path(info) + ": expected a whole number, got " + io::excerpt(*j));
       value = int(number(*j, info, min, max));
     }
   }
   void flag(const ParamInfo& info, bool& value) override {
     if (const io::Json* j = find(info)) {
-      if (!j->is_boolean()) throw Error(path(info) + ": expected true or false, got " + j->dump());
+      if (!j->is_boolean()) throw Error(path(info) + ": expected true or false, got " + io::excerpt(*j));
       value = j->get<bool>();
     }
   }
   void text(const ParamInfo& info, std::string& value) override {
     if (const io::Json* j = find(info)) {
-      if (!j->is_string()) throw Error(path(info) + ": expected a string, got " + j->dump());
+      if (!j->is_string()) throw Error(path(info) + ": expected a string, got " + io::excerpt(*j));
       value = j->get<std::string>();
     }
   }
@@ -62,13 +62,13 @@ class Reader final : public ParamVisitor {
     if (!j) return;
     std::string all;
     for (const char* n : names) all += (all.empty() ? "" : ", ") + std::string(n);
-    if (!j->is_string()) throw Error(path(info) + ": expected one of " + all + ", got " + j->dump());
+    if (!j->is_string()) throw Error(path(info) + ": expected one of " + all + ", got " + io::excerpt(*j));
     for (std::size_t i = 0; i < names.size(); ++i)
       if (j->get<std::string>() == names[i]) {
         index = int(i);
         return;
       }
-    throw Error(path(info) + " = '" + j->get<std::string>() + "' is not one of: " + all);
+    throw Error(path(info) + " = '" + io::printable(j->get<std::string>()) + "' is not one of: " + all);
   }
   bool beginGroup(const ParamInfo& info) override {
     const io::Json* j = find(info);
@@ -93,7 +93,8 @@ class Reader final : public ParamVisitor {
     const List& list = m_lists.back();
     const std::string at = list.path + "[" + std::to_string(index) + "]";
     const io::Json* item = list.array ? &(*list.array)[index] : nullptr;
-    if (item && !item->is_object()) throw Error(m_where + "." + at + ": expected an object {...}, got " + item->dump());
+    if (item && !item->is_object())
+      throw Error(m_where + "." + at + ": expected an object {...}, got " + io::excerpt(*item));
     m_stack.push_back({item, at + "."});
     return true;
   }
@@ -126,7 +127,7 @@ class Reader final : public ParamVisitor {
   }
 
   double number(const io::Json& j, const ParamInfo& info, double min, double max) const {
-    if (!j.is_number()) throw Error(path(info) + ": expected a number, got " + j.dump());
+    if (!j.is_number()) throw Error(path(info) + ": expected a number, got " + io::excerpt(j));
     const double v = j.get<double>();
     if (!(v >= min && v <= max))
       throw Error(path(info) + " = " + formatNumber(v) + " is out of range [" + formatNumber(min) + ", " +
@@ -136,7 +137,7 @@ class Reader final : public ParamVisitor {
 
   glm::vec3 triple(const io::Json& j, const ParamInfo& info, float min, float max) const {
     if (!j.is_array() || j.size() != 3 || !j[0].is_number() || !j[1].is_number() || !j[2].is_number())
-      throw Error(path(info) + ": expected an array of 3 numbers, got " + j.dump());
+      throw Error(path(info) + ": expected an array of 3 numbers, got " + io::excerpt(j));
     glm::vec3 v;
     for (int i = 0; i < 3; ++i) {
       v[i] = j[i].get<float>();
@@ -153,7 +154,7 @@ class Reader final : public ParamVisitor {
       if (std::find(level.known.begin(), level.known.end(), key) != level.known.end()) continue;
       std::string known;
       for (const std::string& k : level.known) known += (known.empty() ? "" : ", ") + k;
-      throw Error(m_where + "." + level.prefix + key +
+      throw Error(m_where + "." + level.prefix + io::printable(key) +
                   ": unknown key (known here: " + (known.empty() ? "none" : known) + ")");
     }
   }

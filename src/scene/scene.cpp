@@ -18,7 +18,7 @@ const ModelEntry& modelNamed(const std::string& name, const std::string& where) 
   const std::string model = name == kAutoModel ? "fluid" : name;
   for (const ModelEntry& m : models())
     if (model == m.name) return m;
-  throw Error(where + ": scene.model = '" + name + "' is not a model (known: " + modelNames() + ")");
+  throw Error(where + ": scene.model = '" + io::printable(name) + "' is not a model (known: " + modelNames() + ")");
 }
 
 }  // namespace

@@ -34,9 +34,12 @@ class Stage {
   virtual void render(RenderTarget& target, gl::GpuProfiler& profiler) = 0;
   virtual void input(const Input&) {}
   virtual void key(int /*asciiUpperCase*/) {}  // a letter key the app does not use (e.g. 'C', 'N')
-  virtual bool dropFile(const std::string& /*path*/) { return false; }  // a file dropped on the window; true: used
-  virtual double simTime() const = 0;                                   // simulated seconds since reset
-  virtual std::string status() const { return ""; }                     // one line for the UI (counts, warnings)
+  // A file dropped on the window: "" when the model took it, else the one line the UI shows, why
+  // not (a kind of file this model does not read, or one it refused: then nothing has changed).
+  // A stage reads the whole file before it changes anything.
+  virtual std::string dropFile(const std::string& path) { return "this model takes no files: " + path; }
+  virtual double simTime() const = 0;                   // simulated seconds since reset
+  virtual std::string status() const { return ""; }     // one line for the UI (counts, warnings)
   virtual std::string shareText() const { return ""; }  // the UI offers to copy it (e.g. a rules share code)
 
   // Failing loudly: a model that watches itself reports a blow-up here (non-blocking, a frame or

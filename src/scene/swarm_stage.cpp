@@ -1,8 +1,11 @@
 #include "scene/swarm_stage.h"
 
 #include <cmath>
+#include <optional>
+#include <utility>
 
 #include "base/log.h"
+#include "io/png.h"
 #include "render/swarm_renderer.h"
 #include "scene/scene.h"
 #include "sim/swarm/swarm.h"
@@ -73,11 +76,20 @@ class SwarmStage final : public ModelStage<sim::Swarm> {
     m_model.setMouse(ndc * glm::dvec2(m_model.aspect(), 1.0));
   }
 
-  bool dropFile(const std::string& path) override {
+  // A PNG dropped on the window colours the particles by where they start (and restarts them);
+  // it is decoded whole first, and a bad one changes nothing.
+  std::string dropFile(const std::string& path) override {
+    try {
+      m_dropped = {path, io::readPng(path)};
+    } catch (const Error& e) {
+      m_warning = std::string("not loaded: ") + e.what();
+      return m_warning;
+    }
     m_view.image = path;
     m_view.colorMode = SwarmColorMode::Image;
     m_coloredImage.clear();
-    return true;
+    m_warning.clear();
+    return "";
   }
 
   std::string status() const override {
@@ -128,7 +140,9 @@ class SwarmStage final : public ModelStage<sim::Swarm> {
     if (m_coloredImage == m_view.image && m_renderer.hasColors(m_model)) return;
     m_coloredImage = m_view.image;
     try {
-      const io::Image image = loadSwarmImage(m_view.image);
+      const io::Image image =
+          m_dropped && m_dropped->first == m_view.image ? std::move(m_dropped->second) : loadSwarmImage(m_view.image);
+      m_dropped.reset();
       if (m_model.time() > 0.0) m_model.reset();
       m_renderer.colorFromImage(m_model, image);
       m_warning.clear();
@@ -140,7 +154,8 @@ class SwarmStage final : public ModelStage<sim::Swarm> {
 
   SwarmRenderer m_renderer;
   SwarmViewParams m_view;
-  std::string m_coloredImage;  // image the colour buffer was made from
+  std::string m_coloredImage;                                  // image the colour buffer was made from
+  std::optional<std::pair<std::string, io::Image>> m_dropped;  // decoded by dropFile, for syncColors
   std::string m_warning;
   double m_clock = 0.0;  // real seconds of frames shown: drives the hue cycle
 };

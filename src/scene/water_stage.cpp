@@ -106,22 +106,25 @@ class WaterStage final : public Stage {
   }
   // An OBJ dropped on the window becomes one more obstacle (the last one is replaced when there
   // are already kMaxObstacles): a solid fill when it is closed, else a shell, in the middle of the
-  // domain. The next step builds it, or refuses it (the status line says why).
-  bool dropFile(const std::string& path) override {
-    if (std::filesystem::path(path).extension() != ".obj") return false;
+  // domain. The mesh is read whole first: a bad file changes nothing (the returned line says why).
+  std::string dropFile(const std::string& path) override {
+    if (std::filesystem::path(path).extension() != ".obj") return "water takes OBJ meshes (.obj files): " + path;
+    bool closed = false;
+    try {
+      closed = io::checkClosed(io::readObj(path)).closed();
+    } catch (const Error& e) {
+      return std::string("not added: ") + e.what();
+    }
     balls::Params& p = m_balls ? m_balls->params() : m_fluid->params().water;
     balls::ObstacleParams o;
     o.shape = balls::Shape::Mesh;
     o.mesh = path;
     o.centre = 0.5f * (p.domainMin + p.domainMax);
     o.size = glm::vec3(0.2f * glm::length(p.domainMax - p.domainMin) / std::sqrt(3.0f));
-    try {
-      o.shell = !io::checkClosed(io::readObj(path)).closed();
-    } catch (const Error&) {  // the build says what is wrong with it
-    }
+    o.shell = !closed;
     if (p.obstacles.size() >= balls::kMaxObstacles) p.obstacles.pop_back();
     p.obstacles.push_back(o);
-    return true;
+    return "";
   }
   double simTime() const override { return model().time(); }
   std::pair<std::string, double> liveMetric() const override {

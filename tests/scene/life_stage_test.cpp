@@ -84,13 +84,14 @@ TEST_F(LifeStageTest, DroppedRulesFileLoadsAndABadOneChangesNothing) {
 
   auto stage = lifeStage(smallScene(), shaders());
   gl::GpuProfiler profiler;
-  EXPECT_TRUE(stage->dropFile((dir / "good.json").string()));
+  EXPECT_EQ(stage->dropFile((dir / "good.json").string()), "");
   stage->step(0.025, profiler);
   EXPECT_TRUE(life::decodeShareCode(stage->shareText()) == dropped);
   EXPECT_EQ(shownText(*stage, "error"), "");
 
   const std::string before = stage->shareText();
-  EXPECT_TRUE(stage->dropFile((dir / "bad.json").string()));  // the model's file, refused with a reason
+  const std::string refused = stage->dropFile((dir / "bad.json").string());  // refused with a reason
+  EXPECT_NE(refused.find("bad.json: species[0].forces[1].collisionRadius"), std::string::npos) << refused;
   stage->step(0.025, profiler);
   EXPECT_EQ(stage->shareText(), before);
   const std::string error = shownText(*stage, "error");

@@ -64,11 +64,11 @@ TEST_F(SwarmStages, DroppedImageRecoloursAndABadOneIsReported) {
   stage->render(target, profiler);
   EXPECT_EQ(stage->status().find('\n'), std::string::npos) << "the preset image loads: " << stage->status();
   stage->step(1.0 / 30.0, profiler);
-  EXPECT_TRUE(stage->dropFile((dir / "red.png").string()));
+  EXPECT_EQ(stage->dropFile((dir / "red.png").string()), "");
   stage->render(target, profiler);
   EXPECT_EQ(stage->simTime(), 0.0) << "a new image restarts from the start positions it colours";
   EXPECT_EQ(stage->status().find('\n'), std::string::npos) << stage->status();
-  EXPECT_TRUE(stage->dropFile((dir / "missing.png").string()));
+  EXPECT_NE(stage->dropFile((dir / "missing.png").string()).find("missing.png"), std::string::npos);
   stage->render(target, profiler);
   EXPECT_NE(stage->status().find("missing.png"), std::string::npos) << stage->status();
 }

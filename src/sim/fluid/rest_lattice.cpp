@@ -57,7 +57,7 @@ std::vector<float> boundaryVolumes(const std::vector<glm::vec4>& particles, bool
   for (std::size_t i = 0; i < particles.size(); ++i) cells[key(cellOf(particles[i]))].push_back(i);
   for (std::size_t i = 0; i < particles.size(); ++i) {
     const glm::ivec3 c = cellOf(particles[i]);
-    const glm::dvec3 p(glm::vec3(particles[i]));
+    const glm::dvec3 p{glm::vec3(particles[i])};  // braces: clang reads p(...) as a function
     double sum = 0;
     for (int dz = -1; dz <= 1; ++dz)
       for (int dy = -1; dy <= 1; ++dy)

@@ -10,6 +10,7 @@ namespace tidepool::life {
 namespace {
 
 std::string number(double v) {
+  if (std::abs(v) < 1e15 && std::floor(v) == v) return std::to_string(static_cast<long long>(v));  // 16777216
   std::ostringstream o;
   o << v;
   return o.str();
@@ -38,7 +39,7 @@ class Fields {
   bool flag(const char* key, bool fallback) const {
     const io::Json* j = find(key, false);
     if (!j) return fallback;
-    if (!j->is_boolean()) throw Error(path(key) + ": expected true or false, got " + j->dump());
+    if (!j->is_boolean()) throw Error(path(key) + ": expected true or false, got " + io::excerpt(*j));
     return j->get<bool>();
   }
   double whole(const char* key, bool required, double min, double max, double fallback = 0) const {
@@ -46,15 +47,15 @@ class Fields {
     if (!j) return fallback;
     const double v = finite(*j, path(key));
     if (std::floor(v) != v || v < min || v > max)
-      throw Error(path(key) + " = " + j->dump() + ": expected a whole number in [" + number(min) + ", " + number(max) +
-                  "]");
+      throw Error(path(key) + " = " + io::excerpt(*j) + ": expected a whole number in [" + number(min) + ", " +
+                  number(max) + "]");
     return v;
   }
   static float finite(const io::Json& j, const std::string& where) {
-    if (!j.is_number()) throw Error(where + ": expected a number, got " + j.dump());
+    if (!j.is_number()) throw Error(where + ": expected a number, got " + io::excerpt(j));
     const double v = j.get<double>();
     if (!std::isfinite(v) || !std::isfinite(float(v)))
-      throw Error(where + " = " + j.dump() + " is not a finite number");
+      throw Error(where + " = " + io::excerpt(j) + " is not a finite number");
     return float(v);
   }
 
@@ -64,7 +65,7 @@ class Fields {
 };
 
 glm::vec2 pair(const io::Json* j, const std::string& where) {
-  if (!j->is_array() || j->size() != 2) throw Error(where + ": expected [width, height], got " + j->dump());
+  if (!j->is_array() || j->size() != 2) throw Error(where + ": expected [width, height], got " + io::excerpt(*j));
   return {Fields::finite((*j)[0], where + "[0]"), Fields::finite((*j)[1], where + "[1]")};
 }
 
@@ -232,7 +233,7 @@ Rules rulesFromJson(const io::Json& json, const std::string& where) {
   r.loopingBorders = top.flag("loopingBorders", false);
   r.seed = std::uint32_t(top.whole("seed", false, 0, 4294967295.0, 0));
   const io::Json* species = top.find("species", true);
-  if (!species->is_array()) throw Error(top.path("species") + ": expected an array, got " + species->dump());
+  if (!species->is_array()) throw Error(top.path("species") + ": expected an array, got " + io::excerpt(*species));
   if (species->empty() || species->size() > std::size_t(kMaxSpecies))
     throw Error(top.path("species") + " has " + std::to_string(species->size()) + " entries: expected 1 to " +
                 std::to_string(kMaxSpecies));
@@ -242,12 +243,12 @@ Rules rulesFromJson(const io::Json& json, const std::string& where) {
     Species out;
     const io::Json* color = s.find("color", true);
     if (!color->is_array() || (color->size() != 3 && color->size() != 4))
-      throw Error(sp + ".color: expected [r, g, b] or [r, g, b, a], got " + color->dump());
+      throw Error(sp + ".color: expected [r, g, b] or [r, g, b, a], got " + io::excerpt(*color));
     for (int c = 0; c < 3; ++c)
       out.color[c] = Fields::finite((*color)[std::size_t(c)], sp + ".color[" + std::to_string(c) + "]");
     out.spawnWeight = s.real("spawnWeight", false, 1.0f);
     const io::Json* forces = s.find("forces", true);
-    if (!forces->is_array()) throw Error(sp + ".forces: expected an array, got " + forces->dump());
+    if (!forces->is_array()) throw Error(sp + ".forces: expected an array, got " + io::excerpt(*forces));
     for (std::size_t j = 0; j < forces->size(); ++j) {
       const Fields f((*forces)[j], sp + ".forces[" + std::to_string(j) + "]");
       out.forces.push_back({f.real("strength", true), f.real("collisionStrength", true), f.real("radius", true),

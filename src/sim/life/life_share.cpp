@@ -14,6 +14,10 @@ namespace {
 
 constexpr std::uint8_t kFullTable = 1;  // header + colours, weights and forces
 constexpr std::uint8_t kSeeded = 2;     // header only: the rules are generateRules(header)
+// The longest code: version 1 with kMaxSpecies species (header 27 bytes, per species colour,
+// weight and one force per species, then the CRC), 4 characters per 3 bytes.
+constexpr std::size_t kMaxCodeBytes = 27 + kMaxSpecies * (16 + 16 * kMaxSpecies) + 4;
+constexpr std::size_t kMaxCodeChars = (kMaxCodeBytes * 4 + 2) / 3;
 constexpr char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789-_";
 
 std::uint32_t crc32(const std::uint8_t* data, std::size_t n) {
@@ -125,6 +129,9 @@ std::string encodeShareCode(const Rules& r) {
 }
 
 Rules decodeShareCode(const std::string& code) {
+  if (code.size() > kMaxCodeChars)
+    throw Error("share code: " + std::to_string(code.size()) + " characters, longer than the " +
+                std::to_string(kMaxCodeChars) + " of the largest rules (" + std::to_string(kMaxSpecies) + " species)");
   if (code.size() % 4 == 1) throw Error("share code: bad length " + std::to_string(code.size()) + " (truncated?)");
   std::vector<std::uint8_t> b;
   std::uint32_t acc = 0;
@@ -132,7 +139,7 @@ Rules decodeShareCode(const std::string& code) {
   for (std::size_t i = 0; i < code.size(); ++i) {
     const int d = digit(code[i]);
     if (d < 0)
-      throw Error("share code: character " + std::to_string(i) + " ('" + std::string(1, code[i]) +
+      throw Error("share code: character " + std::to_string(i) + " ('" + io::printable(std::string(1, code[i])) +
                   "') is not base64url (A-Z a-z 0-9 - _)");
     acc = (acc << 6) | std::uint32_t(d);
     bits += 6;

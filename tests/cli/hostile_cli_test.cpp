@@ -1,0 +1,52 @@
+// Hostile input (issue 19) through the program: files too large, too deep or not files at all
+// end the run with one line naming the file, the place and the limit, and exit status 1.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "support/gl_test.h"
+#include "support/one_line_error.h"
+
+using namespace tidepool;
+using test::expectOneLineError;
+
+namespace {
+
+std::string sparse(const test::TempDir& dir, const std::string& name, std::uintmax_t bytes) {
+  std::ofstream(dir / name).put('{');
+  std::filesystem::resize_file(dir / name, bytes);
+  return (dir / name).string();
+}
+
+}  // namespace
+
+TEST(HostileCli, SceneFileTooLargeOrTooDeep) {
+  test::TempDir dir;
+  const std::string big = sparse(dir, "big.json", 40u << 20);
+  expectOneLineError({"render", big, "--out", (dir / "o").string()},
+                     big + "' is 40 MiB, larger than the 16 MiB allowed for a JSON file");
+  dir.write("deep.json", "{\"model\": \"blank\", \"params\":\n" + std::string(100000, '[') + "}");
+  expectOneLineError({"render", (dir / "deep.json").string(), "--out", (dir / "o").string()},
+                     (dir / "deep.json").string() + ":2:64: JSON nested deeper than 64 levels");
+  expectOneLineError({"render", "/dev/zero", "--out", (dir / "o").string()},
+                     "'/dev/zero' is not a regular file (a device, pipe or socket): give a JSON file");
+}
+
+TEST(HostileCli, RulesTooLongOrNotAFile) {
+  test::TempDir dir;
+  expectOneLineError(
+      {"render", "life", "--rules", std::string(20000, 'A'), "--out", (dir / "o").string()},
+      "params.rules: share code: 20000 characters, longer than the 9002 of the largest rules (20 species)");
+  expectOneLineError({"render", "life", "--rules", "/dev/zero", "--out", (dir / "o").string()},
+                     "params.rules: '/dev/zero' is not a regular file");
+}
+
+TEST(HostileCli, ObstacleMeshTooLarge) {
+  test::TempDir dir;
+  const std::string mesh = sparse(dir, "huge.obj", 300u << 20);
+  dir.write("s.json", R"({"model": "balls", "params": {"particles": {"fill": "none"},
+                          "obstacles": [{"shape": "mesh", "mesh": ")" +
+                          mesh + R"("}]}})");
+  test::expectRenderFails((dir / "s.json").string(), (dir / "o").string(),
+                          "huge.obj' is 300 MiB, larger than the 256 MiB allowed for an OBJ mesh");
+}
