@@ -46,6 +46,7 @@ class Stage {
   virtual std::pair<std::string, double> liveMetric() const { return {"", NAN}; }
   virtual bool recover() { return false; }
   virtual void flushChecks() {}
+  virtual sim::Model* model() { return nullptr; }  // the model it steps (blank: none), for soak runs to read
 };
 
 // A stage whose model is a sim::Model (every model but blank): stepping, the clock, the status
@@ -63,6 +64,7 @@ class ModelStage : public Stage {
   std::optional<DivergenceReport> divergence() const override { return m_model.divergence(); }
   bool recover() override { return m_model.recover(); }
   void flushChecks() override { m_model.flushChecks(); }
+  sim::Model* model() override { return &m_model; }
 
  protected:
   template <class... Args>

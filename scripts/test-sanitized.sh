@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# The test suite under AddressSanitizer + UndefinedBehaviorSanitizer, with LeakSanitizer checking
+# every process at exit: builds build-asan/ (TIDEPOOL_SANITIZE=ON, RelWithDebInfo) and runs its
+# tests. The `tidepool` the CLI tests spawn is build-asan/tidepool, sanitized too, and inherits
+# the options below. Leaks inside the GL driver stack are suppressed in tests/sanitizers/lsan.supp
+# (each entry names its library); ours never are.
+# Usage: scripts/test-sanitized.sh [ctest arguments, e.g. -R Swarm]
+# Left out (docs/RELIABILITY.md, "Sanitizers"): the build checks (Layers.*, Build.*: they test
+# compilers and linkers, not our code at run time) and the soak tests (label soak: RSS under ASan
+# measures its quarantine, not our memory; they run in the normal suite).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+generator=()
+command -v ninja >/dev/null && generator=(-G Ninja)
+if [ ! -f build-asan/CMakeCache.txt ]; then
+  cmake -S . -B build-asan "${generator[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTIDEPOOL_SANITIZE=ON
+fi
+cmake --build build-asan -j "$(nproc)"
+
+# Distinct exit codes, so that a finding in a spawned `tidepool` fails a test that expects 1 or 2.
+export ASAN_OPTIONS="detect_leaks=1:exitcode=86:halt_on_error=1:detect_stack_use_after_return=1:check_initialization_order=1:strict_init_order=1:detect_invalid_pointer_pairs=0"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:exitcode=87"
+export LSAN_OPTIONS="exitcode=88:suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0"
+cd build-asan
+ctest --output-on-failure -j "$(nproc)" -E '^(Layers|Build)\.' -LE soak "$@"
