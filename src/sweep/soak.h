@@ -51,7 +51,7 @@ struct SoakRun {
 
 struct SoakLimits {
   double warmup = 0.1;        // fraction of the steps before the baselines are taken
-  double rssGrowthMiB = 8.0;  // most RSS growth after warm-up (docs/RELIABILITY.md says why 8)
+  double rssGrowthMiB = 4.0;  // most RSS growth after warm-up (docs/RELIABILITY.md says why 4)
   double energyFactor = 10;   // energy at most this × the warm-up's largest
 };
 
