@@ -17,6 +17,7 @@ Command addRun(CLI::App& app);
 Command addBench(CLI::App& app);
 Command addSweep(CLI::App& app);
 Command addValidate(CLI::App& app);
+Command addSoak(CLI::App& app);
 
 // "1280x720" -> width, height (throws CLI::ValidationError style Error otherwise).
 void parseSize(const std::string& text, int& width, int& height);

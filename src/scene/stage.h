@@ -57,6 +57,7 @@ class Stage {
   // parameters through visitParams, calls reset() and then visits visitState with a loader.
   virtual void visitSetupState(sim::StateVisitor&) {}
   virtual void visitState(sim::StateVisitor& v) = 0;  // the model's state and the stage's own
+  virtual sim::Model* model() { return nullptr; }  // the model it steps (blank: none), for soak runs to read
 };
 
 // A stage whose model is a sim::Model (every model but blank): stepping, the clock, the status
@@ -75,6 +76,7 @@ class ModelStage : public Stage {
   bool recover() override { return m_model.recover(); }
   void flushChecks() override { m_model.flushChecks(); }
   void visitState(sim::StateVisitor& v) override { m_model.visitState(v); }
+  sim::Model* model() override { return &m_model; }
 
  protected:
   template <class... Args>

@@ -83,12 +83,12 @@ class WaterStage final : public Stage {
     visitViewGroup(v, m_setup.view);
   }
   void reset() override {
-    model().reset();
+    model()->reset();
     m_frames = 0;
   }
   void step(double frameSeconds, gl::GpuProfiler& profiler) override {
     if (m_choice != active()) switchModel();
-    model().step(frameSeconds, profiler);
+    model()->step(frameSeconds, profiler);
     if (m_frames++ % kStatsInterval == 0) refreshStats();
   }
   void render(RenderTarget& target, gl::GpuProfiler& profiler) override {
@@ -144,8 +144,9 @@ class WaterStage final : public Stage {
     return (m_switchError.empty() ? "" : "not switched: " + m_switchError + "\n") + model().status() + buf;
   }
   std::optional<DivergenceReport> divergence() const override { return model().divergence(); }
-  bool recover() override { return model().recover(); }
-  void flushChecks() override { model().flushChecks(); }
+  bool recover() override { return model()->recover(); }
+  void flushChecks() override { model()->flushChecks(); }
+  sim::Model* model() override { return m_balls ? static_cast<sim::Model*>(m_balls.get()) : m_fluid.get(); }
 
   // Checkpoints: which model runs comes before the parameters (they are that model's keys).
   void visitSetupState(sim::StateVisitor& v) override {
@@ -181,7 +182,6 @@ class WaterStage final : public Stage {
 
  private:
   WaterModel active() const { return m_balls ? WaterModel::Balls : WaterModel::Fluid; }
-  sim::Model& model() { return m_balls ? static_cast<sim::Model&>(*m_balls) : *m_fluid; }
   const sim::Model& model() const { return m_balls ? static_cast<const sim::Model&>(*m_balls) : *m_fluid; }
   const sim::ParticleWater& water() const {
     return m_balls ? static_cast<const sim::ParticleWater&>(*m_balls) : *m_fluid;
