@@ -160,7 +160,7 @@ class WaterStage final : public Stage {
   // The model's state, the statistics' frame phase and values, and the other model's parameters
   // (what a later switch keeps of them).
   void visitState(sim::StateVisitor& v) override {
-    model().visitState(v);
+    model()->visitState(v);
     v.value("stage.frames", m_frames);
     v.value("stage.balls_stats", m_ballsStats);
     v.value("stage.fluid_stats", m_fluidStats);

@@ -258,7 +258,7 @@ TEST_F(Checkpoints, EntriesThatDoNotFitTheSceneAreRefusedNamingThem) {
     c.params = p.dump();
   });
   EXPECT_EQ(tooMany.rfind("run.ckpt: balls: ", 0), 0u) << tooMany;
-  EXPECT_NE(tooMany.find("more than max_particles = 10"), std::string::npos) << tooMany;
+  EXPECT_NE(tooMany.find("but at most 10 fit (max_particles = 10)"), std::string::npos) << tooMany;
   EXPECT_NE(refusal([&](io::Checkpoint& c) { c.params = "{"; }).find("run.ckpt: params:1:2: malformed JSON"),
             std::string::npos);
 }
