@@ -57,7 +57,7 @@ class Stage {
   // parameters through visitParams, calls reset() and then visits visitState with a loader.
   virtual void visitSetupState(sim::StateVisitor&) {}
   virtual void visitState(sim::StateVisitor& v) = 0;  // the model's state and the stage's own
-  virtual sim::Model* model() { return nullptr; }  // the model it steps (blank: none), for soak runs to read
+  virtual sim::Model* model() { return nullptr; }     // the model it steps (blank: none), for soak runs to read
 };
 
 // A stage whose model is a sim::Model (every model but blank): stepping, the clock, the status

@@ -152,7 +152,8 @@ TEST_F(BallsStep, TooManyBallsAreRefusedBeforeAllocating) {
     Balls b(shaders(), p);
     FAIL() << "expected an error";
   } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("would make about 2000 balls, but at most 1000 fit (max_particles = 1000)"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("would make about 2000 balls, but at most 1000 fit (max_particles = 1000)"),
+              std::string::npos)
         << e.what();
   }
 }
