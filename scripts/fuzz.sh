@@ -5,7 +5,7 @@
 #   scripts/fuzz.sh obj 600                  # ten minutes of OBJ meshes
 #   scripts/fuzz.sh scene 60 -jobs=2         # anything after the time goes to libFuzzer
 #
-# Parsers: scene rules share obj png (tests/fuzz/CMakeLists.txt says what each calls). Builds
+# Parsers: scene rules share obj png checkpoint (tests/fuzz/CMakeLists.txt says what each calls). Builds
 # build-fuzz/ (clang, TIDEPOOL_FUZZ=ON, no test suite) when needed. Starts from the seed corpus
 # tests/fuzz/corpus/<parser>/ and keeps what it finds new in build-fuzz/corpus/<parser>/; a crash,
 # leak, UB report, timeout or out-of-memory input is written to build-fuzz/findings/<parser>/ and
@@ -13,7 +13,7 @@
 # and add it to tests/fuzz/regressions/<parser>/ with its fix (ctest replays that folder).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-parsers="scene rules share obj png"
+parsers="scene rules share obj png checkpoint"
 if [[ $# -lt 2 || " $parsers " != *" $1 "* || ! $2 =~ ^[0-9]+$ ]]; then
   echo "usage: scripts/fuzz.sh <parser> <seconds> [libFuzzer options...]  (parsers: $parsers)" >&2
   exit 2

@@ -56,10 +56,7 @@ void Balls::reset() {
   // the numbers, before any array is built.
   char radius[48];
   std::snprintf(radius, sizeof radius, "particles.radius = %g m", double(p.radius));
-  sim::checkParticleRequest(
-      "balls", "ball",
-      estimatedWater(m_params) + (m_params.tap ? m_params.tapMax : 0) + obstacleBound(m_params.obstacles, p.radius),
-      radius, cost(), "raise particles.radius or shrink the fill and the obstacles");
+  checkWaterRequest("balls", "ball", radius, estimatedWater(m_params), m_params, cost());
   m_obstacles.build(m_params.obstacles, p.radius);  // a bad mesh fails before anything is allocated
   m_radius = p.radius;
   m_obstacles.place(m_params.obstacles, 0.0, p.domainMin, p.domainMax);

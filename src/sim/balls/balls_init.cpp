@@ -87,6 +87,14 @@ double obstacleBound(const std::vector<ObstacleParams>& obstacles, float radius)
   return n;
 }
 
+void checkWaterRequest(const char* model, const char* particle, const std::string& size, double fillParticles,
+                       const Params& w, const sim::ParticleCost& cost) {
+  const std::string key = size.substr(0, size.find(' '));  // "particles.radius"
+  sim::checkParticleRequest(model, particle,
+                            fillParticles + (w.tap ? w.tapMax : 0) + obstacleBound(w.obstacles, resolved(w).radius),
+                            size, cost, "raise " + key + " or shrink the fill and the obstacles");
+}
+
 std::vector<glm::vec4> waterParticles(const Params& input, const std::function<bool(glm::vec3)>& occupied) {
   const Params p = resolved(input);
   const float r = p.radius;

@@ -11,6 +11,7 @@
 
 #include "io/obj.h"
 #include "sim/balls/balls_params.h"
+#include "sim/particle_memory.h"
 
 namespace tidepool::balls {
 
@@ -47,6 +48,11 @@ double fillVolume(const Params& p);      // m³ of a block or slab fill's region
 double estimatedWater(const Params& p);  // balls a fill makes: volume / (4√2 r³) on the HCP lattice
 // An upper bound on the obstacles' particles: each obstacle's box (2 size per axis) filled solid.
 double obstacleBound(const std::vector<ObstacleParams>& obstacles, float radius);
+// The water's count check (balls, fluid), before anything is built: `fillParticles` (the fill's
+// estimate), the tap's maximum and the obstacles' bound against what fits; `size` names the key
+// that sets the count ("particles.radius = 0.0001 m"). Throws Error (sim/particle_memory.h).
+void checkWaterRequest(const char* model, const char* particle, const std::string& size, double fillParticles,
+                       const Params& w, const sim::ParticleCost& cost);
 
 // Water particles (vec4: position m, w = 1), none where `occupied` (inside an obstacle, say).
 // Deterministic: same parameters, same particles.

@@ -102,10 +102,7 @@ void Fluid::reset() {
   // with the numbers, before any array is built.
   char spacing[48];
   std::snprintf(spacing, sizeof spacing, "particles.spacing = %g m", double(m_params.spacing));
-  sim::checkParticleRequest(
-      "fluid", "particle",
-      estimatedParticles(w, m_params.spacing) + (w.tap ? w.tapMax : 0) + balls::obstacleBound(w.obstacles, w.radius),
-      spacing, cost(), "raise particles.spacing or shrink the fill and the obstacles");
+  balls::checkWaterRequest("fluid", "particle", spacing, estimatedParticles(w, m_params.spacing), w, cost());
   m_restSpacing = m_restSmoothing = 0;
   calibrate();
   m_obstacles.build(w.obstacles, w.radius);  // first: a bad mesh fails before anything is allocated
