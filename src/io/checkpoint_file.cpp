@@ -11,6 +11,7 @@
 #include <set>
 
 #include "base/error.h"
+#include "io/json.h"
 
 namespace tidepool::io {
 namespace {
@@ -214,8 +215,8 @@ Checkpoint parseCheckpoint(std::span<const std::uint8_t> bytes, const std::strin
       throw Error(where + ": " + at + " kind at byte " + std::to_string(kindAt) + ": " + std::to_string(int(kind)) +
                   " is not 1 (value), 2 (text) or 3 (buffer)");
     std::string name = in.str(kMaxEntryName, at + " name");
-    if (!names.insert(name).second) in.fail(at, "a second entry named '" + name + "'");
-    const std::string field = "entry '" + name + "' (" + kindName(kind) + ")";
+    if (!names.insert(name).second) in.fail(at, "a second entry named '" + printable(name) + "'");
+    const std::string field = "entry '" + printable(name) + "' (" + kindName(kind) + ")";
     const std::uint64_t n = in.uint(8, field + " size");
     in.need(n, field);
     c.entries.push_back({kind, std::move(name), in.blob(std::size_t(n))});

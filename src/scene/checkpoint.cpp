@@ -32,8 +32,9 @@ void saveCheckpoint(Stage& stage, const Scene& scene, const std::filesystem::pat
 
 void restoreCheckpoint(Stage& stage, const Scene& scene, const io::Checkpoint& c, const std::string& where) {
   if (c.model != scene.model)
-    throw Error(where + " is a " + c.model + " checkpoint" + (c.scene.empty() ? "" : " (of " + c.scene + ")") +
-                ", the scene runs " + scene.model);
+    throw Error(where + " is a " + io::printable(c.model) + " checkpoint" +
+                (c.scene.empty() ? "" : " (of " + io::printable(c.scene, 200) + ")") + ", the scene runs " +
+                scene.model);
   sim::StateLoader loader(c, where);
   try {
     stage.visitSetupState(loader);

@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "base/error.h"
+#include "io/json.h"
 
 namespace tidepool::sim {
 namespace {
@@ -103,7 +104,7 @@ void StateLoader::buffer(const char* name, gl::Buffer& buffer, std::size_t bytes
 
 void StateLoader::finish() const {
   for (const io::CheckpointEntry& e : m_in.entries)
-    if (!m_read.count(e.name)) fail("entry '" + e.name + "' is not part of this scene's state");
+    if (!m_read.count(e.name)) fail("entry '" + io::printable(e.name) + "' is not part of this scene's state");
 }
 
 }  // namespace tidepool::sim
