@@ -8,22 +8,14 @@
 #include <vector>
 
 #include "fuzz/fuzz_check.h"
+#include "io/checkpoint_file.h"  // io::crc32
 #include "sim/life/life_rules.h"
 
 namespace {
 
-std::uint32_t crc32(const std::vector<std::uint8_t>& bytes) {
-  std::uint32_t c = 0xffffffffu;
-  for (std::uint8_t b : bytes) {
-    c ^= b;
-    for (int k = 0; k < 8; ++k) c = (c >> 1) ^ (0xedb88320u & (0u - (c & 1u)));
-  }
-  return ~c;
-}
-
 std::string sealed(std::vector<std::uint8_t> b) {
   static const char alphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789-_";
-  const std::uint32_t crc = crc32(b);
+  const std::uint32_t crc = tidepool::io::crc32(b);
   for (int i = 0; i < 4; ++i) b.push_back(std::uint8_t(crc >> (8 * i)));
   std::string out;
   std::uint32_t acc = 0;

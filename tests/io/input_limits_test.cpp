@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "io/checkpoint_file.h"  // io::crc32
 #include "io/json.h"
 #include "io/limits.h"
 #include "io/obj.h"
@@ -44,15 +45,6 @@ void expectOneLine(const std::string& m) {
   EXPECT_EQ(m.find('\r'), std::string::npos) << m;
 }
 
-std::uint32_t crc32(const std::vector<std::uint8_t>& bytes) {
-  std::uint32_t c = 0xffffffffu;
-  for (std::uint8_t b : bytes) {
-    c ^= b;
-    for (int k = 0; k < 8; ++k) c = (c >> 1) ^ (0xedb88320u & (0u - (c & 1u)));
-  }
-  return ~c;
-}
-
 // A PNG file whose header says width x height, with one IDAT of zeros (too few for the size).
 std::vector<std::uint8_t> pngHeader(std::uint32_t width, std::uint32_t height) {
   std::vector<std::uint8_t> png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
@@ -61,7 +53,7 @@ std::vector<std::uint8_t> pngHeader(std::uint32_t width, std::uint32_t height) {
     std::vector<std::uint8_t> body(type, type + 4);
     body.insert(body.end(), data.begin(), data.end());
     png.insert(png.end(), body.begin(), body.end());
-    const std::uint32_t crc = crc32(body);
+    const std::uint32_t crc = tidepool::io::crc32(body);
     for (int i = 3; i >= 0; --i) png.push_back(std::uint8_t(crc >> (8 * i)));
   };
   std::vector<std::uint8_t> ihdr;

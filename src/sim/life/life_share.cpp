@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "base/error.h"
+#include "io/checkpoint_file.h"  // io::crc32
 #include "sim/life/life_rules.h"
 
 namespace tidepool::life {
@@ -19,15 +20,6 @@ constexpr std::uint8_t kSeeded = 2;     // header only: the rules are generateRu
 constexpr std::size_t kMaxCodeBytes = 27 + kMaxSpecies * (16 + 16 * kMaxSpecies) + 4;
 constexpr std::size_t kMaxCodeChars = (kMaxCodeBytes * 4 + 2) / 3;
 constexpr char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789-_";
-
-std::uint32_t crc32(const std::uint8_t* data, std::size_t n) {
-  std::uint32_t c = 0xffffffffu;
-  for (std::size_t i = 0; i < n; ++i) {
-    c ^= data[i];
-    for (int k = 0; k < 8; ++k) c = (c >> 1) ^ (0xedb88320u & (0u - (c & 1u)));
-  }
-  return ~c;
-}
 
 class Writer {
  public:
@@ -117,7 +109,7 @@ std::string encodeShareCode(const Rules& r) {
     }
   }
   std::vector<std::uint8_t>& b = w.bytes();
-  w.u32(crc32(b.data(), b.size()));
+  w.u32(io::crc32(b));
   std::string out;
   for (std::size_t i = 0; i < b.size(); i += 3) {
     const std::uint32_t n = std::uint32_t(b[i]) << 16 | (i + 1 < b.size() ? std::uint32_t(b[i + 1]) << 8 : 0u) |
@@ -155,7 +147,8 @@ Rules decodeShareCode(const std::string& code) {
   const std::size_t body = b.size() - 4;
   std::uint32_t stored = 0;
   for (int i = 0; i < 4; ++i) stored |= std::uint32_t(b[body + std::size_t(i)]) << (8 * i);
-  if (stored != crc32(b.data(), body)) throw Error("share code: checksum mismatch (the code was altered or cut)");
+  if (stored != io::crc32(std::span<const std::uint8_t>(b.data(), body)))
+    throw Error("share code: checksum mismatch (the code was altered or cut)");
   Reader in(b, body);
   in.u8();
   Rules r;
