@@ -1,5 +1,6 @@
 #include "sim/divergence.h"
 
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 
@@ -88,7 +89,7 @@ std::optional<std::string> DivergenceWatch::checkNow(Subject& s) {
   return s.unhealthy(w);
 }
 
-void DivergenceWatch::visitState(StateVisitor& v) {
+void DivergenceWatch::visitState(StateVisitor& v, Subject& s) {
   int frames = m_frames;
   v.value("watch.frames", frames);
   if (frames < 0) v.fail("entry 'watch.frames' = " + std::to_string(frames) + " is not a frame count");
@@ -96,10 +97,36 @@ void DivergenceWatch::visitState(StateVisitor& v) {
   double reportTime = m_report ? m_report->time : 0.0;
   v.text("watch.report", report, 4096);
   v.value("watch.report_time", reportTime);
+  // The last good copy, so that a resumed run can recover before its first healthy check.
+  const std::vector<StateBuffer> state = s.stateBuffers();
+  bool hasGood = m_hasGood && m_good.buffers.size() == state.size();
+  v.flag("watch.has_good", hasGood);
+  Copy good;
+  if (hasGood) {
+    Copy& copy = v.loading() ? good : m_good;
+    copy.kept = true;
+    copy.buffers.resize(state.size());
+    copy.bytes.resize(state.size());
+    v.value("watch.good.time", copy.stamp.time);
+    if (!(copy.stamp.time >= 0) || !std::isfinite(copy.stamp.time))
+      v.fail("entry 'watch.good.time' = " + std::to_string(copy.stamp.time) + " is not a time");
+    v.count("watch.good.count", copy.stamp.count, m_maxCopied);
+    v.value("watch.good.steps", copy.stamp.steps);
+    for (std::size_t k = 0; k < state.size(); ++k) {
+      const std::string name = std::string("watch.good.") + state[k].name;
+      v.count((name + ".bytes").c_str(), copy.bytes[k], state[k].buffer->size());
+      if (v.loading() && copy.bytes[k] > 0) copy.buffers[k] = gl::Buffer(copy.bytes[k]);
+      v.buffer(name.c_str(), copy.buffers[k], copy.bytes[k]);
+    }
+  }
   if (!v.loading()) return;
   restart();
   m_frames = frames;
   if (!report.empty()) m_report = DivergenceReport{report, reportTime};
+  if (hasGood) {
+    m_good = std::move(good);
+    m_hasGood = true;
+  }
 }
 
 void DivergenceWatch::start(Subject& s, const StateStamp& now) {
@@ -141,6 +168,9 @@ void DivergenceWatch::flush(Subject& s) {
 bool DivergenceWatch::recover(Subject& s) {
   if (!m_report || !m_hasGood) return false;
   const std::vector<StateBuffer> state = s.stateBuffers();
+  if (state.size() != m_good.buffers.size()) return false;
+  for (std::size_t k = 0; k < state.size(); ++k)
+    if (m_good.bytes[k] > state[k].buffer->size()) return false;  // the state was rebuilt smaller since
   for (std::size_t k = 0; k < m_good.buffers.size(); ++k)
     m_ops.copy(m_good.buffers[k], *state[k].buffer, m_good.bytes[k]);
   s.resume(m_good.stamp);

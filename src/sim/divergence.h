@@ -95,9 +95,10 @@ class DivergenceWatch {
   const std::optional<DivergenceReport>& report() const { return m_report; }
   // The verdict on the state as it is now, waiting for it (a checkpoint refuses a diverged state).
   std::optional<std::string> checkNow(Subject& s);
-  // Checkpoints: the frame phase of the checks and the report. Loading starts afresh (nothing in
-  // flight, no good state kept: the first healthy check after it makes one).
-  void visitState(StateVisitor& v);
+  // Checkpoints: the frame phase of the checks, the report and the last good copy with its stamp
+  // (each buffer at most the size of `s`'s live one). Loading has nothing in flight: the next
+  // check starts when the saved phase says, and a failure before it recovers to the saved copy.
+  void visitState(StateVisitor& v, Subject& s);
 
  private:
   // The state buffers copied at one check, and their stamp.

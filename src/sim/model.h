@@ -40,15 +40,15 @@ class Model : private DivergenceWatch::Subject {
   void flushChecks() { m_watch.flush(*this); }       // waits for the check in flight (end of a headless run)
 
   // Checkpoints (scene/checkpoint.h): everything a later step reads beyond the parameters — the
-  // watch's phase, the model's own state (visitOwnState: clock, counters, RNG, extra buffers),
-  // then the stateBuffers(). Loading expects the model reset() at the checkpoint's parameters.
+  // model's own state (visitOwnState: clock, counters, RNG, extra buffers), the watch's phase
+  // and last good copy, then the stateBuffers(). Loading expects the model reset() at the checkpoint's parameters.
   // Saving first judges the state now and refuses a diverged one (Error), so that a periodic save
   // never replaces a good checkpoint with a blown-up state.
   void visitState(StateVisitor& v) {
     if (!v.loading())
       if (std::optional<std::string> bad = m_watch.checkNow(*this)) v.fail(std::string(m_name) + " state: " + *bad);
-    m_watch.visitState(v);
     visitOwnState(v);
+    m_watch.visitState(v, *this);  // after the own state, which may resize the live buffers
     for (const StateBuffer& b : stateBuffers()) v.buffer((std::string("model.") + b.name).c_str(), *b.buffer, b.bytes);
   }
 

@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
+
 #include "scene/param_json.h"
 #include "sim/ripples/ripples.h"
 #include "support/error_of.h"
@@ -41,13 +43,13 @@ void frames(Stage& stage, int n, RenderTarget* target = nullptr) {
   }
 }
 
-// Everything a checkpoint holds but the watch's phase (when a check's read-back arrives depends on
-// the driver's timing, not on the state).
+// Everything a checkpoint holds but the watch's (its phase, and whether a check's read-back has
+// made a good copy yet, depend on the driver's timing, not on the state).
 std::map<std::string, std::vector<std::uint8_t>> stateOf(Stage& stage, const Scene& scene) {
   const io::Checkpoint c = captureCheckpoint(stage, scene);
   std::map<std::string, std::vector<std::uint8_t>> out;
   for (const io::CheckpointEntry& e : c.entries)
-    if (e.name != "watch.frames") out[e.name] = e.bytes;
+    if (e.name.rfind("watch.", 0) != 0) out[e.name] = e.bytes;
   const auto* t = reinterpret_cast<const std::uint8_t*>(&c.time);
   out["time"] = std::vector<std::uint8_t>(t, t + sizeof c.time);
   out["params"] = std::vector<std::uint8_t>(c.params.begin(), c.params.end());
@@ -273,6 +275,87 @@ TEST_F(Checkpoints, ADivergedStateIsNotSaved) {
   sim::StateSaver saver(c);
   EXPECT_EQ(errorOf([&] { model.visitState(saver); }),
             "checkpoint not saved: ripples state: 1 cells are NaN or infinite");
+}
+
+// The watch's last good copy travels with the checkpoint: a resumed run that fails its very first
+// check recovers to the good state the saving run had judged, bit for bit.
+TEST_F(Checkpoints, TheLastGoodStateIsSavedSoThatAResumedRunCanRecover) {
+  const Scene scene = sceneOf(R"({"model": "ripples", "params": {"width": 16, "height": 16}})");
+  ripples::Params p = scene.params.model<ripples::Params>();
+  const double frame = 1.0 / 60;
+  p.autoSubsteps = false;  // one step per frame at C = 0.5, then (after the load) at C = 5
+  p.substeps = 1;
+  p.waveSpeed = float(0.5 * p.cellSize / frame);
+  ripples::Ripples model(shaders(), p);
+  std::vector<float> state(16 * 16 * 2, 0.0f);
+  for (std::size_t i = 0; i < state.size(); i += 2) state[i] = 1e-3f * float(i % 7) - 3e-3f;
+  model.upload(state);
+  gl::GpuProfiler profiler;
+  for (int i = 0; i < 20; ++i) {
+    model.step(frame, profiler);
+    model.flushChecks();  // each check is judged before the next starts: good copies are kept
+  }
+  io::Checkpoint saved;
+  sim::StateSaver saver(saved);
+  model.visitState(saver);
+  const io::CheckpointEntry* flag = saved.find("watch.has_good");
+  ASSERT_TRUE(flag && flag->bytes == std::vector<std::uint8_t>{1}) << "20 judged frames keep a good copy";
+  const io::CheckpointEntry* goodState = saved.find("watch.good.state");
+  const io::CheckpointEntry* goodTime = saved.find("watch.good.time");
+  ASSERT_TRUE(goodState && goodTime);
+  double tGood = 0;
+  std::memcpy(&tGood, goodTime->bytes.data(), sizeof tGood);
+  ASSERT_GT(tGood, 0.0);
+  ASSERT_LE(tGood, model.time());
+
+  ripples::Ripples resumed(shaders(), p);
+  sim::StateLoader loader(saved, "run.ckpt");
+  resumed.visitState(loader);
+  loader.finish();
+  // Saved again at once, the copy is the same, entry for entry.
+  io::Checkpoint again;
+  sim::StateSaver saver2(again);
+  resumed.visitState(saver2);
+  for (const char* name : {"watch.has_good", "watch.good.time", "watch.good.count", "watch.good.state"})
+    EXPECT_EQ(again.find(name)->bytes, saved.find(name)->bytes) << name;
+
+  // Far past the Courant limit it blows up before its first check after the load: with the saved
+  // copy, recovery goes back to it (without, there would be nothing to go back to).
+  resumed.params().waveSpeed *= 10;
+  for (int i = 0; i < 60 && !resumed.divergence(); ++i) {
+    resumed.step(frame, profiler);
+    resumed.flushChecks();
+  }
+  ASSERT_TRUE(resumed.divergence().has_value()) << "C far above 1/sqrt(2) must blow up";
+  ASSERT_TRUE(resumed.recover()) << "the good copy came with the checkpoint";
+  EXPECT_EQ(resumed.time(), tGood);
+  const std::vector<float> restored = resumed.download();
+  ASSERT_EQ(restored.size() * sizeof(float), goodState->bytes.size());
+  EXPECT_EQ(std::memcmp(restored.data(), goodState->bytes.data(), goodState->bytes.size()), 0);
+}
+
+TEST_F(Checkpoints, AGoodCopyLargerThanTheStateIsRefused) {
+  const Scene scene = sceneOf(R"({"model": "ripples", "params": {"width": 16, "height": 16}})");
+  const ripples::Params p = scene.params.model<ripples::Params>();
+  ripples::Ripples model(shaders(), p);
+  gl::GpuProfiler profiler;
+  for (int i = 0; i < 20; ++i) {
+    model.step(1.0 / 60, profiler);
+    model.flushChecks();
+  }
+  io::Checkpoint saved;
+  sim::StateSaver saver(saved);
+  model.visitState(saver);
+  ASSERT_NE(saved.find("watch.good.state.bytes"), nullptr);
+  for (io::CheckpointEntry& e : saved.entries)
+    if (e.name == "watch.good.state.bytes") {
+      const std::uint64_t huge = std::uint64_t(1) << 40;
+      std::memcpy(e.bytes.data(), &huge, sizeof huge);
+    }
+  ripples::Ripples resumed(shaders(), p);
+  sim::StateLoader loader(saved, "run.ckpt");
+  const std::string error = errorOf([&] { resumed.visitState(loader); });
+  EXPECT_EQ(error.rfind("run.ckpt: entry 'watch.good.state.bytes' = 1099511627776 is more than", 0), 0u) << error;
 }
 
 TEST(CheckpointSchedule, SavesAtEveryMultipleOfThePeriodCountedFromZero) {
