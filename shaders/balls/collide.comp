@@ -1,7 +1,8 @@
 #version 430 core
 // One step of the balls (explicit or symplectic Euler), or the force-and-kick half of velocity
 // Verlet: contact accelerations from every body within 2r, the walls, gravity, then integration.
-// Reads the cell-ordered arrays, writes the other buffers (no read/write hazard between balls).
+// Reads the cell-ordered arrays (list mode: the arrays in place, and each ball's list), writes
+// the other buffers (no read/write hazard between balls).
 #include "balls/bindings.glsl"
 
 layout(local_size_x = BALLS_GROUP_SIZE) in;
@@ -34,13 +35,11 @@ uniform float uDecay;     // exp(−damping·dt)
 uniform float uFoamGain;  // per m travelled
 uniform float uFoamDecay; // factor per step
 
-void main() {
-  const uint i = globalIndex();
-  if (i >= uCount) return;
+void stepBall(uint i) {
   const vec3 p = posIn[i].xyz;
   gVelocity = velIn[i].xyz;
   gAccel = uGravity;
-  forEachContact(p);
+  forEachContact(i, p);
   gAccel += wallsAccel(p, gVelocity);
   float foam = velIn[i].w;
 #ifdef INTEGRATOR_VERLET
@@ -59,5 +58,19 @@ void main() {
   foam = min(1.0, (foam + uFoamGain * uDt * length(gVelocity)) * uFoamDecay);
   posOut[i] = vec4(x, posIn[i].w);
   velOut[i] = vec4(v, foam);
+#ifdef LISTS
+  displacementBoxAdd(i, x);  // where the next step's forces act
+#endif
+#endif
+}
+
+void main() {
+  const uint i = globalIndex();
+#if defined(LISTS) && !defined(INTEGRATOR_VERLET)
+  displacementBoxBegin();
+  if (i < uCount) stepBall(i);
+  displacementBoxEnd(groupIndex());
+#else
+  if (i < uCount) stepBall(i);
 #endif
 }

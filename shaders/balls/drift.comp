@@ -16,14 +16,29 @@ uniform float uRadius;
 uniform float uFoamGain;
 uniform float uFoamDecay;
 #include "balls/walls.glsl"
+#ifdef LISTS
+#include "balls/lists.glsl"
+#endif
 
-void main() {
-  const uint i = globalIndex();
-  if (i >= uCount) return;
+void driftBall(uint i) {
   vec3 v = vel[i].xyz + 0.5 * uDt * acc[i].xyz;
   vec3 x = pos[i].xyz + uDt * v;
   confineToDomain(x, v);
   const float foam = min(1.0, (vel[i].w + uFoamGain * uDt * length(v)) * uFoamDecay);
   pos[i] = vec4(x, pos[i].w);
   vel[i] = vec4(v, foam);
+#ifdef LISTS
+  displacementBoxAdd(i, x);  // where this step's forces act
+#endif
+}
+
+void main() {
+  const uint i = globalIndex();
+#ifdef LISTS
+  displacementBoxBegin();
+  if (i < uCount) driftBall(i);
+  displacementBoxEnd(groupIndex());
+#else
+  if (i < uCount) driftBall(i);
+#endif
 }

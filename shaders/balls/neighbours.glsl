@@ -10,6 +10,15 @@
 #include "common/grid.glsl"
 
 layout(std430, binding = BALLS_CELL_START) readonly buffer CellStart { uint cellStart[]; };
+#ifdef LISTS
+// List mode: the balls stay in place, the grid's sorted order is a permutation, the lists hold
+// each ball's neighbours within 2r + skin (balls/lists.glsl).
+layout(std430, binding = BALLS_LIST_PERM) readonly buffer Perm { uint perm[]; };
+#include "balls/lists.glsl"
+#define GRID_BALL(m) perm[m]
+#else
+#define GRID_BALL(m) (m)
+#endif
 #ifdef HAS_OBSTACLE
 layout(std430, binding = BALLS_OBST_POS) readonly buffer ObstaclePos { vec4 obstaclePos[]; };
 layout(std430, binding = BALLS_OBST_CELL_START) readonly buffer ObstacleCellStart { uint obstacleCellStart[]; };
@@ -32,8 +41,8 @@ void candidate(uint j, vec3 p, vec3 q, float reach) {
   onContact(d / dist, reach - dist, velIn[j].xyz, 0.5, 0.5);
 }
 
-void forEachContact(vec3 p) {
-  const float reach = 2.0 * uRadius;
+// Every ball within reach, from the 27 cells around p (the cells are at least 2r).
+void forEachGridContact(vec3 p, float reach) {
   const ivec3 c = cellCoord(p);
   // Cells are numbered x fastest, so the three cells x-1..x+1 of a row hold one contiguous run
   // of balls: 9 runs instead of 27 cells (fewer cellStart reads and loop heads).
@@ -44,8 +53,32 @@ void forEachContact(vec3 p) {
       if (!cellInGrid(row)) continue;
       const uint first = cellIndex(row);
       const uint end = cellStart[first + uint(x1 - x0) + 1u];
-      for (uint j = cellStart[first]; j < end; ++j) candidate(j, p, posIn[j].xyz, reach);
+      for (uint m = cellStart[first]; m < end; ++m) {
+        const uint j = GRID_BALL(m);
+        candidate(j, p, posIn[j].xyz, reach);
+      }
     }
+}
+
+// Ball i at p: every ball within 2r, then every obstacle particle.
+void forEachContact(uint i, vec3 p) {
+  const float reach = 2.0 * uRadius;
+#ifdef LISTS
+  // The list from the last build holds every ball now within 2r (the gate rebuilds it before it
+  // could miss one); a ball that had more neighbours than the list holds walks the grid, which
+  // the gate rebuilds every step while any list overflows.
+  const uint n = lists[listEntry(3u, i)];
+  if (n <= uListCapacity) {
+    for (uint k = 0u; k < n; ++k) {
+      const uint j = lists[listEntry(uint(BALLS_LIST_FIRST) + k, i)];
+      candidate(j, p, posIn[j].xyz, reach);
+    }
+  } else {
+    forEachGridContact(p, reach);
+  }
+#else
+  forEachGridContact(p, reach);
+#endif
 #ifdef HAS_OBSTACLE
   // The grid covers every obstacle particle a ball can reach; balls more than a cell outside it
   // touch none. Rows of three cells are contiguous, as above.

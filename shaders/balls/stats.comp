@@ -50,7 +50,7 @@ void main() {
       gMaxOverlap = 0.0;
       gSumOverlap = 0.0;
       gContacts = 0.0;
-      forEachContact(p);
+      forEachContact(i, p);
       values[BALLS_STATS_KINETIC] = 0.5 * dot(v, v);
       values[BALLS_STATS_POTENTIAL] = -dot(uGravity, p - uDomainMin);
       values[BALLS_STATS_OVERLAP] = gSumOverlap / uRadius;

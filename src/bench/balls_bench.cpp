@@ -2,8 +2,11 @@
 // window of steps, split by pass, with steps per second and GPU bytes per ball. --n sets the
 // ball count of lattice scenes (bench-lattice); other scenes run as they are. --reorder
 // scatter,gather runs each size once per grid reorder mode (the scene's grid_reorder otherwise),
-// --deterministic on,off once per grid order (stable: bit-identical runs; the scene's otherwise).
+// --deterministic on,off once per grid order (stable: bit-identical runs; the scene's otherwise),
+// --neighbours grid,lists once per neighbour search, --skin 0.2,0.4 once per list skin (lists).
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 
 #include "base/error.h"
 #include "bench/bench.h"
@@ -13,8 +16,35 @@
 namespace tidepool::bench {
 namespace {
 
-int run(Env& env, const std::string& sceneName, const std::string& sizes, const std::string& window,
-        const std::string& reorder, const std::string& deterministic) {
+std::vector<balls::Neighbours> parseNeighbours(const std::string& text) {
+  auto one = [](const std::string& token) {
+    const auto& names = balls::kNeighboursNames;
+    const auto it = std::find(names.begin(), names.end(), token);
+    if (it == names.end()) throw Error("--neighbours '" + token + "' is not grid or lists");
+    return balls::Neighbours(it - names.begin());
+  };
+  return parseList(text, one, "--neighbours: nothing given (grid, lists or grid,lists)");
+}
+
+std::vector<float> parseSkins(const std::string& text) {
+  auto one = [](const std::string& token) {
+    char* end = nullptr;
+    const double v = std::strtod(token.c_str(), &end);
+    if (token.empty() || *end != '\0' || !(v >= 0.01 && v <= 4.0))
+      throw Error("--skin '" + token + "' is not a fraction of r in [0.01, 4]");
+    return float(v);
+  };
+  return parseList(text, one, "--skin: nothing given (e.g. 0.2,0.4)");
+}
+
+struct Options {
+  std::string scene = "bench-lattice", sizes = "65536,1M,4M,16M", window = "10:310", reorder, deterministic, neighbours,
+              skin;
+};
+
+int run(Env& env, const Options& o) {
+  const std::string &sceneName = o.scene, &sizes = o.sizes, &window = o.window, &reorder = o.reorder,
+                    &deterministic = o.deterministic;
   const Scene scene = loadScene(resolveScenePath(sceneName));
   const balls::Params base = ballsParams(scene);
   const StepWindow w = parseStepWindow(window);
@@ -23,28 +53,44 @@ int run(Env& env, const std::string& sceneName, const std::string& sizes, const 
       reorder.empty() ? std::vector<grid::ReorderMode>{base.gridReorder} : parseReorderModes(reorder);
   const std::vector<bool> orders =
       deterministic.empty() ? std::vector<bool>{base.deterministic} : parseOnOff(deterministic, "--deterministic");
+  const std::vector<balls::Neighbours> searches =
+      o.neighbours.empty() ? std::vector<balls::Neighbours>{base.neighbours} : parseNeighbours(o.neighbours);
+  const std::vector<float> skins = o.skin.empty() ? std::vector<float>{base.skin} : parseSkins(o.skin);
   std::printf("balls benchmark on %s: scene %s, steps %d..%d, medians per step\n", env.device.c_str(),
               scene.name.c_str(), w.first, w.last);
-  Table table({"balls", "r", "cells", "reorder", "determ.", "count ms", "scan ms", "reorder ms", "drift ms",
-               "collide ms", "obstacles ms", "ms/step", "steps/s", "bytes/ball"});
+  Table table({"balls", "r", "cells", "reorder", "determ.", "search", "count ms", "scan ms", "reorder ms", "lists ms",
+               "drift ms", "collide ms", "obstacles ms", "ms/step", "steps/s", "steps/build", "bytes/ball"});
   std::vector<std::size_t> counts = lattice ? parseSizes(sizes) : std::vector<std::size_t>{0};
   for (std::size_t n : counts)
     for (grid::ReorderMode mode : modes)
-      for (bool stable : orders) {
-        balls::Params p = base;
-        p.deterministic = stable;
-        if (lattice) p.latticeCount = int(n);
-        p.gridReorder = mode;
-        balls::Balls model(env.shaders, p);
-        const PassTimes t = timePasses(w.first, w.last - w.first, [&](gl::GpuProfiler& p) { model.stepOnce(&p); });
-        const double perStep = t.frameMs();
-        table.add({std::to_string(model.count()), fixed(model.radius(), 5), std::to_string(model.cells()),
-                   grid::kReorderModeNames[std::size_t(mode)], stable ? "on" : "off", fixed(t.median("balls.count"), 4),
-                   fixed(t.median("balls.scan"), 4), fixed(t.median("balls.reorder"), 4),
-                   fixed(t.median("balls.drift"), 4), fixed(t.median("balls.collide"), 4),
-                   fixed(t.median("balls.obstacles"), 4), fixed(perStep, 4),
-                   fixed(perStep > 0 ? 1000.0 / perStep : 0.0, 0), std::to_string(model.bytesPerBall())});
-      }
+      for (bool stable : orders)
+        for (balls::Neighbours search : searches)
+          for (float skin : search == balls::Neighbours::Lists ? skins : std::vector<float>{base.skin}) {
+            balls::Params p = base;
+            p.deterministic = stable;
+            if (lattice) p.latticeCount = int(n);
+            p.gridReorder = mode;
+            p.neighbours = search;
+            p.skin = skin;
+            balls::Balls model(env.shaders, p);
+            const PassTimes t = timePasses(w.first, w.last - w.first, [&](gl::GpuProfiler& p) { model.stepOnce(&p); });
+            const double perStep = t.frameMs();
+            // Lists: the gate's section (count, scan, permutation, build) is timed as "balls.lists";
+            // steps per build over the whole run.
+            std::string searchName = balls::kNeighboursNames[std::size_t(search)], perBuild = "";
+            if (model.listsActive()) {
+              const balls::Balls::ListCounts c = model.listCounts();
+              searchName += " " + fixed(skin, 2);
+              perBuild = fixed(c.rebuilds > 0 ? double(c.steps) / c.rebuilds : 0.0, 1);
+            }
+            table.add({std::to_string(model.count()), fixed(model.radius(), 5), std::to_string(model.cells()),
+                       grid::kReorderModeNames[std::size_t(mode)], stable ? "on" : "off", searchName,
+                       fixed(t.median("balls.count"), 4), fixed(t.median("balls.scan"), 4),
+                       fixed(t.median("balls.reorder"), 4), fixed(t.median("balls.lists"), 4),
+                       fixed(t.median("balls.drift"), 4), fixed(t.median("balls.collide"), 4),
+                       fixed(t.median("balls.obstacles"), 4), fixed(perStep, 4),
+                       fixed(perStep > 0 ? 1000.0 / perStep : 0.0, 0), perBuild, std::to_string(model.bytesPerBall())});
+          }
   return finish(env, table, "; its per-pass timer queries read 0");
 }
 
@@ -52,10 +98,7 @@ int run(Env& env, const std::string& sceneName, const std::string& sizes, const 
 
 Benchmark addBallsBench(CLI::App& bench) {
   auto* sub = bench.add_subcommand("balls", "balls step: ms per pass over a step window, steps/s, bytes per ball");
-  struct Opts {
-    std::string scene = "bench-lattice", sizes = "65536,1M,4M,16M", window = "10:310", reorder, deterministic;
-  };
-  auto o = std::make_shared<Opts>();
+  auto o = std::make_shared<Options>();
   sub->add_option("scene", o->scene, "scene (default bench-lattice)");
   sub->add_option("--n", o->sizes, "ball counts for lattice scenes, e.g. 65536,1M,16M");
   sub->add_option("--steps", o->window, "timed step window FIRST:LAST");
@@ -63,7 +106,9 @@ Benchmark addBallsBench(CLI::App& bench) {
                   "grid reorder modes, one row each, e.g. scatter,gather (default: the scene's grid_reorder)");
   sub->add_option("--deterministic", o->deterministic,
                   "stable grid order (bit-identical runs) on or off, one row each, e.g. on,off");
-  return {sub, [o](Env& env) { return run(env, o->scene, o->sizes, o->window, o->reorder, o->deterministic); }};
+  sub->add_option("--neighbours", o->neighbours, "neighbour searches, one row each: grid, lists or grid,lists");
+  sub->add_option("--skin", o->skin, "list skins (fraction of r), one row each with lists, e.g. 0.2,0.4");
+  return {sub, [o](Env& env) { return run(env, *o); }};
 }
 
 }  // namespace tidepool::bench

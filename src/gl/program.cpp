@@ -1,5 +1,7 @@
 #include "gl/program.h"
 
+#include "gl/dispatch_gate.h"
+
 #include <glm/gtc/type_ptr.hpp>
 
 namespace tidepool::gl {
@@ -60,11 +62,9 @@ void Program::dispatchThreads(std::size_t threads) const {
   }();
   const std::size_t x = std::min<std::size_t>(groups, std::size_t(maxX));
   const std::size_t y = (groups + x - 1) / x;
-  glDispatchCompute(GLuint(x), GLuint(y), 1);
+  DispatchGate::dispatch({GLuint(x), GLuint(y), 1u});
 }
 
-void Program::dispatch(glm::uvec3 groups) const {
-  if (groups.x && groups.y && groups.z) glDispatchCompute(groups.x, groups.y, groups.z);
-}
+void Program::dispatch(glm::uvec3 groups) const { DispatchGate::dispatch(groups); }
 
 }  // namespace tidepool::gl

@@ -6,6 +6,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "balls/bindings.glsl"
+#include "balls/list_layout.glsl"
 #include "balls/stats_layout.glsl"
 #include "base/error.h"
 #include "sim/balls/balls_init.h"
@@ -15,6 +16,15 @@
 namespace tidepool::balls {
 namespace {
 constexpr std::size_t kMaxCheckpointBalls = std::size_t(4) << 20;  // larger runs keep no copy to go back to
+
+std::size_t maxBlockBytes() {
+  static const std::size_t bytes = [] {
+    GLint64 v = 0;
+    glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &v);
+    return std::size_t(v);
+  }();
+  return bytes;
+}
 }  // namespace
 
 Balls::Balls(gl::ShaderLibrary& shaders, const Params& params)
@@ -23,12 +33,14 @@ Balls::Balls(gl::ShaderLibrary& shaders, const Params& params)
 }
 
 // GPU: positions and velocities twice, the accelerations (vec4 each), the permutation, the
-// grid's index in cell, stable members and gather permutation (a word each). Host: the initial
-// water (vec4) and its lattice (vec3).
+// grid's index in cell, stable members and gather permutation (a word each), with lists their
+// columns. Host: the initial water (vec4) and its lattice (vec3).
 sim::ParticleCost Balls::cost() const {
+  const std::size_t listWords =
+      m_params.neighbours == Neighbours::Lists ? BALLS_LIST_FIRST + std::size_t(m_params.listCapacity) : 0;
   return {.maxParticles = std::size_t(m_params.maxParticles),
           .arrayBytes = sizeof(glm::vec4),
-          .gpuBytes = 5 * sizeof(glm::vec4) + 4 * sizeof(GLuint),
+          .gpuBytes = 5 * sizeof(glm::vec4) + (4 + listWords) * sizeof(GLuint),
           .hostBytes = sizeof(glm::vec4) + sizeof(glm::vec3)};
 }
 
@@ -72,12 +84,8 @@ void Balls::reset() {
   m_posIndex = m_velIndex = 0;
   m_time = 0;
   m_accValid = false;
-  grid::GridParams gp{.domainMin = p.domainMin,
-                      .domainMax = p.domainMax,
-                      .cellSize = 2.0f * m_radius,
-                      .reorder = p.gridReorder,
-                      .stable = p.deterministic};
-  m_grid = std::make_unique<grid::UniformGrid>(m_shaders, gp, m_capacity);
+  m_grid.reset();
+  ensureGrid();
   m_obstacleError.clear();
   updateWalls();
 }
@@ -96,6 +104,7 @@ void Balls::emitFromTap() {
   m_acc.upload(zeros.data(), bytes, at);
   m_count += layer.pos.size();
   m_tapEmitted += layer.pos.size();
+  m_listsStale = true;
   m_tapNextLayer = m_time + layer.interval;
 }
 
@@ -150,6 +159,7 @@ void Balls::resume(const sim::StateStamp& good) {
   m_count = good.count;
   m_time = good.time;
   m_accValid = false;  // Verlet re-evaluates a(x) for the restored state
+  m_listsStale = true;
   m_params.dt *= 0.5f;
   m_params.substeps = std::min(m_params.substeps * 2, 1000);  // same simulated time per frame
 }
@@ -172,12 +182,27 @@ void Balls::visitOwnState(sim::StateVisitor& v) {
   v.value("model.tap_next_layer", m_tapNextLayer);
   v.flag("model.acc_valid", m_accValid);
   if (m_accValid) v.buffer("model.accelerations", m_acc, m_count * sizeof(glm::vec4));
+  if (v.loading()) ensureGrid();
+  // Verlet lists as they are (with their control words), so that the restored run rebuilds when
+  // the straight one would and sums in the same order.
+  bool lists = m_lists.size() > 0, stale = m_listsStale;
+  v.flag("model.lists", lists);
+  if (lists != (m_lists.size() > 0)) v.fail("entry 'model.lists' does not match the parameters' neighbour search");
+  if (lists) {
+    v.flag("model.lists_stale", stale);
+    v.buffer("model.neighbour_lists", m_lists, m_lists.size());
+    if (v.loading()) {
+      m_listsStale = stale;
+      m_gate.forget();  // noted again, without running, at the next step
+    }
+  }
   if (v.loading()) updateWalls();
 }
 
 std::size_t Balls::bytesPerBall() const {
   if (m_count == 0) return 0;
-  const std::size_t own = m_pos[0].size() * 2 + m_vel[0].size() * 2 + m_acc.size() + m_permutation.size();
+  const std::size_t own =
+      m_pos[0].size() * 2 + m_vel[0].size() * 2 + m_acc.size() + m_permutation.size() + m_lists.size();
   return (own + m_grid->memoryBytes()) / m_count;
 }
 
@@ -188,9 +213,68 @@ void Balls::upload(const std::vector<glm::vec4>& pos, const std::vector<glm::vec
   m_pos[0].upload(pos.data(), pos.size() * sizeof(glm::vec4));
   m_vel[0].upload(vel.data(), vel.size() * sizeof(glm::vec4));
   m_accValid = false;
+  m_listsStale = true;
+  ensureGrid();    // lists for the new capacity
   restartWatch();  // a new state: nothing judged yet
 }
 
-std::vector<GLuint> Balls::lastOrder() const { return m_permutation.read<GLuint>(m_count); }
+void Balls::uploadAccelerations(const std::vector<glm::vec4>& acc) {
+  if (acc.size() != m_count) throw Error("balls: upload needs an acceleration per ball");
+  m_acc.upload(acc.data(), acc.size() * sizeof(glm::vec4));
+  m_accValid = true;
+}
+
+std::vector<GLuint> Balls::lastOrder() const {
+  if (listsActive()) {  // the balls stay in place
+    std::vector<GLuint> order(m_count);
+    for (std::size_t i = 0; i < m_count; ++i) order[i] = GLuint(i);
+    return order;
+  }
+  return m_permutation.read<GLuint>(m_count);
+}
+
+std::size_t Balls::listCapacity() const {
+  if (m_params.neighbours != Neighbours::Lists || m_capacity == 0) return 0;
+  const std::size_t words = maxBlockBytes() / sizeof(GLuint);
+  if (words <= BALLS_LIST_CONTROL_WORDS) return 0;
+  const std::size_t columns = (words - BALLS_LIST_CONTROL_WORDS) / m_capacity;
+  return columns > BALLS_LIST_FIRST ? std::min(std::size_t(m_params.listCapacity), columns - BALLS_LIST_FIRST) : 0;
+}
+
+bool Balls::listsActive() const { return m_lists.size() > 0 && !m_obstacles.active(); }
+
+Balls::ListCounts Balls::listCounts() const {
+  if (m_lists.size() == 0) return {};
+  GLuint words[3] = {};
+  m_lists.download(words, sizeof words, (m_listColumns * m_capacity + BALLS_LIST_OVERFLOW) * sizeof(GLuint));
+  return {.rebuilds = words[1], .steps = words[2], .overflow = words[0]};
+}
+
+// The grid's cells reach every pair the neighbour search needs (2r; with lists 2r + skin), and
+// with lists the lists' buffer holds the capacity: both made again when the parameters change.
+void Balls::ensureGrid() {
+  const bool lists = m_params.neighbours == Neighbours::Lists;
+  const std::size_t capacity = listCapacity();
+  const std::size_t columns = capacity > 0 ? BALLS_LIST_FIRST + capacity : 0;
+  const std::size_t bytes = columns > 0 ? (columns * m_capacity + BALLS_LIST_CONTROL_WORDS) * sizeof(GLuint) : 0;
+  if (m_lists.size() != bytes || m_listColumns != columns) {
+    m_lists = bytes > 0 ? gl::Buffer(bytes) : gl::Buffer();
+    if (bytes > 0) m_lists.fillZero();
+    m_listColumns = columns;
+    m_listsStale = true;
+    m_gate.forget();
+  }
+  const float cell = (lists && capacity > 0 ? 2.0f + m_params.skin : 2.0f) * m_radius;
+  if (m_grid && m_grid->params().cellSize == cell) return;
+  const Params p = resolved(m_params);
+  grid::GridParams gp{.domainMin = p.domainMin,
+                      .domainMax = p.domainMax,
+                      .cellSize = cell,
+                      .reorder = p.gridReorder,
+                      .stable = p.deterministic};
+  m_grid = std::make_unique<grid::UniformGrid>(m_shaders, gp, m_capacity);
+  m_listsStale = true;
+  m_gate.forget();
+}
 
 }  // namespace tidepool::balls

@@ -8,6 +8,10 @@
 // One step (stepOnce), a list of passes (balls_passes.cpp):
 //   symplectic / explicit Euler:  placeObstacles(t)      -> sortByCell -> collide (forces, integrate)
 //   velocity Verlet:              placeObstacles(t + dt) -> drift -> sortByCell -> collide (forces, kick)
+// With Verlet lists (Params::neighbours = lists, no obstacle) sortByCell gives way to gateLists:
+// the balls stay in place, and the grid (cells of 2r + skin) and the lists are rebuilt only when
+// the gate kernel finds the displacements since the last build too large (GPU-side, through
+// gl::DispatchGate: no read-back); collide reads each ball's list.
 #pragma once
 
 #include <memory>
@@ -15,6 +19,7 @@
 #include <string>
 
 #include "gl/buffer.h"
+#include "gl/dispatch_gate.h"
 #include "gl/gpu_profiler.h"
 #include "gl/shader_library.h"
 #include "grid/grid.h"
@@ -82,6 +87,17 @@ class Balls final : public sim::Model, public sim::ParticleWater {
   std::vector<glm::vec4> downloadPositions() const { return positions().read<glm::vec4>(m_count); }
   std::vector<glm::vec4> downloadVelocities() const { return velocities().read<glm::vec4>(m_count); }
   void trackOrder(bool on) { m_trackOrder = on; }
+  // Tests: velocity Verlet's a(x), part of its state (it was evaluated with the half-step velocity).
+  std::vector<glm::vec4> downloadAccelerations() const { return m_acc.read<glm::vec4>(m_count); }
+  void uploadAccelerations(const std::vector<glm::vec4>& acc);
+  // Verlet lists (tests, bench; blocking): builds and gated steps since the lists were made, and
+  // the balls whose neighbours overflowed their list at the last build.
+  struct ListCounts {
+    std::uint32_t rebuilds = 0, steps = 0, overflow = 0;
+  };
+  ListCounts listCounts() const;
+  bool listsActive() const;               // lists chosen, no obstacle, a capacity that fits
+  std::size_t listCapacity() const;       // neighbours per list, as the device's storage-block limit allows
   std::vector<GLuint> lastOrder() const;  // lastOrder()[k] = index before the step of ball k after it
 
  private:
@@ -111,8 +127,14 @@ class Balls final : public sim::Model, public sim::ParticleWater {
   void drift(gl::GpuProfiler* profiler);                        // Verlet: v½ = v + dt/2·a, x += dt·v½
   void sortByCell(gl::GpuProfiler* profiler);             // grid count + scan, positions and velocities to cell order
   void collide(gl::GpuProfiler* profiler, Collide what);  // contacts, walls, gravity on the sorted balls
-  std::vector<gl::ShaderDefine> defines(bool verlet) const;
-  gl::Program& useKernel(const char* file, bool verlet);  // in use, with the common uniforms set
+  // Verlet lists: the grid's cells for the parameters (2r, or 2r + skin with lists), the lists'
+  // buffer; the gate kernel, then (when it opens) count, scan, permutation and list build.
+  void ensureGrid();
+  void gateLists(gl::GpuProfiler* profiler);
+  void buildLists();
+  void bindLists(gl::Program& program) const;
+  std::vector<gl::ShaderDefine> defines(bool verlet, bool lists = false) const;
+  gl::Program& useKernel(const char* file, bool verlet, bool lists = false);  // in use, common uniforms set
 
   gl::ShaderLibrary& m_shaders;
   Params m_params;
@@ -130,6 +152,12 @@ class Balls final : public sim::Model, public sim::ParticleWater {
   glm::vec3 m_wallMin{0.0f}, m_wallMax{1.0f}, m_wallMinVel{0.0f}, m_wallMaxVel{0.0f};
   double m_time = 0;
   bool m_trackOrder = false, m_accValid = false;
+  // Verlet lists (balls/list_layout.glsl): columns of m_capacity words, then the control words.
+  gl::Buffer m_lists;
+  std::size_t m_listColumns = 0;
+  gl::DispatchGate m_gate;
+  std::size_t m_gateCount = 0;  // balls when the gated section was recorded
+  bool m_listsStale = true;     // the next gate rebuilds (new balls, a reset, a step without lists)
 };
 
 }  // namespace tidepool::balls

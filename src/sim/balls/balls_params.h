@@ -19,6 +19,10 @@ enum class Contact { Penalty, SpringDashpot, CudaSample };
 constexpr std::array<const char*, 3> kContactNames = {"penalty", "spring-dashpot", "cuda-sample"};
 enum class Integrator { ExplicitEuler, SymplecticEuler, VelocityVerlet };
 constexpr std::array<const char*, 3> kIntegratorNames = {"explicit-euler", "symplectic-euler", "verlet"};
+// How each step finds the pairs within 2r: the grid's 27 cells every step, or Verlet lists of the
+// balls within 2r + skin, rebuilt from the grid only when the balls may have moved past the skin.
+enum class Neighbours { Grid, Lists };
+constexpr std::array<const char*, 2> kNeighboursNames = {"grid", "lists"};
 enum class Fill { Block, Slab, Random, Lattice, None };
 constexpr std::array<const char*, 5> kFillNames = {"block", "slab", "random", "lattice", "none"};
 enum class Shape { None, Sphere, Box, Capsule, Cup, Helix, Mesh };
@@ -80,6 +84,12 @@ struct Params {
   // Reproducible runs: the grid orders each cell's balls by index (grid/grid.h, GridParams::stable),
   // so every step sums contacts in the same order and a run is bit-identical on the same GPU.
   bool deterministic = true;
+  // Neighbour search (see Neighbours): lists find the same contacts as the grid (the forces agree to
+  // float rounding: the sums run in another order). skin: fraction of r; list_capacity: neighbours
+  // per ball (a ball with more walks the grid). Obstacles use the grid's cells either way.
+  Neighbours neighbours = Neighbours::Grid;
+  float skin = 0.4f;
+  int listCapacity = 28;
   // spring-dashpot: k and gamma from the contact duration and restitution (per unit effective mass)
   float contactTime = 0.01f;  // t_c, s
   float restitution = 0.5f;   // e

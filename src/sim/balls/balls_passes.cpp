@@ -4,7 +4,9 @@
 #include <cstddef>
 
 #include "balls/bindings.glsl"
+#include "balls/list_layout.glsl"
 #include "balls/stats_layout.glsl"
+#include "common/dispatch_gate_layout.glsl"
 #include "sim/balls/balls.h"
 
 namespace tidepool::balls {
@@ -45,18 +47,22 @@ void Balls::stepOnce(gl::GpuProfiler* profiler) {
   updateWalls();
   rebuildObstacles();
   emitFromTap();
+  ensureGrid();  // a live edit of the neighbour search
   // Obstacles are placed where they are when the forces act: at t, or at t + dt for Verlet's
   // forces on the drifted positions.
   const bool verlet = m_params.integrator == Integrator::VelocityVerlet;
+  const bool lists = listsActive();
+  if (!lists) m_listsStale = true;  // balls reordered meanwhile: the lists' indices are void
+  auto neighbours = [&](gl::GpuProfiler* prof) { lists ? gateLists(prof) : sortByCell(prof); };
   if (verlet && !m_accValid && m_count > 0) {  // a(x0) for the first drift
     placeObstacles(m_time, nullptr);
-    sortByCell(nullptr);
+    neighbours(nullptr);
     collide(nullptr, Collide::VerletForces);
   }
   placeObstacles(verlet ? m_time + m_params.dt : m_time, profiler);
   if (m_count > 0) {
     if (verlet) drift(profiler);
-    sortByCell(profiler);
+    neighbours(profiler);
     collide(profiler, verlet ? Collide::VerletKick : Collide::Integrate);
     m_accValid = verlet;
   }
@@ -76,8 +82,9 @@ void Balls::placeObstacles(double time, gl::GpuProfiler* profiler) {
   m_obstacles.place(m_params.obstacles, time, m_params.domainMin, m_params.domainMax, profiler);
 }
 
-std::vector<gl::ShaderDefine> Balls::defines(bool verlet) const {
+std::vector<gl::ShaderDefine> Balls::defines(bool verlet, bool lists) const {
   std::vector<gl::ShaderDefine> d;
+  if (lists) d.push_back({"LISTS", ""});
   switch (m_params.contact) {
     case Contact::Penalty: d.push_back({"CONTACT_PENALTY", ""}); break;
     case Contact::CudaSample: d.push_back({"CONTACT_CUDA", ""}); break;
@@ -91,8 +98,8 @@ std::vector<gl::ShaderDefine> Balls::defines(bool verlet) const {
   return d;
 }
 
-gl::Program& Balls::useKernel(const char* file, bool verlet) {
-  gl::Program& p = m_shaders.program({file}, defines(verlet));
+gl::Program& Balls::useKernel(const char* file, bool verlet, bool lists) {
+  gl::Program& p = m_shaders.program({file}, defines(verlet, lists));
   const Params& q = m_params;
   p.use();
   p.set("uCount", GLuint(m_count));
@@ -122,7 +129,9 @@ gl::Program& Balls::useKernel(const char* file, bool verlet) {
 
 void Balls::drift(gl::GpuProfiler* profiler) {
   auto scope = timed(profiler, "balls.drift");
-  gl::Program& p = useKernel("balls/drift.comp", false);
+  const bool lists = listsActive();
+  gl::Program& p = useKernel("balls/drift.comp", false, lists);
+  if (lists) bindLists(p);
   m_pos[m_posIndex].bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_POS_OUT);
   m_vel[m_velIndex].bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VEL_OUT);
   m_acc.bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_ACC);
@@ -151,7 +160,25 @@ void Balls::collide(gl::GpuProfiler* profiler, Collide what) {
   auto scope = timed(profiler, "balls.collide");
   const bool verlet = what != Collide::Integrate;
   const int p = m_posIndex, v = m_velIndex;
-  gl::Program& collide = useKernel("balls/collide.comp", verlet);
+  const bool lists = listsActive();
+  gl::Program& collide = useKernel("balls/collide.comp", verlet, lists);
+  if (lists) {  // the balls in place: read the current buffers, write the others
+    bindLists(collide);
+    m_pos[p].bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_POS_IN);
+    m_vel[v].bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VEL_IN);
+    m_vel[1 - v].bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VEL_OUT);
+    m_velIndex = 1 - v;
+    if (verlet) {
+      collide.set("uKick", what == Collide::VerletKick ? 0.5f : 0.0f);
+      m_acc.bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_ACC);
+    } else {
+      m_pos[1 - p].bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_POS_OUT);
+      m_posIndex = 1 - p;
+    }
+    collide.dispatchThreads(m_count);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    return;
+  }
   m_pos[1 - p].bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_POS_IN);  // the cell-ordered copies
   m_vel[1 - v].bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VEL_IN);
   m_vel[v].bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VEL_OUT);
@@ -163,6 +190,73 @@ void Balls::collide(gl::GpuProfiler* profiler, Collide what) {
     m_pos[p].bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_POS_OUT);
   }
   collide.dispatchThreads(m_count);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+void Balls::bindLists(gl::Program& program) const {
+  m_lists.bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_LISTS);
+  m_permutation.bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_LIST_PERM);
+  program.set("uListStride", GLuint(m_capacity));
+  program.set("uListCapacity", GLuint(m_listColumns - BALLS_LIST_FIRST));
+  program.set("uControl", GLuint(m_listColumns * m_capacity));
+}
+
+// The gate kernel judges the displacements the last step left (balls/list_gate.comp) and opens
+// or closes the gated section: the grid at the current positions (count, scan, the stable
+// permutation; the balls are not moved) and the lists from it. The first time, and after the
+// balls changed, the section runs unconditionally and is recorded; after a restore it is noted
+// without running, so the saved lists stay in use.
+void Balls::gateLists(gl::GpuProfiler* profiler) {
+  auto scope = timed(profiler, "balls.lists");
+  const int p = m_posIndex;
+  m_grid->setStable(m_params.deterministic);
+  auto section = [&] {
+    m_grid->countParticles(m_pos[p], m_count);
+    m_grid->scanCells();
+    m_grid->reorder(m_pos[p], {}, &m_permutation);
+    buildLists();
+  };
+  gl::Program& gate = m_shaders.program({"balls/list_gate.comp"});
+  gate.use();
+  bindLists(gate);
+  gate.set("uSkin", m_params.skin * m_radius);
+  const bool record = m_listsStale && (!m_gate.recorded() || m_gateCount != m_count);
+  if (!record && (!m_gate.recorded() || m_gateCount != m_count)) {
+    m_gate.note(section);
+    m_gateCount = m_count;
+  }
+  if (record) {
+    gate.set("uForce", 1u);
+    gate.set("uGateDispatches", 0u);
+    m_lists.bindBase(GL_SHADER_STORAGE_BUFFER, DISPATCH_GATE_GROUPS);  // not read: no dispatch recorded yet
+    m_lists.bindBase(GL_SHADER_STORAGE_BUFFER, DISPATCH_GATE_ARGS);
+    gate.dispatch({1, 1, 1});
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    bindLists(gate);
+    m_gate.record(section);
+    m_gateCount = m_count;
+  } else {
+    gate.set("uForce", m_listsStale ? 1u : 0u);
+    gate.set("uGateDispatches", GLuint(m_gate.dispatches()));
+    m_gate.recordedGroups().bindBase(GL_SHADER_STORAGE_BUFFER, DISPATCH_GATE_GROUPS);
+    m_gate.arguments().bindBase(GL_SHADER_STORAGE_BUFFER, DISPATCH_GATE_ARGS);
+    gate.dispatch({1, 1, 1});
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+    m_gate.replay(section);
+  }
+  m_listsStale = false;
+}
+
+void Balls::buildLists() {
+  gl::Program& build = m_shaders.program({"balls/list_build.comp"});
+  build.use();
+  m_grid->setUniforms(build);
+  bindLists(build);
+  build.set("uCount", GLuint(m_count));
+  build.set("uListReach", (2.0f + m_params.skin) * m_radius);
+  m_pos[m_posIndex].bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_POS_IN);
+  m_grid->cellStart().bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_CELL_START);
+  build.dispatchThreads(m_count);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
