@@ -9,7 +9,6 @@
 #define BALLS_OBST_POS 6       // vec4 obstacle particles (world, w = obstacle index), obstacle-grid cell order
 #define BALLS_OBST_CELL_START 7  // uint per obstacle-grid cell + 1
 #define BALLS_LISTS 6           // Verlet lists (balls/list_layout.glsl), list mode: no obstacle particles then
-#define BALLS_LIST_PERM 7      // uint per ball, list mode: the grid's sorted order (ball of each slot)
 #define BALLS_OBST_POSES 0     // uniform block (std140): each obstacle's pose and velocity (obstacle_poses.glsl)
 #define BALLS_MAX_OBSTACLES 16
 #define BALLS_STATS 2          // stats pass: BALLS_STATS_VALUES floats per work group (stats_layout.glsl; reuses POS_OUT)

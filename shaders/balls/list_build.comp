@@ -1,8 +1,8 @@
 #version 430 core
 // Verlet lists: each ball's neighbours within 2r + skin, from the grid just built (cells of
-// 2r + skin, so 27 cells hold them all), in the grid's order: invocation k takes the ball in
-// sorted slot k (neighbouring invocations, neighbouring balls: coherent loads), and the stable
-// grid's order makes the lists, and so the sums over them, the same on every run. The balls stay
+// 2r + skin, so 27 cells hold them all). The balls were just moved into the grid's order, so each
+// cell's balls are contiguous, as in the grid path's collide, and the stable grid's order makes
+// the lists, and so the sums over them, the same on every run. Between builds the balls stay
 // where they are in memory; the lists hold their indices.
 #include "balls/bindings.glsl"
 
@@ -13,15 +13,13 @@ layout(local_size_x = BALLS_GROUP_SIZE) in;
 
 layout(std430, binding = BALLS_POS_IN) readonly buffer PosIn { vec4 posIn[]; };
 layout(std430, binding = BALLS_CELL_START) readonly buffer CellStart { uint cellStart[]; };
-layout(std430, binding = BALLS_LIST_PERM) readonly buffer Perm { uint perm[]; };
 
 uniform uint uCount;
 uniform float uListReach;  // 2r + skin, m
 
 void main() {
-  const uint k = globalIndex();
-  if (k >= uCount) return;
-  const uint i = perm[k];
+  const uint i = globalIndex();
+  if (i >= uCount) return;
   const vec3 p = posIn[i].xyz;
   const float reach2 = uListReach * uListReach;
   uint n = 0u;
@@ -33,8 +31,7 @@ void main() {
       if (!cellInGrid(row)) continue;
       const uint first = cellIndex(row);
       const uint end = cellStart[first + uint(x1 - x0) + 1u];
-      for (uint m = cellStart[first]; m < end; ++m) {
-        const uint j = perm[m];
+      for (uint j = cellStart[first]; j < end; ++j) {
         const vec3 d = p - posIn[j].xyz;
         if (j == i || dot(d, d) >= reach2) continue;
         if (n < uListCapacity) lists[listEntry(uint(BALLS_LIST_FIRST) + n, i)] = j;

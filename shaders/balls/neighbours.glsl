@@ -11,13 +11,9 @@
 
 layout(std430, binding = BALLS_CELL_START) readonly buffer CellStart { uint cellStart[]; };
 #ifdef LISTS
-// List mode: the balls stay in place, the grid's sorted order is a permutation, the lists hold
-// each ball's neighbours within 2r + skin (balls/lists.glsl).
-layout(std430, binding = BALLS_LIST_PERM) readonly buffer Perm { uint perm[]; };
+// List mode: the balls lie in the grid's order of the last build, and the lists hold each ball's
+// neighbours within 2r + skin then (balls/lists.glsl).
 #include "balls/lists.glsl"
-#define GRID_BALL(m) perm[m]
-#else
-#define GRID_BALL(m) (m)
 #endif
 #ifdef HAS_OBSTACLE
 layout(std430, binding = BALLS_OBST_POS) readonly buffer ObstaclePos { vec4 obstaclePos[]; };
@@ -53,10 +49,7 @@ void forEachGridContact(vec3 p, float reach) {
       if (!cellInGrid(row)) continue;
       const uint first = cellIndex(row);
       const uint end = cellStart[first + uint(x1 - x0) + 1u];
-      for (uint m = cellStart[first]; m < end; ++m) {
-        const uint j = GRID_BALL(m);
-        candidate(j, p, posIn[j].xyz, reach);
-      }
+      for (uint j = cellStart[first]; j < end; ++j) candidate(j, p, posIn[j].xyz, reach);
     }
 }
 
@@ -66,7 +59,7 @@ void forEachContact(uint i, vec3 p) {
 #ifdef LISTS
   // The list from the last build holds every ball now within 2r (the gate rebuilds it before it
   // could miss one); a ball that had more neighbours than the list holds walks the grid, which
-  // the gate rebuilds every step while any list overflows.
+  // the gate rebuilds (with the balls in its order) every step while any list overflows.
   const uint n = lists[listEntry(3u, i)];
   if (n <= uListCapacity) {
     for (uint k = 0u; k < n; ++k) {

@@ -28,7 +28,11 @@ std::size_t maxBlockBytes() {
 }  // namespace
 
 Balls::Balls(gl::ShaderLibrary& shaders, const Params& params)
-    : Model(shaders, "balls", kMaxCheckpointBalls), m_shaders(shaders), m_params(params), m_obstacles(shaders) {
+    : Model(shaders, "balls", kMaxCheckpointBalls),
+      m_shaders(shaders),
+      m_params(params),
+      m_obstacles(shaders),
+      m_ops(shaders) {
   reset();
 }
 
@@ -194,6 +198,7 @@ void Balls::visitOwnState(sim::StateVisitor& v) {
     if (v.loading()) {
       m_listsStale = stale;
       m_gate.forget();  // noted again, without running, at the next step
+      m_gateKey = gateKey();
     }
   }
   if (v.loading()) updateWalls();
@@ -225,11 +230,8 @@ void Balls::uploadAccelerations(const std::vector<glm::vec4>& acc) {
 }
 
 std::vector<GLuint> Balls::lastOrder() const {
-  if (listsActive()) {  // the balls stay in place
-    std::vector<GLuint> order(m_count);
-    for (std::size_t i = 0; i < m_count; ++i) order[i] = GLuint(i);
-    return order;
-  }
+  // With lists the balls move into the grid's order only at the steps the GPU chose to rebuild.
+  if (listsActive()) throw Error("balls: the order of a step is not tracked with neighbours: lists");
   return m_permutation.read<GLuint>(m_count);
 }
 

@@ -9,9 +9,10 @@
 //   symplectic / explicit Euler:  placeObstacles(t)      -> sortByCell -> collide (forces, integrate)
 //   velocity Verlet:              placeObstacles(t + dt) -> drift -> sortByCell -> collide (forces, kick)
 // With Verlet lists (Params::neighbours = lists, no obstacle) sortByCell gives way to gateLists:
-// the balls stay in place, and the grid (cells of 2r + skin) and the lists are rebuilt only when
-// the gate kernel finds the displacements since the last build too large (GPU-side, through
-// gl::DispatchGate: no read-back); collide reads each ball's list.
+// the grid (cells of 2r + skin), the balls' order and the lists are rebuilt only when the gate
+// kernel finds the displacements since the last build too large (GPU-side, through
+// gl::DispatchGate: no read-back); between builds the balls stay in place and collide reads each
+// ball's list.
 #pragma once
 
 #include <memory>
@@ -19,6 +20,7 @@
 #include <string>
 
 #include "gl/buffer.h"
+#include "gl/buffer_ops.h"
 #include "gl/dispatch_gate.h"
 #include "gl/gpu_profiler.h"
 #include "gl/shader_library.h"
@@ -156,8 +158,16 @@ class Balls final : public sim::Model, public sim::ParticleWater {
   gl::Buffer m_lists;
   std::size_t m_listColumns = 0;
   gl::DispatchGate m_gate;
-  std::size_t m_gateCount = 0;  // balls when the gated section was recorded
-  bool m_listsStale = true;     // the next gate rebuilds (new balls, a reset, a step without lists)
+  struct GateKey {  // what decides the gated section's dispatches
+    std::size_t count = 0;
+    bool verlet = false, stable = false;
+    grid::ReorderMode reorder = grid::ReorderMode::Gather;
+    bool operator==(const GateKey&) const = default;
+  } m_gateKey;
+  GateKey gateKey() const;  // now
+  gl::Buffer m_accScratch;  // Verlet with lists: a(x) in the grid's order at a rebuild
+  gl::BufferOps m_ops;
+  bool m_listsStale = true;  // the next gate rebuilds (new balls, a reset, a step without lists)
 };
 
 }  // namespace tidepool::balls

@@ -195,36 +195,49 @@ void Balls::collide(gl::GpuProfiler* profiler, Collide what) {
 
 void Balls::bindLists(gl::Program& program) const {
   m_lists.bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_LISTS);
-  m_permutation.bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_LIST_PERM);
   program.set("uListStride", GLuint(m_capacity));
   program.set("uListCapacity", GLuint(m_listColumns - BALLS_LIST_FIRST));
   program.set("uControl", GLuint(m_listColumns * m_capacity));
 }
 
 // The gate kernel judges the displacements the last step left (balls/list_gate.comp) and opens
-// or closes the gated section: the grid at the current positions (count, scan, the stable
-// permutation; the balls are not moved) and the lists from it. The first time, and after the
-// balls changed, the section runs unconditionally and is recorded; after a restore it is noted
+// or closes the gated section: the grid at the current positions, the balls gathered into its
+// order in the spare buffers and copied back (so that the current buffers stay current whether
+// the gate opened or not), and the lists. The first time, and after the balls or the section's
+// passes changed, the section runs unconditionally and is recorded; after a restore it is noted
 // without running, so the saved lists stay in use.
 void Balls::gateLists(gl::GpuProfiler* profiler) {
   auto scope = timed(profiler, "balls.lists");
-  const int p = m_posIndex;
+  const int p = m_posIndex, v = m_velIndex;
+  const bool verlet = m_params.integrator == Integrator::VelocityVerlet;
+  const std::size_t bytes = m_count * sizeof(glm::vec4);
+  m_grid->setReorderMode(m_params.gridReorder);
   m_grid->setStable(m_params.deterministic);
+  const GateKey key = gateKey();
+  if (!(key == m_gateKey)) {  // other passes in the section: record it again
+    m_gate.forget();
+    m_listsStale = true;
+    m_gateKey = key;
+  }
+  if (verlet && m_accScratch.size() < m_acc.size()) m_accScratch = gl::Buffer(m_acc.size());
   auto section = [&] {
     m_grid->countParticles(m_pos[p], m_count);
     m_grid->scanCells();
-    m_grid->reorder(m_pos[p], {}, &m_permutation);
+    std::vector<grid::ReorderArray> arrays{{&m_pos[p], &m_pos[1 - p]}, {&m_vel[v], &m_vel[1 - v]}};
+    if (verlet) arrays.push_back({&m_acc, &m_accScratch});  // a(x) follows its ball
+    m_grid->reorder(m_pos[p], arrays, &m_permutation);
+    m_ops.copy(m_pos[1 - p], m_pos[p], bytes);
+    m_ops.copy(m_vel[1 - v], m_vel[v], bytes);
+    if (verlet) m_ops.copy(m_accScratch, m_acc, bytes);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     buildLists();
   };
+  const bool record = m_listsStale && !m_gate.recorded();
+  if (!record && !m_gate.recorded()) m_gate.note(section);  // before the gate is in use: it uses other programs
   gl::Program& gate = m_shaders.program({"balls/list_gate.comp"});
   gate.use();
   bindLists(gate);
   gate.set("uSkin", m_params.skin * m_radius);
-  const bool record = m_listsStale && (!m_gate.recorded() || m_gateCount != m_count);
-  if (!record && (!m_gate.recorded() || m_gateCount != m_count)) {
-    m_gate.note(section);
-    m_gateCount = m_count;
-  }
   if (record) {
     gate.set("uForce", 1u);
     gate.set("uGateDispatches", 0u);
@@ -234,7 +247,6 @@ void Balls::gateLists(gl::GpuProfiler* profiler) {
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     bindLists(gate);
     m_gate.record(section);
-    m_gateCount = m_count;
   } else {
     gate.set("uForce", m_listsStale ? 1u : 0u);
     gate.set("uGateDispatches", GLuint(m_gate.dispatches()));
@@ -245,6 +257,10 @@ void Balls::gateLists(gl::GpuProfiler* profiler) {
     m_gate.replay(section);
   }
   m_listsStale = false;
+}
+
+Balls::GateKey Balls::gateKey() const {
+  return {m_count, m_params.integrator == Integrator::VelocityVerlet, m_params.deterministic, m_params.gridReorder};
 }
 
 void Balls::buildLists() {
