@@ -78,7 +78,7 @@ int run(Env& env, const std::string& sceneName, const std::string& sizes, const 
             p.neighbourList = list;
             if (block) {
               p.spacing = spacingFor(base, n);
-              p.water.maxParticles = std::max(p.water.maxParticles, int(n + n / 8));
+              if (p.water.maxParticles > 0) p.water.maxParticles = std::max(p.water.maxParticles, int(n + n / 8));
             }
             p.iterations = k;
             fluid::Fluid model(env.shaders, p);

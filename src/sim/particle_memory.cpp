@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 
 #include "base/error.h"
 #include "gl/gl.h"
@@ -43,7 +44,10 @@ std::optional<std::size_t> freeHostBytes() {
 }
 
 ParticleFit particlesThatFit(const ParticleCost& cost, const char* particle) {
-  ParticleFit fit{cost.maxParticles, "max_particles = " + std::to_string(cost.maxParticles)};
+  // max_particles = 0: no cap of the scene's own, the device's limits alone.
+  ParticleFit fit = cost.maxParticles > 0
+                        ? ParticleFit{cost.maxParticles, "max_particles = " + std::to_string(cost.maxParticles)}
+                        : ParticleFit{std::numeric_limits<std::size_t>::max(), "no limit known"};
   GLint64 maxBlock = 0;
   glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
   if (cost.arrayBytes)

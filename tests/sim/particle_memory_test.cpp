@@ -28,6 +28,12 @@ TEST_F(ParticleMemory, TheTightestLimitBinds) {
       sim::particlesThatFit({.maxParticles = 1000, .arrayBytes = 16, .gpuBytes = 96}, "ball");
   EXPECT_EQ(byKey.count, 1000u);
   EXPECT_EQ(byKey.limit, "max_particles = 1000");
+  // No max_particles (0, the default): the device's own limits alone.
+  const sim::ParticleFit byDevice =
+      sim::particlesThatFit({.maxParticles = 0, .arrayBytes = 16, .gpuBytes = 96}, "ball");
+  EXPECT_GT(byDevice.count, 0u);
+  EXPECT_LE(byDevice.count, maxBlock() / 16);
+  EXPECT_EQ(byDevice.limit.find("max_particles"), std::string::npos) << byDevice.limit;
   // One MiB per particle in one array: the storage-block limit binds, whatever the device.
   const sim::ParticleFit byBlock = sim::particlesThatFit(
       {.maxParticles = std::numeric_limits<std::size_t>::max(), .arrayBytes = 1 << 20, .gpuBytes = 1 << 20}, "ball");

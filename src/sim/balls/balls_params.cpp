@@ -6,7 +6,7 @@ void visit(ParamVisitor& v, Params& p) {
   if (v.beginGroup({"particles", "Particles", "count, size and initial state (re-creates the particles)"})) {
     v.real({"radius", "Radius", "r, m"}, p.radius, 1e-4f, 0.5f);
     visitFill(v, p);
-    v.integer({"lattice_count", "Lattice count", "particles"}, p.latticeCount, 1, 1 << 26);
+    v.integer({"lattice_count", "Lattice count", "particles"}, p.latticeCount, 1, 1 << 30);
     v.flag({"lattice_scaling", "Lattice scaling", "r = 1/G and gravity x 64/G as the CUDA sample"}, p.latticeScaling);
     v.endGroup();
   }
@@ -60,9 +60,10 @@ void visitFill(ParamVisitor& v, Params& p) {
   v.vector({"fill_min", "Fill min", "block / random region, m"}, p.fillMin, -100.0f, 100.0f);
   v.vector({"fill_max", "Fill max", "block / random region, m"}, p.fillMax, -100.0f, 100.0f);
   v.real({"slab_height", "Slab height", "m"}, p.slabHeight, 0.0f, 100.0f);
-  v.integer({"random_count", "Random count", "particles"}, p.randomCount, 1, 1 << 26);
+  v.integer({"random_count", "Random count", "particles"}, p.randomCount, 1, 1 << 30);
   v.real({"jitter", "Jitter", "initial noise, fraction of r"}, p.jitter, 0.0f, 0.5f);
-  v.integer({"max_particles", "Max particles", "refuse larger requests"}, p.maxParticles, 1, 1 << 28);
+  v.integer({"max_particles", "Max particles", "refuse larger requests (0: as many as the GPU holds)"}, p.maxParticles,
+            0, 1 << 30);
 }
 
 void visitWalls(ParamVisitor& v, Params& p) {

@@ -70,7 +70,7 @@ struct Params {
   int latticeCount = 65536;                             // lattice (bench): particles on a cubic lattice at the corner
   bool latticeScaling = true;                           // lattice: r = width/(2G), gravity x 64/G (CUDA sample)
   float jitter = 0.001f;                                // initial position noise, fraction of r
-  int maxParticles = 16 << 20;                          // refuse larger requests before allocating
+  int maxParticles = 0;  // refuse larger requests before allocating (0: as many as the device holds)
   // Engine
   Contact contact = Contact::SpringDashpot;
   Integrator integrator = Integrator::SymplecticEuler;
