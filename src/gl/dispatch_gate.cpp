@@ -41,6 +41,7 @@ void DispatchGate::run(Mode mode, const std::function<void()>& section) {
     section();
   } catch (...) {
     t_active = nullptr;
+    if (mode == Mode::Replay) glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
     throw;
   }
   t_active = nullptr;
