@@ -178,6 +178,10 @@ TEST(BallsScenes, RenderWritesASequenceForEveryBallsScene) {
     test::TempDir dir;
     const auto r = test::runTidepool(
         {"render", entry.path().string(), "--frames", "2", "--size", "64x36", "--out", dir.path().string(), "--quiet"});
+    if (r.exitCode != 0 && r.err.find(" fit (the storage-block limit") != std::string::npos) {
+      EXPECT_EQ(r.exitCode, 1) << r.err;  // a scene for bigger GPUs (hundred-million): refused with the numbers
+      continue;
+    }
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_TRUE(std::filesystem::exists(dir / "frame_00000.png"));
     EXPECT_TRUE(std::filesystem::exists(dir / "frame_00001.png"));

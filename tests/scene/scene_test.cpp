@@ -28,7 +28,16 @@ TEST_F(Scenes, EveryShippedSceneLoadsBuildsStepsAndRenders) {
       continue;
     }
     const Scene scene = loadScene(entry.path());
-    auto stage = createStage(scene, shaders());
+    std::unique_ptr<Stage> stage;
+    try {
+      stage = createStage(scene, shaders());
+    } catch (const Error& e) {
+      // A scene for bigger GPUs (hundred-million) is refused with the numbers, before anything is built.
+      const std::string what = e.what();
+      EXPECT_NE(what.find(" fit (the storage-block limit"), std::string::npos) << what;
+      std::printf("refused %s on this device: %s\n", entry.path().filename().c_str(), what.c_str());
+      continue;
+    }
     RenderTarget target(32, 16);
     gl::GpuProfiler profiler;
     profiler.beginFrame();  // as the app and the renderer run it: a nested timer scope throws
