@@ -16,16 +16,6 @@
 namespace tidepool::bench {
 namespace {
 
-std::vector<balls::Neighbours> parseNeighbours(const std::string& text) {
-  auto one = [](const std::string& token) {
-    const auto& names = balls::kNeighboursNames;
-    const auto it = std::find(names.begin(), names.end(), token);
-    if (it == names.end()) throw Error("--neighbours '" + token + "' is not grid or lists");
-    return balls::Neighbours(it - names.begin());
-  };
-  return parseList(text, one, "--neighbours: nothing given (grid, lists or grid,lists)");
-}
-
 std::vector<float> parseSkins(const std::string& text) {
   auto one = [](const std::string& token) {
     char* end = nullptr;
@@ -54,7 +44,8 @@ int run(Env& env, const Options& o) {
   const std::vector<bool> orders =
       deterministic.empty() ? std::vector<bool>{base.deterministic} : parseOnOff(deterministic, "--deterministic");
   const std::vector<balls::Neighbours> searches =
-      o.neighbours.empty() ? std::vector<balls::Neighbours>{base.neighbours} : parseNeighbours(o.neighbours);
+      o.neighbours.empty() ? std::vector<balls::Neighbours>{base.neighbours}
+                           : parseChoices<balls::Neighbours>(o.neighbours, balls::kNeighboursNames, "--neighbours");
   const std::vector<float> skins = o.skin.empty() ? std::vector<float>{base.skin} : parseSkins(o.skin);
   std::printf("balls benchmark on %s: scene %s, steps %d..%d, medians per step\n", env.device.c_str(),
               scene.name.c_str(), w.first, w.last);

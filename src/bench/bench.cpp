@@ -212,13 +212,7 @@ std::vector<std::size_t> parseSizes(const std::string& text) {
 }
 
 std::vector<grid::ReorderMode> parseReorderModes(const std::string& text) {
-  auto one = [](const std::string& token) {
-    const auto& names = grid::kReorderModeNames;
-    const auto it = std::find(names.begin(), names.end(), token);
-    if (it == names.end()) throw Error("--reorder '" + token + "' is not scatter or gather");
-    return grid::ReorderMode(it - names.begin());
-  };
-  return parseList(text, one, "--reorder: no modes given (scatter, gather or scatter,gather)");
+  return parseChoices<grid::ReorderMode>(text, grid::kReorderModeNames, "--reorder");
 }
 
 std::vector<bool> parseOnOff(const std::string& text, const std::string& option) {

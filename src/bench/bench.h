@@ -3,6 +3,8 @@
 // medians over repeats; nothing here is ever asserted in a test.
 #pragma once
 
+#include <array>
+
 #include <CLI/CLI.hpp>
 #include <functional>
 #include <map>
@@ -110,6 +112,20 @@ auto parseList(const std::string& text, One&& one, const std::string& none) {
   for (const std::string& item : splitCommas(text)) out.push_back(one(item));
   if (out.empty()) throw Error(none);
   return out;
+}
+// "a,b" of a choice's names -> its values in that order, for `option` (e.g. "--reorder");
+// throws Error naming the bad token and the names ("'x' is not scatter or gather").
+template <class E, std::size_t N>
+std::vector<E> parseChoices(const std::string& text, const std::array<const char*, N>& names,
+                            const std::string& option) {
+  std::string all;
+  for (std::size_t k = 0; k < N; ++k) all += (k == 0 ? "" : k + 1 == N ? " or " : ", ") + std::string(names[k]);
+  auto one = [&](const std::string& token) {
+    for (std::size_t k = 0; k < N; ++k)
+      if (token == names[k]) return E(k);
+    throw Error(option + " '" + token + "' is not " + all);
+  };
+  return parseList(text, one, option + ": nothing given (" + all + ")");
 }
 // "65536,1M,16M", "2^16..2^24" or "512..4096" (doubling) -> sizes; throws Error naming the bad token.
 std::vector<std::size_t> parseSizes(const std::string& text);

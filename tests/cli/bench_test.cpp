@@ -96,6 +96,23 @@ TEST(Bench, BallsRunsEachSizeInEachReorderMode) {
                      "--reorder 'scatterr' is not scatter or gather");
 }
 
+TEST(Bench, BallsRunsTheGridAndVerletListsAtEachSkin) {
+  test::TempDir dir;
+  auto r = runTidepool({"bench", "balls", "bench-lattice", "--n", "4096", "--steps", "1:4", "--neighbours",
+                        "grid,lists", "--skin", "0.2,0.5", "--csv", (dir / "balls.csv").string()});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::string csv = io::readTextFile(dir / "balls.csv");
+  for (const char* row : {",grid,", ",lists 0.20,", ",lists 0.50,"})
+    EXPECT_NE(csv.find(row), std::string::npos) << row << "\n" << csv;
+  std::size_t rows = 0;
+  for (char c : csv) rows += c == '\n';
+  EXPECT_EQ(rows, 4u) << csv;  // the header, the grid once, lists once per skin
+  expectOneLineError({"bench", "balls", "bench-lattice", "--n", "4096", "--neighbours", "grid,cells"},
+                     "--neighbours 'cells' is not grid or lists");
+  expectOneLineError({"bench", "balls", "bench-lattice", "--n", "4096", "--neighbours", "lists", "--skin", "9"},
+                     "--skin '9' is not a fraction of r in [0.01, 4]");
+}
+
 TEST(Bench, FluidRunsEachSizeAndIterationCount) {
   test::TempDir dir;
   auto r = runTidepool({"bench", "fluid", "bench-fluid", "--n", "4096", "--iterations", "1,4", "--steps", "1:3",
