@@ -166,6 +166,48 @@ for model, fields in CASES.items():
         check(mismatches == 0, f"{where}: {mismatches} of {n} ply rows differ from the vtp")
     print(f"{model}: {len(sets)} frames of {n} points, fields {sorted(fields)}: vtp (VTK reader) and ply agree")
 
+
+# Obstacles: written once, as a closed triangle mesh around where the obstacle stands.
+OBSTACLE_SCENE = {
+    "name": "export obstacle", "model": "balls",
+    "params": {
+        "particles": {"radius": 0.02, "domain_min": [0, 0, 0], "domain_max": [0.4, 0.4, 0.4],
+                      "fill": "block", "fill_min": [0, 0, 0], "fill_max": [0.4, 0.4, 0.1]},
+        "engine": {"dt": 0.0005, "substeps": 1},
+        "obstacles": [{"shape": "box", "centre": [0.2, 0.2, 0.25], "size": [0.12, 0.08, 0.1]}]},
+    "clip": {"frames": 2, "fps": 30, "width": 32, "height": 18}}
+os.makedirs(os.path.join(WORK, "obstacle"), exist_ok=True)
+obstacle_file = os.path.join(WORK, "obstacle", "scene.json")
+with open(obstacle_file, "w") as f:
+    json.dump(OBSTACLE_SCENE, f)
+for fmt in ("vtk", "ply"):
+    render(obstacle_file, fmt, os.path.join(WORK, "obstacle", fmt))
+reader = vtkXMLPolyDataReader()
+reader.SetFileName(os.path.join(WORK, "obstacle", "vtk", "obstacles.vtp"))
+reader.Update()
+mesh = reader.GetOutput()
+bounds = mesh.GetBounds()
+check(mesh.GetNumberOfPolys() > 100 and mesh.GetNumberOfVerts() == 0, f"obstacles.vtp: {mesh.GetNumberOfPolys()} polys")
+# Around the box (size is its half extents: 0.08..0.32, 0.12..0.28, 0.15..0.35), within a ball or so.
+for axis, (lo, hi) in enumerate([(0.08, 0.32), (0.12, 0.28), (0.15, 0.35)]):
+    check(abs(bounds[2 * axis] - lo) < 0.03 and abs(bounds[2 * axis + 1] - hi) < 0.03,
+          f"obstacles.vtp: bounds {bounds} around the box")
+# Closed and consistently wound: each directed edge as often as its reverse (surface nets may give
+# an edge four triangles where two parts of the surface touch).
+edges = {}
+ids = mesh.GetPolys().GetData()
+triangles = [tuple(int(ids.GetValue(4 * t + 1 + k)) for k in range(3)) for t in range(mesh.GetNumberOfPolys())]
+for a, b, c in triangles:
+    for e in ((a, b), (b, c), (c, a)):
+        edges[e] = edges.get(e, 0) + 1
+check(all(edges.get((b, a), 0) == n for (a, b), n in edges.items()), "obstacles.vtp: not closed or not consistently wound")
+with open(os.path.join(WORK, "obstacle", "ply", "obstacles.ply"), "rb") as f:
+    ply = f.read()
+header = ply[:ply.index(b"end_header\n")].decode("ascii")
+check(f"element vertex {mesh.GetNumberOfPoints()}" in header and f"element face {len(triangles)}" in header and
+      "property list uchar int vertex_indices" in header, f"obstacles.ply header: {header}")
+print(f"obstacles: {len(triangles)} triangles, closed, in both formats")
+
 if failures:
     sys.exit(f"{len(failures)} checks failed")
 print("all exports read back")
