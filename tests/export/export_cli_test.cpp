@@ -62,3 +62,13 @@ TEST(ExportCli, AFailingWriteNamesTheFileAndLeavesNoPartialFrame) {
   EXPECT_FALSE(std::filesystem::exists(out / "frame_00000.vtp"));
   EXPECT_FALSE(std::filesystem::exists(out / "frame_00000.vtp.tmp"));
 }
+
+TEST(ExportCli, BenchExportTimesBothFormats) {
+  auto r = test::runTidepool({"bench", "export", kBalls, "--repeats", "2", "--warmup", "0"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("363 particles"), std::string::npos) << r.out;
+  for (const char* format : {"     363     vtk", "     363     ply"})
+    EXPECT_NE(r.out.find(format), std::string::npos) << r.out;
+  test::expectOneLineError({"bench", "export", kBalls, "--format", "obj"}, "--format 'obj' is not vtk or ply");
+  test::expectOneLineError({"bench", "export", kRipples}, "ripples has no particles");
+}
