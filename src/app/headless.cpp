@@ -48,8 +48,7 @@ int renderHeadless(const RenderJob& job) {
   int saved = 0;
   std::unique_ptr<ParticleExporter> exporter;
   if (job.exportFormat) {
-    if (!stage->exportSource())
-      throw Error(scene.model + " has no particles: --export vtk|ply needs balls, fluid, life or swarm");
+    checkExportable(scene.model, stage->exportSource(), *job.exportFormat);
     exporter = std::make_unique<ParticleExporter>(job.outDir, *job.exportFormat, job.exportEvery);
   }
   RenderTarget target(width, height);

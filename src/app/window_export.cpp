@@ -19,7 +19,7 @@ WindowExport::Message WindowExport::fail(const std::string& what) {
 WindowExport::Message WindowExport::start(Stage& stage) {
   try {
     const std::optional<ExportSource> source = stage.exportSource();
-    if (!source) throw Error("this model has no particles: export needs balls, fluid, life or swarm");
+    checkExportable("this model", source, m_settings.format);
     m_exporter = std::make_unique<ParticleExporter>(m_settings.folder, m_settings.format, m_settings.every);
     m_frame = 0;
     m_exporter->capture(0, stage.simTime(), *source);

@@ -1,13 +1,13 @@
-// `tidepool bench export [scene] [--format vtk,ply] [--out DIR]`: what exporting the particles of
-// a frame costs the render loop, per format. The scene's stage steps a frame at a time; the
+// `tidepool bench export [scene] [--format vtk,ply] [--out DIR]`: what exporting the particles (or
+// the heightfield) of a frame costs the render loop, per format. The scene's stage steps a frame at a time; the
 // timed frames first only step, then step and export every frame (render/particle_exporter.h:
 // start the GPU copy, and write what came back), each frame ending in glFinish. Columns: the
 // wall-clock median of a frame without and with the export, and the exporter's own means per
 // exported frame: starting the copy (what the GPU queue sees at the frame), reading it back,
 // converting to points, writing the file; MB copied and MB on disk per frame.
+#include <unistd.h>
 #include <chrono>
 #include <cstdio>
-#include <unistd.h>
 
 #include "base/error.h"
 #include "bench/bench.h"
@@ -39,8 +39,7 @@ int run(Env& env, const Options& o) {
       },
       "--format needs vtk, ply or both (vtk,ply)");
   auto stage = createStage(scene, env.shaders);
-  if (!stage->exportSource())
-    throw Error(scene.model + " has no particles: bench export needs balls, fluid, life or swarm");
+  for (io::ExportFormat format : formats) checkExportable(scene.model, stage->exportSource(), format);
   const int frames = o.frames > 0 ? o.frames : env.common.repeats;
   const std::filesystem::path root =
       o.out.empty() ? std::filesystem::temp_directory_path() / ("tidepool-bench-export-" + std::to_string(getpid()))
@@ -52,9 +51,10 @@ int run(Env& env, const Options& o) {
   for (int i = 0; i < env.common.warmup; ++i) stage->step(frameSeconds, profiler);
   std::vector<double> plain;
   for (int i = 0; i < frames; ++i) plain.push_back(wallMs([&] { stage->step(frameSeconds, profiler); }));
-  std::printf("export benchmark on %s: scene %s, %zu particles, %d frames each, every frame exported\n",
-              env.device.c_str(), scene.name.c_str(), stage->model() ? stage->model()->count() : 0, frames);
-  Table table({"particles", "format", "frame ms", "frame+export ms", "copy ms", "read back ms", "convert ms", "write ms",
+  std::printf(
+      "export benchmark on %s: scene %s, %zu points (particles or cells), %d frames each, every frame exported\n",
+      env.device.c_str(), scene.name.c_str(), stage->model() ? stage->model()->count() : 0, frames);
+  Table table({"points", "format", "frame ms", "frame+export ms", "copy ms", "read back ms", "convert ms", "write ms",
                "MB copied", "MB file"});
   for (io::ExportFormat format : formats) {
     const std::filesystem::path folder = root / io::exportExtension(format);
@@ -71,11 +71,12 @@ int run(Env& env, const Options& o) {
       exporter.finish();
       const ParticleExporter::Cost& c = exporter.cost();
       const double n = std::max(1, exporter.written());
-      fileBytes = double(std::filesystem::file_size(exporter.series().framePath(0)));
-      table.add({std::to_string(stage->model() ? stage->model()->count() : 0), format == io::ExportFormat::Vtk ? "vtk" : "ply",
-                 fixed(median(plain), 3), fixed(median(exported), 3), fixed(c.captureMs / n, 3),
-                 fixed((c.readMs + c.waitMs) / n, 3), fixed(c.convertMs / n, 3), fixed(c.writeMs / n, 3),
-                 fixed(double(c.bytes) / n / 1e6, 3), fixed(fileBytes / 1e6, 3)});
+      fileBytes =
+          double(std::filesystem::file_size(exporter.series().framePath(0, stage->exportSource()->heightField)));
+      table.add({std::to_string(stage->model() ? stage->model()->count() : 0),
+                 format == io::ExportFormat::Vtk ? "vtk" : "ply", fixed(median(plain), 3), fixed(median(exported), 3),
+                 fixed(c.captureMs / n, 3), fixed((c.readMs + c.waitMs) / n, 3), fixed(c.convertMs / n, 3),
+                 fixed(c.writeMs / n, 3), fixed(double(c.bytes) / n / 1e6, 3), fixed(fileBytes / 1e6, 3)});
     }
     if (o.out.empty()) std::filesystem::remove_all(folder);
   }

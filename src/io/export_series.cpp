@@ -24,19 +24,27 @@ ExportSeries::ExportSeries(std::filesystem::path folder, ExportFormat format)
                 "': " + (ec ? ec.message() : std::string("not a folder")));
 }
 
-std::filesystem::path ExportSeries::framePath(int frame) const {
+std::filesystem::path ExportSeries::framePath(int frame, bool heightField) const {
   char name[32];
-  std::snprintf(name, sizeof name, "frame_%05d.%s", frame, exportExtension(m_format));
+  std::snprintf(name, sizeof name, "frame_%05d.%s", frame, heightField ? "vti" : exportExtension(m_format));
   return m_folder / name;
 }
 
-void ExportSeries::write(int frame, const PointCloud& cloud) {
-  const std::filesystem::path file = framePath(frame);
-  if (m_format == ExportFormat::Vtk) {
-    writeVtp(file, cloud);
-    m_collection.add(cloud.time, file.filename().string());
+void ExportSeries::write(int frame, const ExportFrame& data) {
+  if (const HeightField* grid = std::get_if<HeightField>(&data)) {
+    if (m_format != ExportFormat::Vtk) throw Error("a heightfield has no PLY form: export it as vtk");
+    const std::filesystem::path file = framePath(frame, true);
+    writeVti(file, *grid);
+    m_collection.add(grid->time, file.filename().string());
   } else {
-    writePly(file, cloud);
+    const PointCloud& cloud = std::get<PointCloud>(data);
+    const std::filesystem::path file = framePath(frame);
+    if (m_format == ExportFormat::Vtk) {
+      writeVtp(file, cloud);
+      m_collection.add(cloud.time, file.filename().string());
+    } else {
+      writePly(file, cloud);
+    }
   }
   ++m_written;
 }

@@ -13,4 +13,13 @@ void checkPointCloud(const PointCloud& cloud) {
                   std::to_string(cloud.size()) + " points of " + std::to_string(f.components()) + " components");
 }
 
+void checkHeightField(const HeightField& grid) {
+  if (grid.width < 1 || grid.height < 1)
+    throw Error("heightfield: " + std::to_string(grid.width) + " x " + std::to_string(grid.height) + " points");
+  for (const PointField& f : grid.fields)
+    if (f.parts.empty() || f.values.size() != grid.size() * f.components())
+      throw Error("heightfield: field '" + f.name + "' has " + std::to_string(f.values.size()) + " values for " +
+                  std::to_string(grid.size()) + " points of " + std::to_string(f.components()) + " components");
+}
+
 }  // namespace tidepool::io

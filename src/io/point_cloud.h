@@ -1,5 +1,6 @@
 // Particles as plain CPU arrays, ready for a file: positions and named per-point fields, at one
-// simulated time. The exporters (vtk_writer.h, ply_writer.h) write it; nothing here knows GL.
+// simulated time (and a heightfield: fields on a regular grid of points). The exporters
+// (vtk_writer.h, ply_writer.h) write them; nothing here knows GL.
 //
 //   PointCloud c{0.5, {x0, y0, z0, x1, y1, z1}, {}};
 //   c.fields.push_back({"velocity", {"vx", "vy", "vz"}, PointType::Float32, {vx0, vy0, vz0, vx1, vy1, vz1}});
@@ -29,7 +30,19 @@ struct PointCloud {
   std::size_t size() const { return positions.size() / 3; }
 };
 
+// Fields on width x height points of a regular grid in the z = 0 plane: point (i, j) at
+// origin + spacing·(i, j), listed row by row (i fastest), as the ripples model stores its cells.
+struct HeightField {
+  double time = 0;  // simulated s
+  int width = 0, height = 0;
+  float spacing = 1;  // m between neighbouring points
+  float origin[2] = {0, 0};
+  std::vector<PointField> fields;  // "height", "vertical_velocity": width·height values each
+  std::size_t size() const { return std::size_t(width) * std::size_t(height); }
+};
+
 // Throws Error when a field's values do not match the points (a bug in whoever filled it).
 void checkPointCloud(const PointCloud& cloud);
+void checkHeightField(const HeightField& field);
 
 }  // namespace tidepool::io

@@ -72,17 +72,13 @@ std::string cells(Appended& a, const char* tag, std::size_t points, std::size_t 
   return xml + "      </" + tag + ">\n";
 }
 
-std::vector<std::uint8_t> file(std::size_t points, std::size_t verts, std::size_t polys, const std::string& arrays,
-                               const Appended& a) {
-  char piece[256];
-  std::snprintf(piece, sizeof piece,
-                "    <Piece NumberOfPoints=\"%zu\" NumberOfVerts=\"%zu\" NumberOfLines=\"0\" NumberOfStrips=\"0\" "
-                "NumberOfPolys=\"%zu\">\n",
-                points, verts, polys);
-  const std::string head = std::string("<?xml version=\"1.0\"?>\n") +
-                           "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" "
-                           "header_type=\"UInt64\">\n  <PolyData>\n" +
-                           piece + arrays + "    </Piece>\n  </PolyData>\n  <AppendedData encoding=\"raw\">\n   _";
+// The whole file: `type`'s element (with `attributes`), one piece, the arrays, the appended block.
+std::vector<std::uint8_t> file(const char* type, const std::string& attributes, const std::string& piece,
+                               const std::string& arrays, const Appended& a) {
+  const std::string head = std::string("<?xml version=\"1.0\"?>\n") + "<VTKFile type=\"" + type +
+                           "\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n  <" + type +
+                           attributes + ">\n    <Piece" + piece + ">\n" + arrays + "    </Piece>\n  </" + type +
+                           ">\n  <AppendedData encoding=\"raw\">\n   _";
   const std::string tail = "\n  </AppendedData>\n</VTKFile>\n";
   std::vector<std::uint8_t> out;
   out.reserve(head.size() + a.block().size() + tail.size());
@@ -90,6 +86,15 @@ std::vector<std::uint8_t> file(std::size_t points, std::size_t verts, std::size_
   out.insert(out.end(), a.block().begin(), a.block().end());
   out.insert(out.end(), tail.begin(), tail.end());
   return out;
+}
+
+std::string polyPiece(std::size_t points, std::size_t verts, std::size_t polys) {
+  char piece[256];
+  std::snprintf(piece, sizeof piece,
+                " NumberOfPoints=\"%zu\" NumberOfVerts=\"%zu\" NumberOfLines=\"0\" NumberOfStrips=\"0\" "
+                "NumberOfPolys=\"%zu\"",
+                points, verts, polys);
+  return piece;
 }
 
 void checkIndexable(std::size_t n, const char* what) {
@@ -112,7 +117,7 @@ std::vector<std::uint8_t> vtpBytes(const PointCloud& cloud) {
   arrays += a.array("Points", "Float32", 3, cloud.positions.data(), cloud.positions.size() * 4);
   arrays += "      </Points>\n";
   arrays += cells(a, "Verts", n, 1);
-  return file(n, n, 0, arrays, a);
+  return file("PolyData", "", polyPiece(n, n, 0), arrays, a);
 }
 
 std::vector<std::uint8_t> vtpBytes(const TriangleMesh& mesh) {
@@ -129,8 +134,26 @@ std::vector<std::uint8_t> vtpBytes(const TriangleMesh& mesh) {
   arrays += a.array("connectivity", "Int32", 1, connectivity.data(), connectivity.size() * 4);
   arrays += a.array("offsets", "Int32", 1, offsets.data(), offsets.size() * 4);
   arrays += "      </Polys>\n";
-  return file(mesh.vertices.size(), 0, mesh.triangles.size(), arrays, a);
+  return file("PolyData", "", polyPiece(mesh.vertices.size(), 0, mesh.triangles.size()), arrays, a);
 }
+
+std::vector<std::uint8_t> vtiBytes(const HeightField& grid) {
+  checkHeightField(grid);
+  std::size_t expected = 8 * grid.fields.size();
+  for (const PointField& f : grid.fields) expected += f.values.size() * typeBytes(f.type);
+  Appended a(expected);
+  std::string arrays = "      <PointData>\n";
+  for (const PointField& f : grid.fields) arrays += a.field(f);
+  arrays += "      </PointData>\n";
+  char extent[64], attributes[256];
+  std::snprintf(extent, sizeof extent, "0 %d 0 %d 0 0", grid.width - 1, grid.height - 1);
+  std::snprintf(attributes, sizeof attributes, " WholeExtent=\"%s\" Origin=\"%.9g %.9g 0\" Spacing=\"%.9g %.9g %.9g\"",
+                extent, double(grid.origin[0]), double(grid.origin[1]), double(grid.spacing), double(grid.spacing),
+                double(grid.spacing));
+  return file("ImageData", attributes, std::string(" Extent=\"") + extent + "\"", arrays, a);
+}
+
+void writeVti(const std::filesystem::path& path, const HeightField& grid) { replaceFile(path, vtiBytes(grid)); }
 
 void writeVtp(const std::filesystem::path& path, const PointCloud& cloud) { replaceFile(path, vtpBytes(cloud)); }
 

@@ -11,6 +11,8 @@
 //    <AppendedData encoding="raw">_[u64 24][vx0 vy0 vz0 vx1 vy1 vz1][u64 24][x0 ...][u64 8][0 1][u64 8][1 2]
 //
 // Points are one vertex cell each (connectivity i, offsets i + 1: where each cell ends).
+// A heightfield is ImageData (.vti): WholeExtent="0 W-1 0 H-1 0 0", Origin, Spacing, and its
+// fields as point data in the same appended block (ParaView: Warp By Scalar on "height").
 #pragma once
 
 #include <cstdint>
@@ -27,6 +29,8 @@ std::vector<std::uint8_t> vtpBytes(const PointCloud& cloud);   // throws Error (
 std::vector<std::uint8_t> vtpBytes(const TriangleMesh& mesh);  // points and triangle polys
 void writeVtp(const std::filesystem::path& file, const PointCloud& cloud);  // replaceFile (io/output_file.h)
 void writeVtp(const std::filesystem::path& file, const TriangleMesh& mesh);
+std::vector<std::uint8_t> vtiBytes(const HeightField& grid);  // throws Error (checkHeightField)
+void writeVti(const std::filesystem::path& file, const HeightField& grid);
 
 // A .pvd collection: one DataSet per frame, file names relative to the collection's folder.
 //   <DataSet timestep="0.5" group="" part="0" file="frame_00030.vtp"/>

@@ -52,7 +52,7 @@ std::size_t ExportSource::bytes() const {
 ExportSource waterSource(const sim::ParticleWater& water) {
   const std::size_t n = water.count(), bytes = n * sizeof(glm::vec4);
   return {{{&water.positions(), bytes}, {&water.velocities(), bytes}},
-          [n](std::span<const std::byte> copied) { return decodeWater(copied, n); }};
+          [n](std::span<const std::byte> copied) { return io::ExportFrame(decodeWater(copied, n)); }};
 }
 
 ExportSource fluidSource(const fluid::Fluid& fluid) {
@@ -68,7 +68,7 @@ ExportSource fluidSource(const fluid::Fluid& fluid) {
     for (std::size_t i = 0; i < n; ++i)
       density.values[i] = restDensity * at<glm::vec2>(copied, densityAt + i * sizeof(glm::vec2)).y;
     c.fields.push_back(std::move(density));
-    return c;
+    return io::ExportFrame(std::move(c));
   };
   return s;
 }
@@ -103,7 +103,7 @@ ExportSource lifeSource(const life::Life& life) {
               velocity.values[3 * i + 1] = v.y;
             }
             c.fields = {std::move(velocity), std::move(species)};
-            return c;
+            return io::ExportFrame(std::move(c));
           }};
 }
 
@@ -141,7 +141,27 @@ ExportSource swarmSource(const sim::Swarm& swarm, const gl::Buffer* colors) {
     }
     c.fields.push_back(std::move(velocity));
     if (colored) c.fields.push_back(std::move(color));
-    return c;
+    return io::ExportFrame(std::move(c));
+  };
+  return s;
+}
+
+ExportSource ripplesSource(const ripples::Ripples& ripples) {
+  const int w = ripples.width(), h = ripples.height();
+  const float dx = ripples.params().cellSize;
+  const std::size_t n = ripples.count();
+  ExportSource s{{{&ripples.state(), n * sizeof(glm::vec2)}}, {}, true};
+  s.decode = [w, h, dx, n](std::span<const std::byte> copied) {
+    io::HeightField grid{0, w, h, dx, {0.5f * dx, 0.5f * dx}, {}};  // cell centres
+    io::PointField height{"height", {"height"}, io::PointType::Float32, std::vector<float>(n)};
+    io::PointField velocity{"vertical_velocity", {"vertical_velocity"}, io::PointType::Float32, std::vector<float>(n)};
+    for (std::size_t i = 0; i < n; ++i) {
+      const auto hv = at<glm::vec2>(copied, i * sizeof(glm::vec2));
+      height.values[i] = hv.x;
+      velocity.values[i] = hv.y;
+    }
+    grid.fields = {std::move(height), std::move(velocity)};
+    return io::ExportFrame(std::move(grid));
   };
   return s;
 }

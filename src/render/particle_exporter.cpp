@@ -20,6 +20,15 @@ io::ExportSeries makeSeries(std::filesystem::path folder, io::ExportFormat forma
 
 }  // namespace
 
+void checkExportable(const std::string& model, const std::optional<ExportSource>& source, io::ExportFormat format) {
+  if (!source)
+    throw Error(model + " has no particles: --export vtk|ply needs balls, fluid, life or swarm (ripples: vtk only)");
+  if (source->heightField && format != io::ExportFormat::Vtk)
+    throw Error(
+        model +
+        " has no particles: --export ply needs balls, fluid, life or swarm (--export vtk writes its heightfield)");
+}
+
 ParticleExporter::ParticleExporter(std::filesystem::path folder, io::ExportFormat format, int every)
     : m_series(makeSeries(std::move(folder), format, every)), m_every(every) {}
 
@@ -52,11 +61,11 @@ void ParticleExporter::write(Slot& slot, std::vector<std::byte>& bytes) {
     throw Error("export: the GPU copy of frame " + std::to_string(slot.frame) + " did not come back (" +
                 std::to_string(bytes.size()) + " of " + std::to_string(slot.bytes) + " bytes)");
   auto start = Clock::now();
-  io::PointCloud cloud = slot.decode(bytes);
-  cloud.time = slot.time;
+  io::ExportFrame data = slot.decode(bytes);
+  std::visit([&](auto& d) { d.time = slot.time; }, data);
   m_cost.convertMs += msSince(start);
   start = Clock::now();
-  m_series.write(slot.frame, cloud);
+  m_series.write(slot.frame, data);
   m_cost.writeMs += msSince(start);
 }
 

@@ -12,12 +12,19 @@
 #include <deque>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "io/export_series.h"
 #include "render/export_source.h"
 
 namespace tidepool {
+
+// Throws Error when `model`'s export source cannot go to `format` (nullopt: nothing to export):
+//   "blank has no particles: --export vtk|ply needs balls, fluid, life or swarm (ripples: vtk only)"
+//   "ripples has no particles: --export ply needs balls, fluid, life or swarm (--export vtk writes
+//    its heightfield)"
+void checkExportable(const std::string& model, const std::optional<ExportSource>& source, io::ExportFormat format);
 
 class ParticleExporter {
  public:
@@ -50,7 +57,7 @@ class ParticleExporter {
     int frame = 0;
     double time = 0;
     std::size_t bytes = 0;  // asked for
-    std::function<io::PointCloud(std::span<const std::byte>)> decode;
+    std::function<io::ExportFrame(std::span<const std::byte>)> decode;
   };
   void write(Slot& slot, std::vector<std::byte>& bytes);
   void waitOldest();

@@ -61,8 +61,8 @@ class Stage {
   virtual void visitState(sim::StateVisitor& v) = 0;  // the model's state and the stage's own
   virtual sim::Model* model() { return nullptr; }     // the model it steps (blank: none), for soak runs to read
 
-  // Particle export (render/particle_exporter.h): what to copy of the particles as they are now;
-  // nullopt for a model without particles (ripples, blank). The obstacles as one mesh, as placed
+  // Export (render/particle_exporter.h): what to copy of the particles (or the ripples' heightfield)
+  // as they are now; nullopt for a model with neither (blank). The obstacles as one mesh, as placed
   // now (water scenes; empty for none).
   virtual std::optional<ExportSource> exportSource() { return std::nullopt; }
   virtual io::TriangleMesh exportObstacles() { return {}; }

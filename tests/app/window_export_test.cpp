@@ -2,6 +2,7 @@
 // frames count (paused ones do not), every K-th is written, Stop writes what is in flight; a
 // folder that cannot be made, a write that fails midway and a model without particles are
 // messages for the panel that stop the export, never exceptions, and the simulation runs on.
+// (Ripples export as VTK only; blank has nothing to export.)
 #include "app/window_export.h"
 
 #include <gtest/gtest.h>
@@ -93,7 +94,14 @@ TEST_F(WindowExportLogic, FailuresStopTheExportWithAMessageAndTheRunGoesOn) {
   EXPECT_FALSE(stage->divergence());
 
   auto ripples = createStage(loadScene(std::string(TIDEPOOL_TEST_DATA) + "/soak/ripples.json"), shaders());
+  exports.settings() = {io::ExportFormat::Ply, 1, (dir / "ripples").string()};
   m = exports.start(*ripples);
   EXPECT_TRUE(m.error);
+  EXPECT_NE(m.text.find("has no particles: --export ply"), std::string::npos) << m.text;
+  auto blank = createStage(parseScene(io::parseJson(R"({"model": "blank"})", "b.json"), "b.json"), shaders());
+  exports.settings().format = io::ExportFormat::Vtk;
+  m = exports.start(*blank);
+  EXPECT_TRUE(m.error);
   EXPECT_NE(m.text.find("has no particles"), std::string::npos) << m.text;
+  EXPECT_FALSE(exports.running());
 }

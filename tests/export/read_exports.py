@@ -6,7 +6,8 @@
   - each .vtp is read with VTK's own vtkXMLPolyDataReader (Debian's python3-vtk9): point and
     vertex counts, the fields and their components per model, z = 0 for the 2D models;
   - each .ply is read by the small reader below (not VTK's) and must hold, value for value, what
-    the .vtp of the same frame holds (the runs are reproducible).
+    the .vtp of the same frame holds (the runs are reproducible);
+  - the obstacles' mesh (.vtp, .ply) and the ripples' heightfield (.vti, vtkXMLImageDataReader).
 Usage: read_exports.py TIDEPOOL_EXE TEST_DATA_DIR WORK_DIR. Exits 77 (skipped) only when VTK's
 Python module is not installed."""
 import json
@@ -19,7 +20,7 @@ import sys
 import xml.etree.ElementTree as ET
 
 try:
-    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+    from vtkmodules.vtkIOXML import vtkXMLImageDataReader, vtkXMLPolyDataReader
 except ImportError as e:
     print(f"SKIP: VTK's Python module is not installed ({e}); install python3-vtk9 (scripts/install-deps.sh)")
     sys.exit(77)
@@ -207,6 +208,38 @@ header = ply[:ply.index(b"end_header\n")].decode("ascii")
 check(f"element vertex {mesh.GetNumberOfPoints()}" in header and f"element face {len(triangles)}" in header and
       "property list uchar int vertex_indices" in header, f"obstacles.ply header: {header}")
 print(f"obstacles: {len(triangles)} triangles, closed, in both formats")
+
+# Ripples: no particles, its heightfield as VTK ImageData (.vti) in the same kind of collection.
+ripples_file = os.path.join(DATA, "soak", "ripples.json")
+with open(ripples_file) as f:
+    ripples = json.load(f)["params"]
+ripples_dir = os.path.join(WORK, "ripples", "vtk")
+render(ripples_file, "vtk", ripples_dir)
+sets = ET.parse(os.path.join(ripples_dir, "particles.pvd")).getroot().find("Collection").findall("DataSet")
+check([d.get("file") for d in sets] == [f"frame_{i:05d}.vti" for i in range(0, FRAMES, EVERY)],
+      f"ripples: pvd files {[d.get('file') for d in sets]}")
+dx = ripples["cell_size"]
+for d in sets:
+    reader = vtkXMLImageDataReader()
+    reader.SetFileName(os.path.join(ripples_dir, d.get("file")))
+    reader.Update()
+    image = reader.GetOutput()
+    where = f"ripples {d.get('file')}"
+    check(image.GetDimensions() == (ripples["width"], ripples["height"], 1), f"{where}: dimensions {image.GetDimensions()}")
+    check(all(math.isclose(a, b, rel_tol=1e-6) for a, b in zip(image.GetSpacing(), (dx, dx, dx))),
+          f"{where}: spacing {image.GetSpacing()}")
+    check(all(math.isclose(a, b, rel_tol=1e-6) for a, b in zip(image.GetOrigin(), (dx / 2, dx / 2, 0))),
+          f"{where}: origin {image.GetOrigin()}")
+    pd = image.GetPointData()
+    names = [pd.GetArrayName(i) for i in range(pd.GetNumberOfArrays())]
+    check(names == ["height", "vertical_velocity"], f"{where}: arrays {names}")
+    lo, hi = pd.GetArray("height").GetRange()
+    # Flat water at frame 0; the scene's first drop (depth -0.06 m) goes in at the first step.
+    if d.get("file") == "frame_00000.vti":
+        check(lo == 0.0 and hi == 0.0, f"{where}: height range {lo}..{hi} of flat water")
+    else:
+        check(lo < -0.01 and hi <= 0.06, f"{where}: height range {lo}..{hi}")
+print(f"ripples: {len(sets)} heightfields of {ripples['width']} x {ripples['height']} cells")
 
 if failures:
     sys.exit(f"{len(failures)} checks failed")

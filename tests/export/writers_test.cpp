@@ -137,6 +137,29 @@ TEST(ExportWriters, VtpMeshHasTrianglePolys) {
   EXPECT_EQ(valueAt<std::int32_t>(vtp, at + 12), 6);
 }
 
+TEST(ExportWriters, VtiIsImageDataWithTheGridAndItsFieldsRowByRow) {
+  io::HeightField grid{1.5, 3, 2, 0.25f, {0.125f, 0.125f}, {}};
+  grid.fields.push_back({"height", {"height"}, PointType::Float32, {0, 1, 2, 3, 4, 5}});
+  const std::string vti = text(io::vtiBytes(grid));
+  EXPECT_NE(vti.find("<VTKFile type=\"ImageData\" version=\"1.0\" byte_order=\"LittleEndian\" "
+                     "header_type=\"UInt64\">"),
+            std::string::npos)
+      << vti.substr(0, 400);
+  EXPECT_NE(vti.find("<ImageData WholeExtent=\"0 2 0 1 0 0\" Origin=\"0.125 0.125 0\" Spacing=\"0.25 0.25 0.25\">"),
+            std::string::npos)
+      << vti.substr(0, 400);
+  EXPECT_NE(vti.find("<Piece Extent=\"0 2 0 1 0 0\">"), std::string::npos) << vti.substr(0, 400);
+  EXPECT_NE(vti.find("Name=\"height\" NumberOfComponents=\"1\" format=\"appended\" offset=\"0\""), std::string::npos);
+  const std::size_t base = vti.find('_', vti.find("<AppendedData")) + 1;
+  EXPECT_EQ(valueAt<std::uint64_t>(vti, base), 24u);
+  for (int i = 0; i < 6; ++i) EXPECT_EQ(valueAt<float>(vti, base + 8 + 4 * i), float(i));
+  EXPECT_EQ(vti.substr(base + 8 + 24), "\n  </AppendedData>\n</VTKFile>\n");
+  // PLY has no form for it.
+  test::TempDir dir;
+  io::ExportSeries ply(dir / "ply", io::ExportFormat::Ply);
+  EXPECT_THROW(ply.write(0, grid), Error);
+}
+
 TEST(ExportWriters, MismatchedFieldIsRefusedByName) {
   io::PointCloud c = twoPoints();
   c.fields[1].values.pop_back();
