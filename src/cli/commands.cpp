@@ -89,7 +89,7 @@ Command addRender(CLI::App& app) {
   sub->add_option("--video", o->job.video, "video file written through ffmpeg (e.g. clip.mp4)");
   auto* exportOpt = sub->add_option("--export", o->exportFormat,
                                     "also write the particles to --out: vtk (frame_*.vtp + particles.pvd for "
-                                    "ParaView) or ply (frame_*.ply for Blender); balls, fluid, life, swarm");
+                                    "ParaView) or ply (frame_*.ply for Blender); ripples: vtk, its heightfield");
   sub->add_option("--every", o->job.exportEvery, "with --export: every K-th frame (frame 0 included; default 1)")
       ->needs(exportOpt);
   sub->add_flag("--no-frames", o->job.noFrames, "with --export: no PNG frames in --out")->needs(exportOpt);
