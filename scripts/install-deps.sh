@@ -11,8 +11,8 @@ packages=(
   libgtest-dev
   # run: Mesa (llvmpipe through EGL/GLX/OSMesa) for machines without a GPU driver of their own
   libegl-mesa0 libgl1-mesa-dri libosmesa6
-  # tests: the window path runs under Xvfb; CI checks formatting
-  xvfb xauth clang-format
+  # tests: the window path runs under Xvfb; CI checks formatting; VTK's own reader reads the exports back
+  xvfb xauth clang-format python3-vtk9
   # charts of speed against accuracy (tidepool sweep)
   gnuplot-nox
 )

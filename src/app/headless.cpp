@@ -7,6 +7,7 @@
 #include "app/progress.h"
 #include "base/log.h"
 #include "io/video.h"
+#include "render/particle_exporter.h"
 #include "scene/checkpoint.h"
 #include "scene/scene.h"
 
@@ -19,6 +20,11 @@ int renderHeadless(const RenderJob& job) {
   const int height = job.height.value_or(scene.clip.height);
   if (frames <= 0) throw Error("--frames must be at least 1");
   if (job.outDir.empty() && job.video.empty()) throw Error("nothing to write: give --out DIR and/or --video FILE");
+  if (job.exportFormat && job.outDir.empty())
+    throw Error("--export needs --out DIR, the folder for the exported frames");
+  if (job.exportFormat && job.exportEvery < 1)
+    throw Error("--every " + std::to_string(job.exportEvery) + " must be at least 1 (export every K-th frame)");
+  const bool pngFrames = !job.outDir.empty() && !job.noFrames;
 
   std::unique_ptr<io::VideoWriter> video;
   if (!job.video.empty()) video = std::make_unique<io::VideoWriter>(job.video, width, height, scene.clip.fps);
@@ -40,6 +46,11 @@ int renderHeadless(const RenderJob& job) {
       job.checkpoint.empty() ? defaultCheckpointPath(job.outDir, job.video, scene.file) : job.checkpoint;
   CheckpointSchedule schedule(job.checkpointEvery, stage->simTime());
   int saved = 0;
+  std::unique_ptr<ParticleExporter> exporter;
+  if (job.exportFormat) {
+    checkExportable(scene.model, stage->exportSource(), *job.exportFormat);
+    exporter = std::make_unique<ParticleExporter>(job.outDir, *job.exportFormat, job.exportEvery);
+  }
   RenderTarget target(width, height);
   gl::GpuProfiler profiler;
   FrameWriter writer;
@@ -56,9 +67,16 @@ int renderHeadless(const RenderJob& job) {
     }
     stage->render(target, profiler);
     profiler.endFrame();
-    std::vector<std::uint8_t> pixels = target.readRgba8();
+    if (exporter) {
+      // After render(): a view may set what the state means (the swarm's aspect, its image colours).
+      if (exporter->due(i))
+        exporter->capture(i, stage->simTime(), *stage->exportSource());  // back a frame or two later
+      if (i == 0) exporter->writeObstacles(stage->exportObstacles());
+      exporter->poll();
+    }
+    std::vector<std::uint8_t> pixels = video || pngFrames ? target.readRgba8() : std::vector<std::uint8_t>();
     if (video) video->write(pixels);
-    if (!job.outDir.empty()) {
+    if (pngFrames) {
       char name[32];
       std::snprintf(name, sizeof name, "frame_%05d.png", i);
       writer.write(job.outDir / name, io::Image{width, height, std::move(pixels)});
@@ -66,6 +84,7 @@ int renderHeadless(const RenderJob& job) {
     progress.update(i + 1);
   }
   writer.finish();
+  if (exporter) exporter->finish();
   stage->flushChecks();
   if (const auto d = stage->divergence()) throw Error(d->message);
   if (checkpoints) {
@@ -75,7 +94,8 @@ int renderHeadless(const RenderJob& job) {
   }
   if (video) video->close();
   progress.finish();
-  if (!job.outDir.empty())
+  if (exporter) log::info(exporter->summary());
+  if (pngFrames)
     log::info("wrote " + std::to_string(frames) + " frames (" + std::to_string(width) + "x" + std::to_string(height) +
               ") to " + std::filesystem::absolute(job.outDir).string() + "/frame_*.png");
   if (video) log::info("wrote video " + std::filesystem::absolute(job.video).string());

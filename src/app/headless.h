@@ -6,17 +6,21 @@
 #include <string>
 
 #include "gl/context.h"
+#include "io/export_series.h"
 #include "io/json.h"
 
 namespace tidepool {
 
 struct RenderJob {
-  std::string scene;                 // path or bare name (assets/scenes/<name>.json)
-  io::Json paramOverrides;           // scene params set from the command line (--rules)
-  std::optional<int> frames;         // default: the scene's clip.frames
-  std::optional<int> width, height;  // default: the scene's clip size
-  std::filesystem::path outDir;      // PNG frames (frame_00000.png ...); empty: none
-  std::filesystem::path video;       // .mp4 through ffmpeg; empty: none
+  std::string scene;                             // path or bare name (assets/scenes/<name>.json)
+  io::Json paramOverrides;                       // scene params set from the command line (--rules)
+  std::optional<int> frames;                     // default: the scene's clip.frames
+  std::optional<int> width, height;              // default: the scene's clip size
+  std::filesystem::path outDir;                  // PNG frames (frame_00000.png ...); empty: none
+  std::filesystem::path video;                   // .mp4 through ffmpeg; empty: none
+  std::optional<io::ExportFormat> exportFormat;  // particles to outDir every exportEvery frames (frame 0 too)
+  int exportEvery = 1;
+  bool noFrames = false;             // no PNG frames in outDir (with an export)
   std::filesystem::path resume;      // a checkpoint to start from (scene/checkpoint.h); empty: the scene's start
   std::filesystem::path checkpoint;  // where checkpoints go; empty: defaultCheckpointPath when any is asked for
   double checkpointEvery = 0;        // simulated s between checkpoints (0: none but the last)

@@ -12,6 +12,7 @@
 
 #include "app/ui_panels.h"
 #include "app/window_checkpoints.h"
+#include "app/window_export.h"
 #include "base/log.h"
 #include "gl/context_window.h"
 #include "io/png.h"
@@ -104,6 +105,12 @@ int runWindow(const WindowJob& job) {
   RenderTarget target(std::max(fbw, 1), std::max(fbh, 1));
   gl::GpuProfiler profiler;
   UiState ui;
+  WindowExport exports;
+  const auto show = [&ui](const WindowExport::Message& m) {
+    if (m.text.empty()) return;
+    ui.message = m.text;
+    ui.messageIsError = m.error;
+  };
   Keys keys(window);
   glm::vec2 lastCursor{0.0f};
   constexpr double kFrameSeconds = 1.0 / 60.0;  // simulated time per displayed frame
@@ -124,7 +131,10 @@ int runWindow(const WindowJob& job) {
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
-    if (ui.showUi) drawMainPanel(scene, *stage, profiler, ui, checkpoints.autosaveEvery());
+    if (ui.showUi) {
+      drawMainPanel(scene, *stage, profiler, ui, checkpoints.autosaveEvery());
+      if (auto m = drawExportPanel(exports, *stage)) show(*m);
+    }
 
     if (ui.reloadRequested) {
       ui.reloadRequested = false;
@@ -137,6 +147,7 @@ int runWindow(const WindowJob& job) {
     if (ui.resetRequested) {
       ui.resetRequested = false;
       ui.divergence.clear();
+      if (exports.running()) show(exports.stop());  // the series ends where the run restarts
       stage->reset();
     }
     if (ui.recoverRequested) {
@@ -162,9 +173,11 @@ int runWindow(const WindowJob& job) {
     context.framebufferSize(fbw, fbh);
     if (fbw > 0 && fbh > 0) target.resize(fbw, fbh);
     profiler.beginFrame();
-    if (!ui.paused || std::exchange(ui.stepOnce, false)) stage->step(kFrameSeconds, profiler);
+    const bool stepped = !ui.paused || std::exchange(ui.stepOnce, false);
+    if (stepped) stage->step(kFrameSeconds, profiler);
     stage->render(target, profiler);
     profiler.endFrame();
+    if (auto m = exports.afterFrame(*stage, stepped)) show(*m);
     {
       const double metric = stage->liveMetric().second;
       ui.history.push(float(profiler.totalMs()), std::isfinite(metric) ? float(metric) : 0.0f);
@@ -207,6 +220,7 @@ int runWindow(const WindowJob& job) {
     if (last) break;
   }
 
+  if (exports.running()) exports.stop();
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();

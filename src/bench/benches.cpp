@@ -4,6 +4,7 @@
 namespace tidepool::bench {
 
 Benchmark addBallsBench(CLI::App& bench);    // balls_bench.cpp
+Benchmark addExportBench(CLI::App& bench);   // export_bench.cpp
 Benchmark addFluidBench(CLI::App& bench);    // fluid_bench.cpp
 Benchmark addGridBench(CLI::App& bench);     // grid_bench.cpp
 Benchmark addMemoryBench(CLI::App& bench);   // memory_bench.cpp
@@ -13,8 +14,9 @@ Benchmark addLifeBench(CLI::App& bench);     // life_bench.cpp
 Benchmark addSwarmBench(CLI::App& bench);    // swarm_bench.cpp
 
 const std::vector<Registrar>& registrars() {
-  static const std::vector<Registrar> table = {addBallsBench,  addFluidBench,  addGridBench,    addLifeBench,
-                                               addMemoryBench, addRenderBench, addRipplesBench, addSwarmBench};
+  static const std::vector<Registrar> table = {addBallsBench,  addExportBench,  addFluidBench,
+                                               addGridBench,   addLifeBench,    addMemoryBench,
+                                               addRenderBench, addRipplesBench, addSwarmBench};
   return table;
 }
 

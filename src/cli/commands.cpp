@@ -77,7 +77,7 @@ Command addRender(CLI::App& app) {
     int frames = 0;
     std::string size, backend = "auto";
     bool quiet = false;
-    std::string rules;
+    std::string rules, exportFormat;
     CheckpointOpts checkpoints;
   };
   auto o = std::make_shared<Opts>();
@@ -87,6 +87,12 @@ Command addRender(CLI::App& app) {
   sub->add_option("--size", o->size, "image size WIDTHxHEIGHT (default: the scene's clip size)");
   sub->add_option("--out", o->job.outDir, "folder for frame_00000.png ...");
   sub->add_option("--video", o->job.video, "video file written through ffmpeg (e.g. clip.mp4)");
+  auto* exportOpt = sub->add_option("--export", o->exportFormat,
+                                    "also write the particles to --out: vtk (frame_*.vtp + particles.pvd for "
+                                    "ParaView) or ply (frame_*.ply for Blender); ripples: vtk, its heightfield");
+  sub->add_option("--every", o->job.exportEvery, "with --export: every K-th frame (frame 0 included; default 1)")
+      ->needs(exportOpt);
+  sub->add_flag("--no-frames", o->job.noFrames, "with --export: no PNG frames in --out")->needs(exportOpt);
   sub->add_option("--backend", o->backend, "auto, egl or osmesa")->check(CLI::IsMember({"auto", "egl", "osmesa"}));
   sub->add_flag("--debug-gl", o->job.debugGl, "log KHR_debug driver messages");
   sub->add_flag("--quiet", o->quiet, "no progress bar");
@@ -106,6 +112,7 @@ Command addRender(CLI::App& app) {
             job.debugGl |= kDebugBuild;
             job.progress = !o->quiet;
             if (!o->rules.empty()) job.paramOverrides = {{"rules", o->rules}};
+            if (!o->exportFormat.empty()) job.exportFormat = io::parseExportFormat(o->exportFormat);
             renderHeadless(job);
             return 0;
           }};

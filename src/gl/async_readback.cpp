@@ -10,9 +10,20 @@ void AsyncReadback::dropFence() {
 }
 
 void AsyncReadback::request(const Buffer& src, std::size_t bytes, std::size_t offset) {
+  const Range range{&src, bytes, offset};
+  request(std::span<const Range>(&range, 1));
+}
+
+void AsyncReadback::request(std::span<const Range> ranges) {
+  std::size_t bytes = 0;
+  for (const Range& r : ranges) bytes += r.bytes;
   if (m_staging.size() < bytes) m_staging = Buffer(bytes, nullptr, GL_STREAM_READ);
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);  // shader writes to src are visible to the copy
-  src.copyTo(m_staging, bytes, offset, 0);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);  // shader writes to the sources are visible to the copy
+  std::size_t at = 0;
+  for (const Range& r : ranges) {
+    if (r.bytes > 0) r.buffer->copyTo(m_staging, r.bytes, r.offset, at);
+    at += r.bytes;
+  }
   dropFence();
   m_fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
   glFlush();  // the fence must reach the GPU, or polling it would never see it pass

@@ -1,9 +1,11 @@
 // Reading a few bytes back from the GPU without stalling it: request() copies them into a
 // staging buffer and drops a fence; poll() returns them once the fence has passed, never waiting.
-// Used by the divergence watch (a handful of reduced values every few frames).
+// Used by the divergence watch (a handful of reduced values every few frames) and the particle
+// export (a model's state buffers, one after the other, every exported frame).
 #pragma once
 
 #include <cstddef>
+#include <span>
 #include <vector>
 
 #include "gl/buffer.h"
@@ -19,6 +21,13 @@ class AsyncReadback {
 
   // Starts a copy of `bytes` from `src` (replacing any request still in flight).
   void request(const Buffer& src, std::size_t bytes, std::size_t offset = 0);
+  // The same for several buffers: their ranges come back one after the other, in this order.
+  struct Range {
+    const Buffer* buffer;
+    std::size_t bytes;
+    std::size_t offset = 0;
+  };
+  void request(std::span<const Range> ranges);
   bool pending() const { return m_fence != nullptr; }
   // True (and `out` filled) once the copy has completed on the GPU; false while it has not.
   bool poll(std::vector<std::byte>& out);

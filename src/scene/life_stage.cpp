@@ -204,6 +204,8 @@ class LifeStage final : public ModelStage<life::Life> {
     ModelStage::visitState(v);
   }
 
+  std::optional<ExportSource> exportSource() override { return lifeSource(m_model); }
+
  private:
   // Applies UI edits of the setup: a new seed or species count generates new rules; the box or
   // count respawns; the rest changes the running system.

@@ -99,6 +99,7 @@ class RipplesStage final : public ModelStage<ripples::Ripples> {
     ModelStage::visitState(v);
     v.count("stage.next_drop", m_nextDrop, m_drops.size());  // the scene's drops already made
   }
+  std::optional<ExportSource> exportSource() override { return ripplesSource(m_model); }  // a heightfield
 
  private:
   // The UI edits m_view; the views take their copies before drawing.

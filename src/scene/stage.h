@@ -17,6 +17,8 @@
 #include "gl/gpu_profiler.h"
 #include "gl/shader_library.h"
 #include "io/json.h"
+#include "io/obj.h"
+#include "render/export_source.h"
 #include "render/target.h"
 #include "scene/scene_params.h"
 #include "sim/divergence.h"
@@ -58,6 +60,12 @@ class Stage {
   virtual void visitSetupState(sim::StateVisitor&) {}
   virtual void visitState(sim::StateVisitor& v) = 0;  // the model's state and the stage's own
   virtual sim::Model* model() { return nullptr; }     // the model it steps (blank: none), for soak runs to read
+
+  // Export (render/particle_exporter.h): what to copy of the particles (or the ripples' heightfield)
+  // as they are now; nullopt for a model with neither (blank). The obstacles as one mesh, as placed
+  // now (water scenes; empty for none).
+  virtual std::optional<ExportSource> exportSource() { return std::nullopt; }
+  virtual io::TriangleMesh exportObstacles() { return {}; }
 };
 
 // A stage whose model is a sim::Model (every model but blank): stepping, the clock, the status

@@ -116,6 +116,13 @@ class SwarmStage final : public ModelStage<sim::Swarm> {
     m_coloredImage = m_view.image;
   }
 
+  // The image colours go with the particles when the view shows them.
+  std::optional<ExportSource> exportSource() override {
+    const bool colored =
+        m_view.colorMode == SwarmColorMode::Image && m_renderer.hasColors(m_model) && m_coloredImage == m_view.image;
+    return swarmSource(m_model, colored ? &m_renderer.colors() : nullptr);
+  }
+
  private:
   // Count and storage changes (UI, scene) re-allocate; a request that does not fit is refused
   // with the message in the status line, keeping the current particles.

@@ -147,6 +147,10 @@ class WaterStage final : public Stage {
   bool recover() override { return model()->recover(); }
   void flushChecks() override { model()->flushChecks(); }
   sim::Model* model() override { return m_balls ? static_cast<sim::Model*>(m_balls.get()) : m_fluid.get(); }
+  std::optional<ExportSource> exportSource() override {
+    return m_balls ? waterSource(*m_balls) : fluidSource(*m_fluid);
+  }
+  io::TriangleMesh exportObstacles() override { return obstacleSurface(water().obstacles(), water().radius()); }
 
   // Checkpoints: which model runs comes before the parameters (they are that model's keys).
   void visitSetupState(sim::StateVisitor& v) override {

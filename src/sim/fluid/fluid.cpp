@@ -117,6 +117,7 @@ void Fluid::reset() {
   m_v.fillZero();
   m_time = 0;
   m_steps = 0;
+  m_densitiesValid = false;
   grid::GridParams gp{.domainMin = w.domainMin,
                       .domainMax = w.domainMax,
                       .cellSize = cellSize(),
@@ -195,6 +196,7 @@ void Fluid::resume(const sim::StateStamp& good) {
   m_count = good.count;
   m_time = good.time;
   m_steps = good.steps;
+  m_densitiesValid = false;
   m_params.water.dt *= 0.5f;
   m_params.water.substeps = std::min(m_params.water.substeps * 2, 1000);  // same simulated time per frame
   m_water = resolvedWater(m_params);
@@ -202,6 +204,7 @@ void Fluid::resume(const sim::StateStamp& good) {
 
 void Fluid::visitOwnState(sim::StateVisitor& v) {
   v.clock(m_time, m_steps);
+  if (v.loading()) m_densitiesValid = false;  // λ is not saved: the next step makes it anew
   // The capacity bounds what the tap may still add (see Balls::visitOwnState).
   std::size_t capacity = m_capacity;
   v.value("model.capacity", capacity);
@@ -228,6 +231,7 @@ void Fluid::upload(const std::vector<glm::vec4>& pos, const std::vector<glm::vec
   allocate(pos.size(), std::max(pos.size(), m_capacity));
   m_x.upload(pos.data(), pos.size() * sizeof(glm::vec4));
   m_v.upload(vel.data(), vel.size() * sizeof(glm::vec4));
+  m_densitiesValid = false;
   restartWatch();
 }
 

@@ -60,6 +60,10 @@ class Fluid final : public sim::Model, public sim::ParticleWater {
   // sim::ParticleWater
   const gl::Buffer& positions() const override { return m_x; }
   const gl::Buffer& velocities() const override { return m_v; }
+  // vec2 (λ, ρ/ρ0) per particle, in the order of positions(): the density of the last step's last
+  // solver iteration. Valid once a step has run since reset, upload, restore or recovery.
+  const gl::Buffer& densities() const { return m_lambda; }
+  bool densitiesValid() const { return m_densitiesValid; }
   float radius() const override { return 0.5f * m_params.spacing; }
   const balls::Obstacles& obstacles() const override { return m_obstacles; }
   const balls::Params& water() const override { return m_water; }
@@ -129,6 +133,7 @@ class Fluid final : public sim::Model, public sim::ParticleWater {
   double m_time = 0;
   std::uint64_t m_steps = 0;
   bool m_trackOrder = false;
+  bool m_densitiesValid = false;  // m_lambda belongs to the particles in m_x
 };
 
 }  // namespace tidepool::fluid

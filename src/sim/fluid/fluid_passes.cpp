@@ -46,6 +46,7 @@ void Fluid::stepOnce(gl::GpuProfiler* profiler) {
     solve(profiler);
     updateVelocities(profiler);
   }
+  m_densitiesValid = m_count > 0 && m_params.iterations > 0;
   m_time += m_water.dt;
   ++m_steps;
 }

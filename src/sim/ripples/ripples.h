@@ -38,8 +38,10 @@ class Ripples final : public sim::Model {
   void touch(float x, float y, float radius, float depth);
 
   const gl::Buffer& state() const { return m_state[m_current]; }  // vec2 (h, v) per cell
-  void upload(const std::vector<float>& heightAndVelocity);       // 2 floats per cell
-  std::vector<float> download() const;                            // 2 floats per cell
+  int width() const { return m_width; }                           // cells of the state now (params() may differ)
+  int height() const { return m_height; }
+  void upload(const std::vector<float>& heightAndVelocity);  // 2 floats per cell
+  std::vector<float> download() const;                       // 2 floats per cell
   bool sphereActive() const { return m_params.sphere; }
   glm::vec3 sphereCentre() const { return ripples::sphereCentre(m_params, m_time); }  // m, see Params
   int lastSubsteps() const { return m_lastSubsteps; }

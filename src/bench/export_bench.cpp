@@ -1,0 +1,99 @@
+// `tidepool bench export [scene] [--format vtk,ply] [--out DIR]`: what exporting the particles (or
+// the heightfield) of a frame costs the render loop, per format. The scene's stage steps a frame at a time; the
+// timed frames first only step, then step and export every frame (render/particle_exporter.h:
+// start the GPU copy, and write what came back), each frame ending in glFinish. Columns: the
+// wall-clock median of a frame without and with the export, and the exporter's own means per
+// exported frame: starting the copy (what the GPU queue sees at the frame), reading it back,
+// converting to points, writing the file; MB copied and MB on disk per frame.
+#include <unistd.h>
+#include <chrono>
+#include <cstdio>
+
+#include "base/error.h"
+#include "bench/bench.h"
+#include "render/particle_exporter.h"
+#include "scene/scene.h"
+
+namespace tidepool::bench {
+namespace {
+
+struct Options {
+  std::string scene = "dam-break", formats = "vtk,ply", out;
+  int frames = 0;  // 0: common.repeats
+};
+
+double wallMs(const std::function<void()>& work) {
+  const auto start = std::chrono::steady_clock::now();
+  work();
+  glFinish();
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+int run(Env& env, const Options& o) {
+  const Scene scene = loadScene(resolveScenePath(o.scene));
+  const std::vector<io::ExportFormat> formats = parseList(
+      o.formats,
+      [](const std::string& name) {
+        if (name != "vtk" && name != "ply") throw Error("--format '" + name + "' is not vtk or ply");
+        return io::parseExportFormat(name);
+      },
+      "--format needs vtk, ply or both (vtk,ply)");
+  auto stage = createStage(scene, env.shaders);
+  for (io::ExportFormat format : formats) checkExportable(scene.model, stage->exportSource(), format);
+  const int frames = o.frames > 0 ? o.frames : env.common.repeats;
+  const std::filesystem::path root =
+      o.out.empty() ? std::filesystem::temp_directory_path() / ("tidepool-bench-export-" + std::to_string(getpid()))
+                    : std::filesystem::path(o.out);
+  gl::GpuProfiler profiler;
+  RenderTarget target(scene.clip.width, scene.clip.height);
+  stage->render(target, profiler);  // a view may set what the state means (the swarm's aspect)
+  const double frameSeconds = 1.0 / scene.clip.fps;
+  for (int i = 0; i < env.common.warmup; ++i) stage->step(frameSeconds, profiler);
+  std::vector<double> plain;
+  for (int i = 0; i < frames; ++i) plain.push_back(wallMs([&] { stage->step(frameSeconds, profiler); }));
+  std::printf(
+      "export benchmark on %s: scene %s, %zu points (particles or cells), %d frames each, every frame exported\n",
+      env.device.c_str(), scene.name.c_str(), stage->model() ? stage->model()->count() : 0, frames);
+  Table table({"points", "format", "frame ms", "frame+export ms", "copy ms", "read back ms", "convert ms", "write ms",
+               "MB copied", "MB file"});
+  for (io::ExportFormat format : formats) {
+    const std::filesystem::path folder = root / io::exportExtension(format);
+    std::vector<double> exported;
+    double fileBytes = 0;
+    {
+      ParticleExporter exporter(folder, format, 1);
+      for (int i = 0; i < frames; ++i)
+        exported.push_back(wallMs([&] {
+          stage->step(frameSeconds, profiler);
+          exporter.capture(i, stage->simTime(), *stage->exportSource());
+          exporter.poll();
+        }));
+      exporter.finish();
+      const ParticleExporter::Cost& c = exporter.cost();
+      const double n = std::max(1, exporter.written());
+      fileBytes =
+          double(std::filesystem::file_size(exporter.series().framePath(0, stage->exportSource()->heightField)));
+      table.add({std::to_string(stage->model() ? stage->model()->count() : 0),
+                 format == io::ExportFormat::Vtk ? "vtk" : "ply", fixed(median(plain), 3), fixed(median(exported), 3),
+                 fixed(c.captureMs / n, 3), fixed((c.readMs + c.waitMs) / n, 3), fixed(c.convertMs / n, 3),
+                 fixed(c.writeMs / n, 3), fixed(double(c.bytes) / n / 1e6, 3), fixed(fileBytes / 1e6, 3)});
+    }
+    if (o.out.empty()) std::filesystem::remove_all(folder);
+  }
+  if (o.out.empty()) std::filesystem::remove_all(root);
+  return finish(env, table, "; every column is CPU wall clock");
+}
+
+}  // namespace
+
+Benchmark addExportBench(CLI::App& bench) {
+  auto* sub = bench.add_subcommand("export", "particle export: ms per exported frame, per format");
+  auto o = std::make_shared<Options>();
+  sub->add_option("scene", o->scene, "balls, fluid, life or swarm scene (default dam-break)");
+  sub->add_option("--format", o->formats, "vtk, ply or vtk,ply (default both)");
+  sub->add_option("--frames", o->frames, "timed frames per format (default: --repeats)")->check(CLI::Range(1, 100000));
+  sub->add_option("--out", o->out, "keep the files in this folder (default: a temporary folder, removed)");
+  return {sub, [o](Env& env) { return run(env, *o); }};
+}
+
+}  // namespace tidepool::bench

@@ -1,0 +1,59 @@
+#include "io/export_series.h"
+
+#include <cstdio>
+
+#include "base/error.h"
+#include "io/ply_writer.h"
+
+namespace tidepool::io {
+
+ExportFormat parseExportFormat(const std::string& name) {
+  if (name == "vtk") return ExportFormat::Vtk;
+  if (name == "ply") return ExportFormat::Ply;
+  throw Error("--export '" + name + "' is not a format (expected vtk or ply)");
+}
+
+const char* exportExtension(ExportFormat format) { return format == ExportFormat::Vtk ? "vtp" : "ply"; }
+
+ExportSeries::ExportSeries(std::filesystem::path folder, ExportFormat format)
+    : m_folder(std::move(folder)), m_format(format), m_collection(m_folder / "particles.pvd") {
+  std::error_code ec;
+  std::filesystem::create_directories(m_folder, ec);
+  if (ec || !std::filesystem::is_directory(m_folder, ec))
+    throw Error("cannot create export folder '" + m_folder.string() +
+                "': " + (ec ? ec.message() : std::string("not a folder")));
+}
+
+std::filesystem::path ExportSeries::framePath(int frame, bool heightField) const {
+  char name[32];
+  std::snprintf(name, sizeof name, "frame_%05d.%s", frame, heightField ? "vti" : exportExtension(m_format));
+  return m_folder / name;
+}
+
+void ExportSeries::write(int frame, const ExportFrame& data) {
+  if (const HeightField* grid = std::get_if<HeightField>(&data)) {
+    if (m_format != ExportFormat::Vtk) throw Error("a heightfield has no PLY form: export it as vtk");
+    const std::filesystem::path file = framePath(frame, true);
+    writeVti(file, *grid);
+    m_collection.add(grid->time, file.filename().string());
+  } else {
+    const PointCloud& cloud = std::get<PointCloud>(data);
+    const std::filesystem::path file = framePath(frame);
+    if (m_format == ExportFormat::Vtk) {
+      writeVtp(file, cloud);
+      m_collection.add(cloud.time, file.filename().string());
+    } else {
+      writePly(file, cloud);
+    }
+  }
+  ++m_written;
+}
+
+void ExportSeries::writeObstacles(const TriangleMesh& mesh) {
+  if (m_format == ExportFormat::Vtk)
+    writeVtp(m_folder / "obstacles.vtp", mesh);
+  else
+    writePly(m_folder / "obstacles.ply", mesh);
+}
+
+}  // namespace tidepool::io
