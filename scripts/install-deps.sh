@@ -13,8 +13,8 @@ packages=(
   libegl-mesa0 libgl1-mesa-dri libosmesa6
   # tests: the window path runs under Xvfb; CI checks formatting; VTK's own reader reads the exports back
   xvfb xauth clang-format python3-vtk9
-  # charts of speed against accuracy (tidepool sweep)
-  gnuplot-nox
+  # charts of speed against accuracy (tidepool sweep); --video clips (MP4, GIF)
+  gnuplot-nox ffmpeg
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -1,6 +1,7 @@
 #include "io/video.h"
 
 #include <unistd.h>
+#include <cctype>
 #include <csignal>
 #include <cstdlib>
 #include <sstream>
@@ -19,15 +20,35 @@ bool ffmpegAvailable() {
   return false;
 }
 
+namespace {
+// The path as one shell word: in single quotes, each quote in it written as '\''.
+std::string shellQuoted(const std::string& text) {
+  std::string out = "'";
+  for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+}  // namespace
+
+bool isGif(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".gif";
+}
+
 VideoWriter::VideoWriter(const std::filesystem::path& path, int width, int height, int fps)
     : m_path(path), m_frameBytes(std::size_t(width) * height * 4) {
   if (!ffmpegAvailable())
     throw Error("--video needs ffmpeg, which is not installed (apt-get install ffmpeg); PNG frames need no ffmpeg");
   std::signal(SIGPIPE, SIG_IGN);  // a dying ffmpeg must give a write error, not kill us
-  // yuv420p needs even sizes: pad by one pixel where needed.
   std::ostringstream cmd;
   cmd << "ffmpeg -loglevel error -y -f rawvideo -pix_fmt rgba -s " << width << "x" << height << " -r " << fps
-      << " -i - -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -pix_fmt yuv420p -c:v libx264 -crf 18 '" << path.string() << "'";
+      << " -i - ";
+  if (isGif(path))  // one palette of 256 colours made for this clip, dithered: far cleaner than the web palette
+    cmd << "-filter_complex '[0:v]split[a][b];[a]palettegen=stats_mode=full[p];[b][p]paletteuse=dither=sierra2_4a' "
+        << "-loop 0 ";
+  else  // H.264 in yuv420p needs even sizes: pad by one pixel where needed
+    cmd << "-vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -pix_fmt yuv420p -c:v libx264 -crf 18 ";
+  cmd << shellQuoted(path.string());
   m_pipe = popen(cmd.str().c_str(), "w");
   if (!m_pipe) throw Error("cannot start ffmpeg to write '" + path.string() + "'");
 }

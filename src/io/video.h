@@ -1,4 +1,5 @@
-// Raw RGBA frames piped to ffmpeg (H.264 MP4, or whatever the output name implies).
+// Raw RGBA frames piped to ffmpeg: H.264 (yuv420p) for .mp4 and the other names, or for .gif a
+// looping GIF with one palette made for the clip (palettegen + paletteuse in one pass).
 #pragma once
 
 #include <cstdint>
@@ -8,7 +9,8 @@
 
 namespace tidepool::io {
 
-bool ffmpegAvailable();  // ffmpeg on PATH
+bool ffmpegAvailable();                         // ffmpeg on PATH
+bool isGif(const std::filesystem::path& path);  // ".gif", any case
 
 class VideoWriter {
  public:
