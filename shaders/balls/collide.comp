@@ -11,12 +11,15 @@ layout(local_size_x = BALLS_GROUP_SIZE) in;
 layout(std430, binding = BALLS_POS_IN) readonly buffer PosIn { vec4 posIn[]; };
 layout(std430, binding = BALLS_VEL_IN) readonly buffer VelIn { vec4 velIn[]; };
 layout(std430, binding = BALLS_VEL_OUT) writeonly buffer VelOut { vec4 velOut[]; };
+// The step's other output: the acceleration (velocity Verlet) or the new position (Euler). One
+// declaration keeps the kernel at 8 storage blocks with lists or obstacles (GL 4.3's minimum).
 #ifdef INTEGRATOR_VERLET
-layout(std430, binding = BALLS_ACC) writeonly buffer AccOut { vec4 accOut[]; };
+#define STEP_OUT_BINDING BALLS_ACC
 uniform float uKick;  // fraction of dt·a added to the (half-step) velocity: 0.5, or 0 to only evaluate a
 #else
-layout(std430, binding = BALLS_POS_OUT) writeonly buffer PosOut { vec4 posOut[]; };
+#define STEP_OUT_BINDING BALLS_POS_OUT
 #endif
+layout(std430, binding = STEP_OUT_BINDING) writeonly buffer StepOut { vec4 stepOut[]; };
 
 #include "balls/contact.glsl"
 
@@ -44,7 +47,7 @@ void stepBall(uint i) {
   float foam = velIn[i].w;
 #ifdef INTEGRATOR_VERLET
   const vec3 v = (gVelocity + uKick * uDt * gAccel) * (uKick > 0.0 ? uDecay : 1.0);
-  accOut[i] = vec4(gAccel, 0.0);
+  stepOut[i] = vec4(gAccel, 0.0);  // a
   velOut[i] = vec4(v, foam);
 #else
 #ifdef INTEGRATOR_EXPLICIT
@@ -56,7 +59,7 @@ void stepBall(uint i) {
 #endif
   confineToDomain(x, v);
   foam = min(1.0, (foam + uFoamGain * uDt * length(gVelocity)) * uFoamDecay);
-  posOut[i] = vec4(x, posIn[i].w);
+  stepOut[i] = vec4(x, posIn[i].w);  // x
   velOut[i] = vec4(v, foam);
 #ifdef LISTS
   displacementBoxAdd(i, x);  // where the next step's forces act

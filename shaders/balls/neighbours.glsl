@@ -10,6 +10,9 @@
 #include "common/grid.glsl"
 
 layout(std430, binding = BALLS_CELL_START) readonly buffer CellStart { uint cellStart[]; };
+#if defined(LISTS) && defined(HAS_OBSTACLE)
+#error "lists and obstacle particles share bindings 6 and 7: Balls::listsActive() keeps them apart"
+#endif
 #ifdef LISTS
 // List mode: the balls lie in the grid's order of the last build, and the lists hold each ball's
 // neighbours within 2r + skin then (balls/lists.glsl).
