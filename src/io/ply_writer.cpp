@@ -43,7 +43,7 @@ std::vector<std::uint8_t> plyBytes(const PointCloud& cloud) {
   for (const PointField& f : cloud.fields)
     for (const std::string& part : f.parts) {
       header += std::string("property ") + plyType(f.type) + " " + part + "\n";
-      stride += f.type == PointType::UInt8 ? 1 : 4;
+      stride += pointTypeBytes(f.type);
     }
   header += "end_header\n";
   const std::size_t body = header.size();
@@ -63,7 +63,7 @@ std::vector<std::uint8_t> plyBytes(const PointCloud& cloud) {
         }
         if (type == PointType::UInt8) *row = std::uint8_t(v);
       }
-      column += type == PointType::UInt8 ? 1 : 4;
+      column += pointTypeBytes(type);
     }
   };
   fill(cloud.positions.data(), 3, PointType::Float32);

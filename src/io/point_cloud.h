@@ -14,6 +14,7 @@
 namespace tidepool::io {
 
 enum class PointType { Float32, Int32, UInt8 };
+inline std::size_t pointTypeBytes(PointType t) { return t == PointType::UInt8 ? 1 : 4; }  // as written
 
 struct PointField {
   std::string name;                // "velocity", "foam", "species", "density", "color" (VTK's array name)

@@ -20,8 +20,6 @@ const char* typeName(PointType t) {
   }
 }
 
-std::size_t typeBytes(PointType t) { return t == PointType::UInt8 ? 1 : 4; }
-
 // The XML lines of the arrays and the appended block they point into.
 class Appended {
  public:
@@ -40,7 +38,7 @@ class Appended {
     return line;
   }
   std::string field(const PointField& f) {
-    std::vector<std::uint8_t> raw(f.values.size() * typeBytes(f.type));
+    std::vector<std::uint8_t> raw(f.values.size() * pointTypeBytes(f.type));
     for (std::size_t i = 0; i < f.values.size(); ++i) {
       if (f.type == PointType::Float32) std::memcpy(&raw[4 * i], &f.values[i], 4);
       if (f.type == PointType::UInt8) raw[i] = std::uint8_t(f.values[i]);
@@ -109,7 +107,7 @@ std::vector<std::uint8_t> vtpBytes(const PointCloud& cloud) {
   const std::size_t n = cloud.size();
   checkIndexable(n, "points");
   std::size_t expected = 8 * 8 + n * (12 + 8);  // headers, points, connectivity and offsets
-  for (const PointField& f : cloud.fields) expected += f.values.size() * typeBytes(f.type);
+  for (const PointField& f : cloud.fields) expected += f.values.size() * pointTypeBytes(f.type);
   Appended a(expected);
   std::string arrays = "      <PointData>\n";
   for (const PointField& f : cloud.fields) arrays += a.field(f);
@@ -140,7 +138,7 @@ std::vector<std::uint8_t> vtpBytes(const TriangleMesh& mesh) {
 std::vector<std::uint8_t> vtiBytes(const HeightField& grid) {
   checkHeightField(grid);
   std::size_t expected = 8 * grid.fields.size();
-  for (const PointField& f : grid.fields) expected += f.values.size() * typeBytes(f.type);
+  for (const PointField& f : grid.fields) expected += f.values.size() * pointTypeBytes(f.type);
   Appended a(expected);
   std::string arrays = "      <PointData>\n";
   for (const PointField& f : grid.fields) arrays += a.field(f);
