@@ -31,13 +31,8 @@ double wallMs(const std::function<void()>& work) {
 
 int run(Env& env, const Options& o) {
   const Scene scene = loadScene(resolveScenePath(o.scene));
-  const std::vector<io::ExportFormat> formats = parseList(
-      o.formats,
-      [](const std::string& name) {
-        if (name != "vtk" && name != "ply") throw Error("--format '" + name + "' is not vtk or ply");
-        return io::parseExportFormat(name);
-      },
-      "--format needs vtk, ply or both (vtk,ply)");
+  const std::vector<io::ExportFormat> formats =
+      parseChoices<io::ExportFormat>(o.formats, io::kExportFormatNames, "--format");
   auto stage = createStage(scene, env.shaders);
   for (io::ExportFormat format : formats) checkExportable(scene.model, stage->exportSource(), format);
   const int frames = o.frames > 0 ? o.frames : env.common.repeats;
@@ -74,7 +69,7 @@ int run(Env& env, const Options& o) {
       fileBytes =
           double(std::filesystem::file_size(exporter.series().framePath(0, stage->exportSource()->heightField)));
       table.add({std::to_string(stage->model() ? stage->model()->count() : 0),
-                 format == io::ExportFormat::Vtk ? "vtk" : "ply", fixed(median(plain), 3), fixed(median(exported), 3),
+                 io::kExportFormatNames[std::size_t(format)], fixed(median(plain), 3), fixed(median(exported), 3),
                  fixed(c.captureMs / n, 3), fixed((c.readMs + c.waitMs) / n, 3), fixed(c.convertMs / n, 3),
                  fixed(c.writeMs / n, 3), fixed(double(c.bytes) / n / 1e6, 3), fixed(fileBytes / 1e6, 3)});
     }

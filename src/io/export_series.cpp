@@ -8,8 +8,8 @@
 namespace tidepool::io {
 
 ExportFormat parseExportFormat(const std::string& name) {
-  if (name == "vtk") return ExportFormat::Vtk;
-  if (name == "ply") return ExportFormat::Ply;
+  for (std::size_t k = 0; k < kExportFormatNames.size(); ++k)
+    if (name == kExportFormatNames[k]) return ExportFormat(k);
   throw Error("--export '" + name + "' is not a format (expected vtk or ply)");
 }
 

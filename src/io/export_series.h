@@ -7,6 +7,8 @@
 // written as VTK ImageData, frame_00010.vti, in the same collection; PLY has no form for it.
 #pragma once
 
+#include <array>
+
 #include <filesystem>
 #include <string>
 #include <variant>
@@ -18,6 +20,7 @@
 namespace tidepool::io {
 
 enum class ExportFormat { Vtk, Ply };
+inline constexpr std::array<const char*, 2> kExportFormatNames = {"vtk", "ply"};
 
 using ExportFrame = std::variant<PointCloud, HeightField>;
 

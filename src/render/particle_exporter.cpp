@@ -101,7 +101,7 @@ std::string ParticleExporter::summary() const {
   std::snprintf(line, sizeof line,
                 "exported %d frames (%s) to %s: per frame %.2f ms to start the copy, %.2f ms to read it back (%.2f ms "
                 "of them waiting), %.2f ms to convert, %.2f ms to write (%.2f MB copied)",
-                written(), m_series.format() == io::ExportFormat::Vtk ? "vtk" : "ply",
+                written(), io::kExportFormatNames[std::size_t(m_series.format())],
                 std::filesystem::absolute(m_series.folder()).string().c_str(), m_cost.captureMs / n,
                 (m_cost.readMs + m_cost.waitMs) / n, m_cost.waitMs / n, m_cost.convertMs / n, m_cost.writeMs / n,
                 double(m_cost.bytes) / n / 1e6);
