@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "app/fit_gpu.h"
 #include "app/frame_writer.h"
 #include "app/progress.h"
 #include "base/log.h"
@@ -13,7 +14,33 @@
 
 namespace tidepool {
 
-int renderHeadless(const RenderJob& job) {
+namespace {
+
+// --fit-gpu: the job with particles.resolution measured for its budget, in a context of its own.
+RenderJob fitted(const RenderJob& job) {
+  if (!job.fitBudgetMs) return job;
+  const std::filesystem::path file = resolveScenePath(job.scene);
+  const Scene scene = loadScene(file, job.paramOverrides);
+  FitOptions options;
+  options.budgetMs = *job.fitBudgetMs;
+  options.width = job.width.value_or(scene.clip.width);
+  options.height = job.height.value_or(scene.clip.height);
+  RenderJob out = job;
+  {
+    auto context = gl::createHeadlessContext({job.backend, job.debugGl});
+    gl::ShaderLibrary shaders(gl::ShaderLibrary::findRoot());
+    const FitResult fit = fitResolution(file, job.paramOverrides, shaders, options);
+    log::info("fit to this GPU (step + render of a frame, budget " + std::to_string(*job.fitBudgetMs) + " ms):\n" +
+              fit.table());
+    out.paramOverrides = withFittedResolution(fit, job.paramOverrides, *job.fitBudgetMs);
+  }
+  return out;
+}
+
+}  // namespace
+
+int renderHeadless(const RenderJob& request) {
+  const RenderJob job = fitted(request);
   const Scene scene = loadScene(resolveScenePath(job.scene), job.paramOverrides);
   const int frames = job.frames.value_or(scene.clip.frames);
   const int width = job.width.value_or(scene.clip.width);

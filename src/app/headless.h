@@ -28,6 +28,7 @@ struct RenderJob {
   gl::Backend backend = gl::Backend::Auto;
   bool debugGl = false;
   bool progress = true;
+  std::optional<double> fitBudgetMs;  // --fit-gpu: particles.resolution picked for this budget first (app/fit_gpu.h)
 };
 
 // Returns the number of frames written. Throws Error.

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <ctime>
 
+#include "app/fit_gpu.h"
 #include "app/ui_panels.h"
 #include "app/window_checkpoints.h"
 #include "app/window_export.h"
@@ -77,11 +78,27 @@ std::vector<std::string> g_dropped;  // files dropped on the window since the la
 
 }  // namespace
 
+namespace {
+// --fit-gpu: the scene at the finest resolution whose frame fits the budget in this window.
+Scene fitScene(const std::filesystem::path& file, const WindowJob& job, gl::ShaderLibrary& shaders) {
+  FitOptions options;
+  options.budgetMs = *job.fitBudgetMs;
+  options.width = job.width;
+  options.height = job.height;
+  const FitResult fit = fitResolution(file, job.paramOverrides, shaders, options);
+  log::info("fit to this GPU (step + render of a frame, budget " + std::to_string(options.budgetMs) + " ms):\n" +
+            fit.table());
+  return loadScene(file, withFittedResolution(fit, job.paramOverrides, options.budgetMs));
+}
+}  // namespace
+
 int runWindow(const WindowJob& job) {
-  const Scene scene = loadScene(resolveScenePath(job.scene), job.paramOverrides);
+  const std::filesystem::path file = resolveScenePath(job.scene);
+  Scene scene = loadScene(file, job.paramOverrides);
   gl::WindowContext context({job.width, job.height, "tidepool - " + scene.name, job.debugGl, job.vsync, true});
   GLFWwindow* window = context.window();
   gl::ShaderLibrary shaders(gl::ShaderLibrary::findRoot());
+  if (job.fitBudgetMs) scene = fitScene(file, job, shaders);
   auto stage = createStage(scene, shaders);
   if (!job.resume.empty()) loadCheckpoint(*stage, scene, job.resume);
   WindowCheckpoints checkpoints(scene, job.checkpoint, job.autosaveEvery, stage->simTime());

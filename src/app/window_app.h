@@ -19,10 +19,11 @@ struct WindowJob {
   std::filesystem::path screenshot;  // written after the last frame when set
   bool debugGl = false;
   bool vsync = true;
-  io::Json paramOverrides;           // scene params set from the command line (--rules)
-  std::filesystem::path resume;      // a checkpoint to start from; empty: the scene's start
-  std::filesystem::path checkpoint;  // where F6 and the autosave write; empty: "<scene name>.ckpt" here
-  double autosaveEvery = 0;          // simulated s between autosaves (0: off; the panel edits it)
+  io::Json paramOverrides;            // scene params set from the command line (--rules)
+  std::filesystem::path resume;       // a checkpoint to start from; empty: the scene's start
+  std::filesystem::path checkpoint;   // where F6 and the autosave write; empty: "<scene name>.ckpt" here
+  double autosaveEvery = 0;           // simulated s between autosaves (0: off; the panel edits it)
+  std::optional<double> fitBudgetMs;  // --fit-gpu: particles.resolution measured for this budget (app/fit_gpu.h)
 };
 
 int runWindow(const WindowJob& job);  // exit code; throws Error

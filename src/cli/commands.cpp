@@ -43,6 +43,57 @@ void applyCheckpointOptions(const CheckpointOpts& o, RenderJob& job) {
   job.checkpointEvery = o.every;
 }
 
+// --resolution, --fit-gpu, --budget and --set, alike for render and run.
+struct ResolutionOpts {
+  double resolution = 0;  // 0: as the scene states
+  bool fit = false;
+  double budgetMs = 1000.0 / 30.0;
+  std::vector<std::string> sets;  // KEY=VALUE
+};
+
+// --set view.mode=water: the value as JSON when it reads as JSON (3, true, [0,1,0]), else as text.
+io::Json setOverride(const std::string& text) {
+  static const std::regex form(R"(([A-Za-z_][A-Za-z0-9_]*(\.[A-Za-z_][A-Za-z0-9_]*)*)=(.*))");
+  std::smatch m;
+  if (!std::regex_match(text, m, form) || m[3].length() == 0)
+    throw Error("--set '" + io::printable(text) + "' is not KEY=VALUE with a params key (e.g. view.mode=water)");
+  io::Json value;
+  try {
+    value = io::parseJson(m[3].str(), "--set");
+  } catch (const Error&) {
+    value = m[3].str();
+  }
+  const std::string key = m[1].str();
+  io::Json patch = value;
+  for (std::size_t end = key.size(); end != std::string::npos;) {
+    const std::size_t dot = key.rfind('.', end - 1);
+    const std::size_t begin = dot == std::string::npos ? 0 : dot + 1;
+    patch = io::Json{{key.substr(begin, end - begin), patch}};
+    end = dot == std::string::npos || dot == 0 ? std::string::npos : dot;
+  }
+  return patch;
+}
+
+void addResolutionOptions(CLI::App* sub, ResolutionOpts& o) {
+  sub->add_option("--resolution", o.resolution,
+                  "water: refine the particle spacing R times, keeping the setup (counts x R^3, dt / R; "
+                  "sets params.particles.resolution)")
+      ->check(CLI::Range(0.05, 64.0));
+  sub->add_flag("--fit-gpu", o.fit, "water: the finest resolution whose frame (steps + render) fits --budget here");
+  sub->add_option("--budget", o.budgetMs, "with --fit-gpu: ms per frame (default 33.3, 30 frames/s)")
+      ->check(CLI::Range(0.1, 1e6));
+  sub->add_option("--set", o.sets, "set a scene parameter, KEY=VALUE (e.g. view.mode=water); repeatable");
+}
+
+// The scene overrides with --set and --resolution merged in; the budget when --fit-gpu is asked for.
+io::Json applyResolutionOptions(const ResolutionOpts& o, io::Json overrides, std::optional<double>& fitBudgetMs) {
+  if (!overrides.is_object()) overrides = io::Json::object();
+  for (const std::string& set : o.sets) overrides.merge_patch(setOverride(set));
+  if (o.resolution > 0) overrides.merge_patch(io::Json{{"particles", {{"resolution", o.resolution}}}});
+  if (o.fit) fitBudgetMs = o.budgetMs;
+  return overrides;
+}
+
 }  // namespace
 
 void parseSize(const std::string& text, int& width, int& height) {
@@ -79,6 +130,7 @@ Command addRender(CLI::App& app) {
     bool quiet = false;
     std::string rules, exportFormat;
     CheckpointOpts checkpoints;
+    ResolutionOpts resolution;
   };
   auto o = std::make_shared<Opts>();
   sub->add_option("scene", o->job.scene, "scene file, or a name from assets/scenes (e.g. blank)")->required();
@@ -98,6 +150,7 @@ Command addRender(CLI::App& app) {
   sub->add_flag("--quiet", o->quiet, "no progress bar");
   sub->add_option("--rules", o->rules, "life: rules JSON file, preset name or share code (sets params.rules)");
   addCheckpointOptions(sub, o->checkpoints);
+  addResolutionOptions(sub, o->resolution);
   return {sub, [o] {
             RenderJob job = o->job;
             applyCheckpointOptions(o->checkpoints, job);
@@ -112,6 +165,7 @@ Command addRender(CLI::App& app) {
             job.debugGl |= kDebugBuild;
             job.progress = !o->quiet;
             if (!o->rules.empty()) job.paramOverrides = {{"rules", o->rules}};
+            job.paramOverrides = applyResolutionOptions(o->resolution, job.paramOverrides, job.fitBudgetMs);
             if (!o->exportFormat.empty()) job.exportFormat = io::parseExportFormat(o->exportFormat);
             renderHeadless(job);
             return 0;
@@ -125,6 +179,7 @@ Command addRun(CLI::App& app) {
     int frames = 0;
     bool noVsync = false, debugGl = false;
     CheckpointOpts checkpoints;
+    ResolutionOpts resolution;
   };
   auto o = std::make_shared<Opts>();
   sub->add_option("scene", o->scene, "scene file, or a name from assets/scenes (default: default)");
@@ -138,11 +193,14 @@ Command addRun(CLI::App& app) {
   sub->add_option("--rules", o->rules, "life: rules JSON file, preset name or share code (sets params.rules)");
   sub->add_flag("--debug-gl", o->debugGl, "log KHR_debug driver messages");
   addCheckpointOptions(sub, o->checkpoints);
+  addResolutionOptions(sub, o->resolution);
   return {sub, [o] {
             int w = 0, h = 0;
             parseSize(o->size, w, h);
             const gl::Backend backend = gl::parseBackend(o->backend);
-            const io::Json overrides = o->rules.empty() ? io::Json() : io::Json{{"rules", o->rules}};
+            std::optional<double> fitBudgetMs;
+            const io::Json overrides = applyResolutionOptions(
+                o->resolution, o->rules.empty() ? io::Json() : io::Json{{"rules", o->rules}}, fitBudgetMs);
             const bool window =
                 backend == gl::Backend::Window || (backend == gl::Backend::Auto && gl::displayAvailable());
             if (window) {
@@ -159,12 +217,14 @@ Command addRun(CLI::App& app) {
                             o->checkpoints.checkpoint,
                             o->checkpoints.every};
               if (o->frames > 0) job.maxFrames = o->frames;
+              job.fitBudgetMs = fitBudgetMs;
               return runWindow(job);
             }
             // No display: render the scene's default clip headless and say where it went.
             RenderJob job;
             job.scene = o->scene;
             job.paramOverrides = overrides;
+            job.fitBudgetMs = fitBudgetMs;
             const Scene scene = loadScene(resolveScenePath(o->scene));
             job.outDir = std::filesystem::path(o->out) / std::filesystem::path(scene.file).stem();
             if (o->frames > 0) job.frames = o->frames;

@@ -1,6 +1,7 @@
 #include "scene/scene.h"
 
 #include "scene/param_json.h"
+#include "sim/fluid/fluid_params.h"
 
 namespace tidepool {
 namespace fs = std::filesystem;
@@ -53,6 +54,34 @@ fs::path resolveScenePath(const std::string& arg) {
 }
 
 namespace {
+// A water scene states particles.resolution R beside its own spacing (or --resolution sets it): the
+// params read hold that spacing until here, then are refined R times (balls::refine), after method
+// auto, which picks for the scene as measured. The params keep R as the record of what was done.
+template <class P>
+bool refineStated(SceneParams& params, const std::string& where) {
+  if (!params.holds<P>()) return false;
+  P& p = params.model<P>();
+  float& record = [&]() -> float& {
+    if constexpr (requires { p.water; })
+      return p.water.resolution;
+    else
+      return p.resolution;
+  }();
+  const double stated = record;
+  if (stated == 1.0) return true;
+  record = 1.0f;
+  try {
+    refine(p, stated);
+  } catch (const Error& e) {
+    throw Error(where + ": params.particles." + e.what());
+  }
+  return true;
+}
+
+void applyResolution(Scene& scene, const std::string& where) {
+  if (!refineStated<balls::Params>(scene.params, where)) refineStated<fluid::Params>(scene.params, where);
+}
+
 // The header's keys; then "params" (with the overrides merged in) read once into the model's typed
 // struct; then method auto, which edits that struct and reads "params" as written only to refuse
 // keys it would override.
@@ -76,6 +105,7 @@ Scene readScene(const io::Json& json, const std::string& where, const io::Json& 
   }
   scene.params = modelNamed(scene.model, where).parse(params, where + ": params");
   resolveAutoMethod(scene, params, where);  // after the overrides, which it must not silently undo
+  applyResolution(scene, where);
   return scene;
 }
 }  // namespace

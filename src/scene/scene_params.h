@@ -46,6 +46,10 @@ class SceneParams {
     return *static_cast<Model*>(m_model(m_value));
   }
   template <class Model>
+  bool holds() const {  // whether model<Model>() would succeed
+    return m_model && *m_modelType == typeid(Model);
+  }
+  template <class Model>
   const Model& model() const {
     return const_cast<SceneParams*>(this)->model<Model>();
   }

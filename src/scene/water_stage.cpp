@@ -28,6 +28,7 @@ balls::Params asBalls(const fluid::Params& f, balls::Params own) {
   own.randomCount = w.randomCount;
   own.jitter = w.jitter;
   own.maxParticles = w.maxParticles;
+  own.resolution = w.resolution;
   own.pistonAxis = w.pistonAxis;
   own.pistonTravel = w.pistonTravel;
   own.pistonPeriod = w.pistonPeriod;
@@ -71,6 +72,7 @@ class WaterStage final : public Stage {
   WaterStage(gl::ShaderLibrary& shaders, const WaterSetup& setup)
       : m_shaders(shaders), m_setup(setup), m_choice(setup.active), m_view(shaders) {
     start(nullptr);
+    m_resolution = liveResolution();
   }
 
   void visitParams(ParamVisitor& v) override {
@@ -85,8 +87,10 @@ class WaterStage final : public Stage {
   void reset() override {
     model()->reset();
     m_frames = 0;
+    m_resolution = liveResolution();  // as set (a checkpoint's parameters are refined already)
   }
   void step(double frameSeconds, gl::GpuProfiler& profiler) override {
+    if (liveResolution() != m_resolution) refineLive();
     if (m_choice != active()) switchModel();
     model()->step(frameSeconds, profiler);
     if (m_frames++ % kStatsInterval == 0) refreshStats();
@@ -141,7 +145,9 @@ class WaterStage final : public Stage {
       std::snprintf(buf, sizeof buf, "; KE %.4g J, PE %.4g J; density error mean %.2f%% max %.1f%%",
                     m_fluidStats.kinetic, m_fluidStats.potential, 100.0 * m_fluidStats.compressionMean,
                     100.0 * m_fluidStats.compressionMax);
-    return (m_switchError.empty() ? "" : "not switched: " + m_switchError + "\n") + model().status() + buf;
+    std::string refused = m_switchError.empty() ? "" : "not switched: " + m_switchError + "\n";
+    if (!m_resolutionError.empty()) refused += "resolution not changed: " + m_resolutionError + "\n";
+    return refused + model().status() + buf;
   }
   std::optional<DivergenceReport> divergence() const override { return model().divergence(); }
   bool recover() override { return model()->recover(); }
@@ -228,6 +234,32 @@ class WaterStage final : public Stage {
     }
   }
 
+  float liveResolution() const { return m_balls ? m_balls->params().resolution : m_fluid->params().water.resolution; }
+
+  // particles.resolution edited in the panel: both models' parameters (the live ones with the
+  // user's other edits) refined by the ratio, and the model built again with its new particles. A
+  // refinement past a limit (substeps, counts, the GPU's memory) is refused by name and undone.
+  void refineLive() {
+    const double factor = double(liveResolution()) / m_resolution;
+    const WaterSetup before = m_setup;
+    if (m_balls)
+      m_balls->params().resolution = m_resolution;
+    else
+      m_fluid->params().water.resolution = m_resolution;
+    try {
+      m_setup.balls = m_balls ? m_balls->params() : m_setup.balls;
+      m_setup.fluid = m_fluid ? m_fluid->params() : m_setup.fluid;
+      balls::refine(m_setup.balls, factor);
+      fluid::refine(m_setup.fluid, factor);
+      start(nullptr);
+      m_resolutionError.clear();
+    } catch (const Error& e) {
+      m_setup = before;
+      m_resolutionError = e.what();  // start() builds before it replaces: the old model runs on
+    }
+    m_resolution = liveResolution();
+  }
+
   void refreshStats() {
     if (m_balls)
       m_ballsStats = m_balls->stats();
@@ -244,6 +276,8 @@ class WaterStage final : public Stage {
   balls::Stats m_ballsStats;
   fluid::Stats m_fluidStats;
   std::string m_switchError;
+  std::string m_resolutionError;  // why the last resolution edit was refused
+  float m_resolution = 1;         // the refinement the running model's parameters have
   long m_frames = 0;
 };
 

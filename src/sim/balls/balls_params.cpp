@@ -1,5 +1,12 @@
 #include "sim/balls/balls_params.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "base/error.h"
+
 namespace tidepool::balls {
 
 void visit(ParamVisitor& v, Params& p) {
@@ -62,6 +69,9 @@ void visitFill(ParamVisitor& v, Params& p) {
   v.real({"slab_height", "Slab height", "m"}, p.slabHeight, 0.0f, 100.0f);
   v.integer({"random_count", "Random count", "particles"}, p.randomCount, 1, 1 << 30);
   v.real({"jitter", "Jitter", "initial noise, fraction of r"}, p.jitter, 0.0f, 0.5f);
+  v.real({"resolution", "Resolution",
+          "refines the scene: spacing / R, counts x R^3, dt / R (1: as the scene sets it; re-creates the particles)"},
+         p.resolution, 0.05f, 64.0f);
   v.integer({"max_particles", "Max particles", "refuse larger requests (0: as many as the GPU holds)"}, p.maxParticles,
             0, 1 << 30);
 }
@@ -114,6 +124,44 @@ void visit(ParamVisitor& v, ObstacleParams& o) {
     v.real({"phase", "Phase", "degrees at t = 0"}, o.path.phase, -360.0f, 360.0f);
     v.endGroup();
   }
+}
+
+namespace {
+std::string number(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", x);
+  return buf;
+}
+}  // namespace
+
+void refine(Params& p, double factor) {
+  if (!(factor > 0.0) || !std::isfinite(factor))
+    throw Error("resolution: the factor must be positive, not " + number(factor));
+  Params q = p;
+  const double resolution = double(p.resolution) * factor;
+  // A count the scene uses past 2^30 is refused; one it does not use (random_count with a block
+  // fill) is scaled too, for a later switch, but held at the limit.
+  auto scaleCount = [&](int& n, bool used, const char* key) {
+    const double scaled = std::round(double(n) * factor * factor * factor);
+    if (used && scaled > double(1 << 30))
+      throw Error("resolution " + number(resolution) + " asks for " + number(scaled) + " particles in " + key +
+                  " (at most 2^30 = 1073741824): lower the resolution");
+    n = n > 0 ? int(std::clamp(scaled, 1.0, double(1 << 30))) : 0;
+  };
+  scaleCount(q.randomCount, p.fill == Fill::Random, "particles.random_count");
+  scaleCount(q.latticeCount, p.fill == Fill::Lattice, "particles.lattice_count");
+  scaleCount(q.tapMax, p.tap, "tap.max");
+  const double frame = double(p.dt) * p.substeps;
+  const long substeps = std::max(1L, std::lround(double(p.substeps) * factor));
+  if (substeps > 1000)
+    throw Error("resolution " + number(resolution) + " needs " + std::to_string(substeps) +
+                " substeps per frame (engine.substeps allows 1000): lower the resolution or raise engine.dt");
+  q.substeps = int(substeps);
+  q.dt = float(frame / double(substeps));
+  q.radius = float(double(p.radius) / factor);
+  q.contactTime = float(double(p.contactTime) / factor);
+  q.resolution = float(resolution);
+  p = q;
 }
 
 bool sameBody(const ObstacleParams& a, const ObstacleParams& b) {

@@ -70,7 +70,8 @@ struct Params {
   int latticeCount = 65536;                             // lattice (bench): particles on a cubic lattice at the corner
   bool latticeScaling = true;                           // lattice: r = width/(2G), gravity x 64/G (CUDA sample)
   float jitter = 0.001f;                                // initial position noise, fraction of r
-  int maxParticles = 0;  // refuse larger requests before allocating (0: as many as the device holds)
+  int maxParticles = 0;     // refuse larger requests before allocating (0: as many as the device holds)
+  float resolution = 1.0f;  // the scene's spacing refined this many times (refine(); 1: as the scene sets it)
   // Engine
   Contact contact = Contact::SpringDashpot;
   Integrator integrator = Integrator::SymplecticEuler;
@@ -123,6 +124,15 @@ void visitFill(ParamVisitor& v, Params& p);       // domain, fill, fill region, 
 void visitWalls(ParamVisitor& v, Params& p);      // piston, rotation
 void visitTap(ParamVisitor& v, Params& p);        // the tap's keys
 void visitObstacles(ParamVisitor& v, Params& p);  // the "obstacles" list
+
+// Scenes that grow with the GPU: refines the spacing `factor` times keeping the physical setup
+// (domain, fill region, water volume, obstacles, simulated time per frame). Radius ÷ f; the
+// counts stated (random, lattice, tap) × f³; contact time ÷ f (contact stiffness of a material:
+// t_c ∝ r keeps the overlap under a column of water the same fraction of r) and with it dt ÷ f and
+// substeps × f, rounded, dt then set so that a frame stays dt · substeps. `resolution` records the
+// product of the factors. Throws Error naming the limit a refinement would cross (2^30 particles,
+// 1000 substeps per frame); `p` is then unchanged.
+void refine(Params& p, double factor);
 
 // Spring constant and dashpot coefficient per unit effective mass from t_c and e:
 //   k = (pi^2 + ln^2 e) / t_c^2,  gamma = -2 ln e / t_c   (linear spring-dashpot, exact t_c and e)

@@ -66,4 +66,11 @@ balls::Params resolvedWater(const Params& p) {
   return w;
 }
 
+void refine(Params& p, double factor) {
+  balls::Params water = p.water;
+  balls::refine(water, factor);
+  p.water = water;
+  p.spacing = float(double(p.spacing) / factor);
+}
+
 }  // namespace tidepool::fluid

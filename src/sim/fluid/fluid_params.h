@@ -39,4 +39,8 @@ void visit(ParamVisitor& v, Params& p);
 // The water parameters with the radius of the spacing (what fills, obstacles and the tap use).
 balls::Params resolvedWater(const Params& p);
 
+// The fluid's spacing refined `factor` times (balls::refine for the rest: counts, dt, substeps,
+// the resolution record). Throws Error; `p` is then unchanged.
+void refine(Params& p, double factor);
+
 }  // namespace tidepool::fluid
