@@ -64,6 +64,7 @@ void BallsCompose::draw(const gl::Texture2D* surface, const BallsGBuffer& gbuffe
   program.set("uSceneMax", scene.rect.max);
   program.set("uInvView", glm::inverse(camera.view));
   program.set("uInvFocal", glm::vec2(1.0f / camera.proj[0][0], 1.0f / camera.proj[1][1]));
+  program.set("uOrtho", camera.isOrthographic() ? 1 : 0);
   program.set("uDepthRange", glm::vec2(camera.near, camera.far));
   program.set("uMode", int(look.mode));
   program.set("uDebug", int(look.debug));

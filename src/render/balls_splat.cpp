@@ -34,6 +34,7 @@ void BallsSplat::setCommon(gl::Program& program, const SphereBatch& balls, const
   program.set("uModelView", camera.view * balls.model);
   program.set("uProjDepth", glm::vec2(camera.proj[2][2], camera.proj[3][2]));
   program.set("uFocal", glm::vec2(camera.proj[0][0], camera.proj[1][1]));
+  program.set("uOrtho", camera.isOrthographic() ? 1 : 0);
   program.set("uSize", glm::ivec2(camera.width, camera.height));
   program.set("uRadius", balls.radius);
   program.set("uCount", unsigned(balls.count));

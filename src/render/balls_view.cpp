@@ -14,6 +14,11 @@ void visit(ParamVisitor& v, BallsViewParams& p) {
   v.flag({"debug_unblurred", "Debug before blur",
           "water: the debug views show the G-buffer before the blur (off: the blurred one the water uses)"},
          p.debugUnblurred);
+  v.choice({"grid_cells", "Grid cells",
+            "the neighbour grid's non-empty cells as wire cubes: by population (blue 1 ball, red full) or all alike"},
+           p.gridCells, kGridCellsModeNames);
+  v.real({"grid_cells_full", "Grid cells full", "balls per cell drawn red in the population view"}, p.gridCellsFull,
+         1.0f, 64.0f);
   v.color({"water_color", "Water colour", "linear RGB: ball albedo, water tint"}, p.waterColor);
   v.real({"absorption", "Absorption", "1/m: this inverse thickness transmits the water colour"}, p.absorption, 0.0f,
          200.0f);
@@ -47,13 +52,36 @@ BallsCamera BallsCamera::perspective(glm::mat4 view, float fovYRadians, int widt
   return c;
 }
 
+BallsCamera BallsCamera::orthographic(glm::mat4 view, float halfHeight, int width, int height, float near, float far) {
+  const float halfWidth = halfHeight * float(width) / float(height);
+  return of(view, glm::ortho(-halfWidth, halfWidth, -halfHeight, halfHeight, near, far), width, height);
+}
+
+BallsCamera BallsCamera::of(glm::mat4 view, glm::mat4 proj, int width, int height) {
+  BallsCamera c;
+  c.view = view;
+  c.proj = proj;
+  c.width = width;
+  c.height = height;
+  // Right-handed, z in -1..1. glm::perspective: P[2][2] = -(f+n)/(f-n), P[3][2] = -2fn/(f-n);
+  // glm::ortho: P[2][2] = -2/(f-n), P[3][2] = -(f+n)/(f-n).
+  if (c.isOrthographic()) {
+    c.near = (proj[3][2] + 1.0f) / proj[2][2];
+    c.far = (proj[3][2] - 1.0f) / proj[2][2];
+  } else {
+    c.near = proj[3][2] / (proj[2][2] - 1.0f);
+    c.far = proj[3][2] / (proj[2][2] + 1.0f);
+  }
+  return c;
+}
+
 glm::vec3 BallsCamera::towardsLight(glm::vec3 world) const {
   if (glm::dot(world, world) < 1e-12f) world = glm::vec3(0.0f, 0.0f, 1.0f);
   return glm::normalize(glm::vec3(view * glm::vec4(world, 0.0f)));
 }
 
 BallsView::BallsView(gl::ShaderLibrary& shaders)
-    : m_shaders(shaders), m_gbuffer(shaders), m_blur(shaders), m_compose(shaders) {}
+    : m_shaders(shaders), m_gbuffer(shaders), m_blur(shaders), m_compose(shaders), m_cells(shaders) {}
 
 const gl::Texture2D& BallsView::composedSurface() const { return m_blurred ? m_blur.result() : m_gbuffer.surface(); }
 
@@ -87,15 +115,18 @@ void BallsView::render(const sim::ParticleWater& model, RenderTarget& target, gl
   const balls::Params& p = model.water();
   const glm::vec3 centre = 0.5f * (p.domainMin + p.domainMax);
   m_camera.fit(centre, 0.5f * glm::length(p.domainMax - p.domainMin));
-  BallsCamera camera;
-  camera.view = m_camera.view();
-  camera.proj = m_camera.projection(float(target.width()) / float(target.height()));
-  camera.width = target.width();
-  camera.height = target.height();
-  // glm::perspective (right-handed, z in -1..1): P[2][2] = -(f+n)/(f-n), P[3][2] = -2fn/(f-n).
-  camera.near = camera.proj[3][2] / (camera.proj[2][2] - 1.0f);
-  camera.far = camera.proj[3][2] / (camera.proj[2][2] + 1.0f);
-  render(sceneOf(model), camera, target, profiler);
+  const BallsCamera camera =
+      BallsCamera::of(m_camera.view(), m_camera.projection(float(target.width()) / float(target.height())),
+                      target.width(), target.height());
+  const BallsScene scene = sceneOf(model);
+  render(scene, camera, target, profiler);
+  const grid::UniformGrid* grid = model.neighbourGrid();
+  if (m_params.gridCells != GridCellsMode::Hidden && grid) {
+    auto scope = profiler.scope("balls.grid_cells");
+    m_cells.compact(*grid);
+    m_cells.draw(*grid, camera.proj * camera.view * scene.boxModel, m_params.gridCells, m_params.gridCellsFull,
+                 glm::vec3(1.0f, 0.85f, 0.2f), target);
+  }
 }
 
 namespace {
@@ -203,10 +234,11 @@ void BallsView::render(const BallsScene& scene, const BallsCamera& camera, Rende
   m_blurred = balls && water && m_params.blurRadius > 0.0f;
   if (m_blurred) {
     auto scope = profiler.scope("balls.blur");
-    // Kernel radius in px of a ball 1 m away: scale x r x focal length in px.
+    // Kernel radius in px of a ball 1 m away (orthographic: at any depth): scale x r x focal
+    // length in px (orthographic: px per m).
     const float focalPx = 0.5f * float(camera.height) * camera.proj[1][1];
     m_blur.run(m_gbuffer.surface(), m_params.blurRadius * scene.water.radius * focalPx,
-               m_params.depthThreshold * scene.water.radius, m_params.blurIterations);
+               m_params.depthThreshold * scene.water.radius, m_params.blurIterations, !camera.isOrthographic());
   }
   auto scope = profiler.scope("balls.compose");
   const bool raw = m_params.debug != BallsDebug::Final && m_params.debugUnblurred;

@@ -13,13 +13,17 @@
 //   5. compose:   a compute pass: the scene (or the background when step 1 was skipped) and the
 //                 domain box's lines, and over them, where the balls are nearer, their shading
 //                 (balls or water) or a debug view, into the target's colour. The target's depth
-//                 stays the obstacles' (stale when step 1 was skipped): nothing draws after it.
+//                 stays the obstacles' (stale when step 1 was skipped): nothing draws after it
+//                 but the grid cells debug overlay (6).
+//   6. cells:     on request, the model's non-empty grid cells as wire cubes over the picture
+//                 (src/render/balls_grid_cells.h; render(model) only: a BallsScene has no grid)
 #pragma once
 
 #include "gl/gpu_profiler.h"
 #include "gl/shader_library.h"
 #include "render/balls_compose.h"
 #include "render/balls_gbuffer.h"
+#include "render/balls_grid_cells.h"
 #include "render/obstacle_mesh.h"
 #include "render/orbit_camera.h"
 #include "render/target.h"
@@ -49,6 +53,7 @@ class BallsView {
   const BallsGBuffer& gbuffer() const { return m_gbuffer; }
   const gl::Texture2D& composedSurface() const;
   const ObstacleMeshes& obstacleMeshes() const { return m_meshes; }
+  const BallsGridCells& gridCells() const { return m_cells; }  // the last overlay's compacted cells
 
  private:
   // Clears the target's depth and draws the obstacles inside the returned rectangle only (the
@@ -62,6 +67,7 @@ class BallsView {
   WaterBlur m_blur;
   ObstacleMeshes m_meshes;
   BallsCompose m_compose;
+  BallsGridCells m_cells;
   bool m_blurred = false;  // the last frame composed the blurred surface
   gl::VertexArray m_vao = gl::VertexArray::create();
 };

@@ -18,27 +18,37 @@ namespace tidepool {
 
 enum class BallsMode { Balls, Water };
 inline constexpr std::array<const char*, 2> kBallsModeNames = {"balls", "water"};
-enum class BallsDebug { Final, Local, Normals, Thickness, Depth };
-inline constexpr std::array<const char*, 5> kBallsDebugNames = {"final", "local", "normals", "thickness", "depth"};
+// What the compose shows: the picture, or one G-buffer channel (normals: world axes; screen_normals:
+// view axes, x right, y up, z towards the eye).
+enum class BallsDebug { Final, Local, Normals, Thickness, Depth, ScreenNormals };
+inline constexpr std::array<const char*, 6> kBallsDebugNames = {"final",     "local", "normals",
+                                                                "thickness", "depth", "screen_normals"};
 
 // Who draws the sphere impostors: the shader cores (src/render/balls_splat.h) or the raster units.
 enum class BallsRaster { Compute, Fragment };
 inline constexpr std::array<const char*, 2> kBallsRasterNames = {"compute", "fragment"};
 
+// The grid cells debug overlay (src/render/balls_grid_cells.h): off, the non-empty cells coloured
+// by their number of balls, or the non-empty cells all alike.
+enum class GridCellsMode { Hidden, Population, NonEmpty };
+inline constexpr std::array<const char*, 3> kGridCellsModeNames = {"hidden", "population", "non_empty"};
+
 struct BallsViewParams {
   BallsMode mode = BallsMode::Balls;
   BallsRaster raster = BallsRaster::Compute;
   BallsDebug debug = BallsDebug::Final;
-  bool debugUnblurred = false;                 // water: the debug views show the G-buffer before the blur
-  glm::vec3 waterColor{0.18f, 0.45f, 0.91f};   // linear RGB: balls' albedo, water's tint (water-webgpu)
-  float absorption = 20.0f;                    // 1/m: thickness 1/absorption transmits waterColor
-  float blurRadius = 4.0f;                     // blur kernel radius, in on-screen ball radii
-  int blurIterations = 2;                      // times the blur's row and column passes run
-  float depthThreshold = 12.0f;                // ball radii: no blur across larger depth steps between pixels
-  bool foam = true;                            // white water from the per-ball foam
-  float fresnelF0 = 0.02f;                     // reflectance at normal incidence (water)
-  float specular = 0.6f;                       // key-light highlight strength
-  glm::vec3 lightDirection{0.5f, 0.3f, 1.0f};  // world (z up), towards the key light; any length
+  bool debugUnblurred = false;                      // water: the debug views show the G-buffer before the blur
+  GridCellsMode gridCells = GridCellsMode::Hidden;  // the neighbour grid's non-empty cells as wire cubes
+  float gridCellsFull = 3.0f;                       // balls per cell at the population ramp's red end
+  glm::vec3 waterColor{0.18f, 0.45f, 0.91f};        // linear RGB: balls' albedo, water's tint (water-webgpu)
+  float absorption = 20.0f;                         // 1/m: thickness 1/absorption transmits waterColor
+  float blurRadius = 4.0f;                          // blur kernel radius, in on-screen ball radii
+  int blurIterations = 2;                           // times the blur's row and column passes run
+  float depthThreshold = 12.0f;                     // ball radii: no blur across larger depth steps between pixels
+  bool foam = true;                                 // white water from the per-ball foam
+  float fresnelF0 = 0.02f;                          // reflectance at normal incidence (water)
+  float specular = 0.6f;                            // key-light highlight strength
+  glm::vec3 lightDirection{0.5f, 0.3f, 1.0f};       // world (z up), towards the key light; any length
   glm::vec3 obstacleColor{0.55f, 0.55f, 0.58f};
   glm::vec3 background{0.09f, 0.10f, 0.12f};
   bool showBox = true;
@@ -47,13 +57,18 @@ struct BallsViewParams {
 };
 void visit(ParamVisitor& v, BallsViewParams& p);
 
-// One frame's camera: view and projection matrices, image size and the depth range (m).
+// One frame's camera: view and projection matrices (glm::perspective or glm::ortho, symmetric),
+// image size and the depth range (m). Only what lies in front of the eye (view depth > 0) is
+// drawn, even where an orthographic near plane lies behind it.
 struct BallsCamera {
   glm::mat4 view{1.0f}, proj{1.0f};
   int width = 1, height = 1;
   float near = 0.1f, far = 10.0f;
   static BallsCamera perspective(glm::mat4 view, float fovYRadians, int width, int height, float near, float far);
-  glm::vec3 towardsLight(glm::vec3 world) const;  // view space, unit (straight up when world is zero)
+  static BallsCamera orthographic(glm::mat4 view, float halfHeight, int width, int height, float near, float far);
+  static BallsCamera of(glm::mat4 view, glm::mat4 proj, int width, int height);  // near, far from proj
+  bool isOrthographic() const { return proj[3][3] == 1.0f; }  // glm::ortho's last row is (0, 0, 0, 1)
+  glm::vec3 towardsLight(glm::vec3 world) const;              // view space, unit (straight up when world is zero)
 };
 
 // Spheres of one radius whose centres are vec4s in an SSBO (w unused), optionally with foam in

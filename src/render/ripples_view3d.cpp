@@ -43,6 +43,8 @@ void RipplesView3D::setCommon(gl::Program& p, const ripples::Ripples& model) con
 void RipplesView3D::setShading(gl::Program& p, const ripples::Ripples& model) const {
   setCommon(p, model);
   p.set("uEye", m_camera.eye());
+  p.set("uOrtho", m_camera.params().projection == Projection::Orthographic ? 1 : 0);
+  p.set("uViewDir", m_camera.viewDirection());
   p.set("uTileRepeat", m_params.tileRepeat);
   p.set("uWaterColor", m_params.waterColor);
   p.set("uViewDistance", m_params.viewDistance);
@@ -111,7 +113,7 @@ void RipplesView3D::rayCast(const ripples::Ripples& model, RenderTarget& target,
 }
 
 bool RipplesView3D::pick(glm::vec2 pixel, glm::ivec2 viewport, glm::ivec2 grid, glm::vec2& uv) const {
-  const glm::vec3 dir = m_camera.rayDirection(pixel, viewport), eye = m_camera.eye();
+  const glm::vec3 dir = m_camera.rayDirection(pixel, viewport), eye = m_camera.rayOrigin(pixel, viewport);
   if (std::abs(dir.z) < 1e-6f) return false;
   const float t = (m_params.waterLevel - eye.z) / dir.z;
   if (t <= 0) return false;

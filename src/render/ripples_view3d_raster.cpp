@@ -33,6 +33,8 @@ void RipplesView3D::rasterise(const ripples::Ripples& model, RenderTarget& targe
     p.set("uColor", glm::vec3(0.85f, 0.35f, 0.12f));
     p.set("uSunDir", glm::normalize(m_params.sunDir));
     p.set("uEye", m_camera.eye());
+    p.set("uOrtho", m_camera.params().projection == Projection::Orthographic ? 1 : 0);
+    p.set("uViewDir", m_camera.viewDirection());
     glCullFace(GL_FRONT);  // the generated winding faces inwards
     glDrawArrays(GL_TRIANGLES, 0, 6 * 48 * 24);
     glCullFace(GL_BACK);

@@ -8,11 +8,12 @@
 namespace tidepool {
 
 void WaterBlur::pass(int axis, const gl::Texture2D& from, const gl::Texture2D& to, float pixelRadius,
-                     float depthThreshold) {
+                     float depthThreshold, bool perspective) {
   gl::Program& program = m_shaders.program({"render/balls/water_blur.comp"}, {{"AXIS", std::to_string(axis)}});
   program.use();
   program.set("uPixelRadius", pixelRadius);
   program.set("uDepthThreshold", depthThreshold);
+  program.set("uPerspective", perspective ? 1 : 0);
   from.bind(BALLS_VIEW_BLUR_IN);
   to.bindImage(BALLS_VIEW_BLUR_OUT, GL_WRITE_ONLY, GL_RGBA32F);
   const int useful = kGroup - 2 * kApron;  // outputs per work group
@@ -23,14 +24,15 @@ void WaterBlur::pass(int axis, const gl::Texture2D& from, const gl::Texture2D& t
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
 }
 
-void WaterBlur::run(const gl::Texture2D& source, float pixelRadius, float depthThreshold, int iterations) {
+void WaterBlur::run(const gl::Texture2D& source, float pixelRadius, float depthThreshold, int iterations,
+                    bool perspective) {
   if (!m_out || m_out.width() != source.width() || m_out.height() != source.height()) {
     m_rows = gl::Texture2D(source.width(), source.height(), GL_RGBA32F);
     m_out = gl::Texture2D(source.width(), source.height(), GL_RGBA32F);
   }
   for (int i = 0; i < std::max(iterations, 1); ++i) {
-    pass(0, i == 0 ? source : m_out, m_rows, pixelRadius, depthThreshold);
-    pass(1, m_rows, m_out, pixelRadius, depthThreshold);
+    pass(0, i == 0 ? source : m_out, m_rows, pixelRadius, depthThreshold, perspective);
+    pass(1, m_rows, m_out, pixelRadius, depthThreshold, perspective);
   }
 }
 

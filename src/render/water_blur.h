@@ -19,11 +19,14 @@ class WaterBlur {
   // a ball at 1 m view depth (it shrinks as 1/depth, capped at kApron); depthThreshold in m.
   // iterations: times the row and column passes run; a second round smooths the streaks one
   // pass leaves where a depth step or silhouette cut its kernel short.
-  void run(const gl::Texture2D& source, float pixelRadius, float depthThreshold, int iterations = 1);
+  // perspective false (an orthographic camera): the radius is pixelRadius at every depth.
+  void run(const gl::Texture2D& source, float pixelRadius, float depthThreshold, int iterations = 1,
+           bool perspective = true);
   const gl::Texture2D& result() const { return m_out; }  // RGBA32F, source's size
 
  private:
-  void pass(int axis, const gl::Texture2D& from, const gl::Texture2D& to, float pixelRadius, float depthThreshold);
+  void pass(int axis, const gl::Texture2D& from, const gl::Texture2D& to, float pixelRadius, float depthThreshold,
+            bool perspective);
   gl::ShaderLibrary& m_shaders;
   gl::Texture2D m_rows, m_out;  // after the horizontal pass, after both
 };

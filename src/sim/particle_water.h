@@ -10,6 +10,10 @@
 #include "sim/balls/balls_params.h"
 #include "sim/balls/obstacles.h"
 
+namespace tidepool::grid {
+class UniformGrid;
+}
+
 namespace tidepool::sim {
 
 class ParticleWater {
@@ -24,6 +28,9 @@ class ParticleWater {
   virtual glm::vec3 wallMin() const = 0;                  // current walls (the piston moves one)
   virtual glm::vec3 wallMax() const = 0;
   virtual float domainRotation() const = 0;  // radians about x
+  // The neighbour grid in the particles' frame, its counts as of the last sort (debug views);
+  // null before the first step or for a model without one.
+  virtual const grid::UniformGrid* neighbourGrid() const { return nullptr; }
 };
 
 }  // namespace tidepool::sim

@@ -154,3 +154,16 @@ TEST_F(RipplesCompute, TankViewFromOtherAnglesMatchesTheRasterView) {
                                target, profiler);
   }
 }
+
+TEST_F(RipplesCompute, OrthographicTankViewMatchesTheRasterView) {
+  // Parallel rays: the ray caster starts them on the near plane, the raster projects with glm::ortho.
+  gl::GpuProfiler profiler;
+  const auto pool = wavyPool(shaders(), true, profiler);
+  RipplesView3D view(shaders());
+  view.camera().params().projection = Projection::Orthographic;
+  RenderTarget target(240, 160);
+  for (const float pitch : {0.62f, 1.3f}) {
+    view.camera().params().pitch = pitch;
+    expectComputeMatchesRaster("ripples-3d-ortho-pitch" + std::to_string(pitch), view, *pool, target, profiler);
+  }
+}

@@ -5,6 +5,10 @@
 #define BALLS_VIEW_SPLAT_KEYS 3      // SSBO, compute raster: uint per pixel (depth key, then tagged ball id)
 #define BALLS_VIEW_SPLAT_THICKNESS 4 // SSBO, compute raster: uint per pixel (fixed-point thickness)
 #define BALLS_VIEW_SPLAT_BIG 5       // SSBO, compute raster: big balls' indirect dispatch header + list
+#define BALLS_VIEW_CELL_COUNT 6      // SSBO, grid cells view: the balls grid's uint count per cell, read only
+#define BALLS_VIEW_CELL_SCAN 7       // SSBO, grid cells view: 1 per non-empty cell, then scanned in place (cells + 1 uints)
+#define BALLS_VIEW_CELL_LIST 2       // SSBO, grid cells view: indirect draw command + non-empty cell ids (the
+                                     // mesh's number: its passes never run with the mesh bound)
 #define BALLS_VIEW_BLUR_IN 0         // sampler unit / image unit of the blur's source (RGBA32F)
 #define BALLS_VIEW_BLUR_OUT 1        // image unit of the blur's destination (RGBA32F)
 #define BALLS_VIEW_GBUFFER 0         // compose: G-buffer (RG normal xy, B thickness m, A view depth m)

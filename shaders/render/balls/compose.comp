@@ -32,9 +32,10 @@ uniform int uLineCount;     // segments
 uniform vec3 uLineColor;    // linear RGB
 uniform mat4 uInvView;      // view -> world (directions: upper 3x3)
 uniform vec2 uInvFocal;     // 1 / proj[0][0], 1 / proj[1][1]
+uniform int uOrtho;         // 1: orthographic camera (view rays along -z)
 uniform vec2 uDepthRange;   // near, far (m), for the depth debug view
 uniform int uMode;          // 0 balls, 1 water
-uniform int uDebug;         // 0 final, 1 local position, 2 normals, 3 thickness, 4 depth
+uniform int uDebug;         // 0 final, 1 local position, 2 world normals, 3 thickness, 4 depth, 5 view normals
 uniform vec3 uWaterColor;   // linear RGB: balls' albedo; water's transmittance after 1/absorption m
 uniform float uAbsorption;  // 1/m
 uniform vec3 uBackground;   // linear RGB, the sky's horizon
@@ -73,7 +74,7 @@ float lineDepth(ivec2 px, float depth) {
 
 vec3 viewPosition(ivec2 px, float depth) {  // depth: view depth (m)
   const vec2 ndc = 2.0 * ((vec2(px) + 0.5) / vec2(uSize)) - 1.0;
-  return vec3(ndc * uInvFocal * depth, -depth);
+  return vec3(ndc * uInvFocal * (uOrtho != 0 ? 1.0 : depth), -depth);
 }
 
 // Slope of the surface along `axis` at p: the one-sided difference with the smaller depth step
@@ -93,7 +94,7 @@ bool surfaceSlope(ivec2 px, ivec2 axis, vec3 p, out vec3 slope) {
 // The ball's colour over `scene` at px (g: its G-buffer texel).
 vec3 shade(ivec2 px, vec4 g, vec3 scene) {
   const vec3 p = viewPosition(px, g.a);  // view-space position, m
-  const vec3 v = normalize(-p);          // towards the eye
+  const vec3 v = uOrtho != 0 ? vec3(0.0, 0.0, 1.0) : normalize(-p);  // towards the eye
   // Balls: the ray-traced normal. Water: the smoothed depth's, where both slopes exist (the
   // blurred ball normal at one-pixel features).
   vec3 n = normalize(vec3(g.rg, sqrt(max(1.0 - dot(g.rg, g.rg), 0.0))));
@@ -105,6 +106,7 @@ vec3 shade(ivec2 px, vec4 g, vec3 scene) {
   const mat3 toWorld = mat3(uInvView);
   if (uDebug == 1) return vec3(0.5 + 0.5 * g.rg, 0.5);
   if (uDebug == 2) return 0.5 + 0.5 * (toWorld * n);
+  if (uDebug == 5) return 0.5 + 0.5 * n;  // screen space: x right, y up, z towards the eye
   if (uDebug == 3) return vec3(g.b / uThicknessScale);
   if (uDebug == 4) return vec3((g.a - uDepthRange.x) / (uDepthRange.y - uDepthRange.x));
 

@@ -16,7 +16,7 @@ flat out float vFoam;
 
 void main() {
   const int ball = gl_VertexID / 6;
-  const vec4 corner = sphereQuadCorner(ball, gl_VertexID % 6, uModelView, uRadius, vCentre);
+  const vec4 corner = sphereQuadCorner(ball, gl_VertexID % 6, uModelView, uRadius, isOrthographic(uProj), vCentre);
   vQuadPoint = corner.xyz;
   vFoam = uHasFoam != 0 ? velocities[ball].w : 0.0;
   // w = 0 puts all six vertices at the same point: a degenerate quad, nothing drawn.

@@ -13,13 +13,13 @@ layout(std430, binding = BALLS_VIEW_MESH) readonly buffer Mesh { MeshVertex vert
 uniform mat4 uModelView;  // rigid: its 3x3 turns normals too
 uniform mat4 uProj;
 
-out vec3 vView;    // view-space position
+out vec3 vView;    // view space: eye -> vertex (orthographic: the view direction)
 out vec3 vNormal;  // view space
 
 void main() {
   const MeshVertex v = vertices[gl_VertexID];
   const vec4 view = uModelView * v.position;
-  vView = view.xyz;
+  vView = uProj[3][3] == 1.0 ? vec3(0.0, 0.0, -1.0) : view.xyz;
   vNormal = mat3(uModelView) * v.normal.xyz;
   gl_Position = uProj * view;
 }

@@ -17,7 +17,7 @@ uniform float uRadius;
 // whose ray misses the ball is discarded.
 SphereHit sphereFragment() {
   SphereHit hit;
-  if (!intersectSphere(vQuadPoint, vCentre, uRadius, hit)) discard;
+  if (!intersectSphere(vQuadPoint, vCentre, uRadius, isOrthographic(uProj), hit)) discard;
   gl_FragDepth = windowDepth(uProj, hit.point);
   return hit;
 }

@@ -34,7 +34,8 @@ layout(std430, binding = BALLS_VIEW_SPLAT_BIG) buffer Big {
 
 uniform mat4 uModelView;   // simulation -> view
 uniform vec2 uProjDepth;   // proj[2][2], proj[3][2]: window depth from view depth
-uniform vec2 uFocal;       // proj[0][0], proj[1][1] (a symmetric perspective, as the compose assumes)
+uniform vec2 uFocal;       // proj[0][0], proj[1][1] (a symmetric projection, as the compose assumes)
+uniform int uOrtho;        // 1: orthographic (glm::ortho): rays along -z from the plane z = 0
 uniform ivec2 uSize;       // image px
 uniform float uRadius;     // m
 uniform uint uCount;       // balls
@@ -59,10 +60,19 @@ ivec2 axisRange(float c, float z, float focal, int size) {
 // A ball straddling the eye plane gets the whole image (the big path draws it).
 bool footprint(vec3 centre, out ivec2 lo, out ivec2 hi) {
   const float z = -centre.z;
-  const float near = uProjDepth.y / (uProjDepth.x - 1.0), far = uProjDepth.y / (uProjDepth.x + 1.0);
-  if (dot(centre, centre) <= 1.001 * 1.001 * uRadius * uRadius || z + uRadius <= near || z - uRadius >= far)
+  const float near = uOrtho != 0 ? (uProjDepth.y + 1.0) / uProjDepth.x : uProjDepth.y / (uProjDepth.x - 1.0);
+  const float far = uOrtho != 0 ? (uProjDepth.y - 1.0) / uProjDepth.x : uProjDepth.y / (uProjDepth.x + 1.0);
+  if (z + uRadius <= near || z - uRadius >= far) return false;
+  if (uOrtho != 0) {
+    // Parallel rays: the silhouette is the disc of radius r around the centre's pixel.
+    const vec2 halfSize = 0.5 * vec2(uSize);
+    const vec2 a = halfSize * ((centre.xy - uRadius) * uFocal + 1.0) - 0.5;
+    const vec2 b = halfSize * ((centre.xy + uRadius) * uFocal + 1.0) - 0.5;
+    lo = max(ivec2(floor(a)) - 1, ivec2(0));
+    hi = min(ivec2(ceil(b)) + 1, uSize - 1);
+  } else if (dot(centre, centre) <= 1.001 * 1.001 * uRadius * uRadius) {
     return false;
-  if (z > uRadius * 1.001) {
+  } else if (z > uRadius * 1.001) {
     const ivec2 x = axisRange(centre.x, z, uFocal.x, uSize.x), y = axisRange(centre.y, z, uFocal.y, uSize.y);
     lo = max(ivec2(x.x, y.x), ivec2(0));
     hi = min(ivec2(x.y, y.y), uSize - 1);
@@ -81,24 +91,27 @@ struct SplatHit {
 };
 
 // The eye ray through pixel px's centre against the ball; false when it misses or the front
-// point is outside the depth range. The ray dir = (ndc / focal, -1) reaches view depth t at
+// point is outside the depth range. The ray origin + t dir, dir = (ndc / focal, -1) from the eye
+// (perspective) or (0, 0, -1) from (ndc / focal, 0) (orthographic), reaches view depth t at
 // parameter t. `precise`: the depth and id passes must compute the same bits for one pixel.
 bool splatHit(ivec2 px, vec3 centre, out SplatHit hit) {
   const vec2 ndc = 2.0 * (vec2(px) + 0.5) / vec2(uSize) - 1.0;
-  precise vec3 dir = vec3(ndc / uFocal, -1.0);
+  precise vec3 origin = uOrtho != 0 ? vec3(ndc / uFocal, 0.0) : vec3(0.0);
+  precise vec3 dir = uOrtho != 0 ? vec3(0.0, 0.0, -1.0) : vec3(ndc / uFocal, -1.0);
   precise float a = dot(dir, dir);
-  precise float along = dot(dir, centre) / a;  // ray parameter of the point nearest the centre
-  precise vec3 off = along * dir - centre;
+  precise float along = dot(dir, centre - origin) / a;  // ray parameter of the point nearest the centre
+  precise vec3 off = origin + along * dir - centre;
   precise float h2 = uRadius * uRadius - dot(off, off);  // (half chord)^2 * a
   if (h2 < 0.0) return false;
   precise float halfChord = sqrt(h2 / a);
   precise float depth = along - halfChord;
-  precise float window = 0.5 * (uProjDepth.y / depth - uProjDepth.x) + 0.5;
+  precise float ndcZ = uOrtho != 0 ? uProjDepth.y - uProjDepth.x * depth : uProjDepth.y / depth - uProjDepth.x;
+  precise float window = 0.5 * ndcZ + 0.5;
   if (!(window >= 0.0 && window < 1.0)) return false;
   hit.depth = depth;
   hit.window = window;
   hit.chord = 2.0 * halfChord * sqrt(a);
-  hit.normal = (depth * dir - centre) / uRadius;
+  hit.normal = (origin + depth * dir - centre) / uRadius;
   return true;
 }
 

@@ -23,6 +23,7 @@ layout(binding = BALLS_VIEW_BLUR_IN) uniform sampler2D uSource;
 layout(binding = BALLS_VIEW_BLUR_OUT, rgba32f) writeonly uniform image2D uTarget;
 
 uniform float uPixelRadius;    // px: kernel radius of a ball at view depth 1 m (scale x r x focal px)
+uniform int uPerspective;      // 1: the radius shrinks as 1 / depth; 0 (orthographic): uPixelRadius everywhere
 uniform float uDepthThreshold; // m
 
 shared vec4 tile[GROUP];
@@ -45,7 +46,7 @@ void main() {
     imageStore(uTarget, texel, centre);
     return;
   }
-  const float radius = min(uPixelRadius / centre.a, float(APRON));
+  const float radius = min(uPerspective != 0 ? uPixelRadius / centre.a : uPixelRadius, float(APRON));
   const int taps = int(radius);
   const float sigma = max(0.5 * radius, 0.5);
   const float k = -0.5 / (sigma * sigma);

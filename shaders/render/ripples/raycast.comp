@@ -44,20 +44,22 @@ float ballHit(vec3 o, vec3 d) {
 void main() {
   const ivec2 px = ivec2(gl_GlobalInvocationID.xy);
   const vec2 ndc = (vec2(px) + 0.5) / vec2(uTargetSize) * 2.0 - 1.0;
-  const vec4 far = uInvViewProj * vec4(ndc, 1.0, 1.0);
-  const vec3 dir = normalize(far.xyz / far.w - uEye);
-  const GridRay ray = gridRay(uEye, dir);
+  // Perspective: from the eye. Orthographic: parallel rays from the pixel's point on the near plane.
+  const vec4 far = uInvViewProj * vec4(ndc, 1.0, 1.0), onNear = uInvViewProj * vec4(ndc, -1.0, 1.0);
+  const vec3 origin = uOrtho != 0 ? onNear.xyz / onNear.w : uEye;
+  const vec3 dir = uOrtho != 0 ? uViewDir : normalize(far.xyz / far.w - uEye);
+  const GridRay ray = gridRay(origin, dir);
 
   // The tank's xy prism; the walls are its faces the ray enters through (the raster variant
   // culls the others as back faces).
-  const vec2 sx = slab(uEye.x, dir.x, 0.0, uTank.x), sy = slab(uEye.y, dir.y, 0.0, uTank.y);
+  const vec2 sx = slab(origin.x, dir.x, 0.0, uTank.x), sy = slab(origin.y, dir.y, 0.0, uTank.y);
   const float tIn = max(sx.x, sy.x), tOut = min(sx.y, sy.y);
-  const float tBall = ballHit(uEye, dir);
+  const float tBall = ballHit(origin, dir);
   int kind = tBall < kHuge ? kBall : kNothing;
   float t = tBall;
   vec3 wallNormal = vec3(0.0);
   if (tIn > 0.0 && tIn <= tOut && tIn < t) {
-    const vec3 p = uEye + tIn * dir;
+    const vec3 p = origin + tIn * dir;
     if (p.z >= 0.0 && p.z <= uWallTop && p.z <= surfaceZ(clamp(p.xy, vec2(0.0), uTank))) {
       kind = kWall;
       t = tIn;
@@ -66,7 +68,7 @@ void main() {
   }
   if (kind != kWall) {
     const vec2 zRange = surfaceRange();
-    const vec2 sz = slab(uEye.z, dir.z, zRange.x - 1e-6, zRange.y + 1e-6);
+    const vec2 sz = slab(origin.z, dir.z, zRange.x - 1e-6, zRange.y + 1e-6);
     const float ta = max(max(tIn, sz.x), 0.0), tb = min(min(tOut, sz.y), t);
     const float tWater = ta <= tb ? traceSurface(ray, ta, tb) : -1.0;
     if (tWater >= 0.0) {
@@ -75,7 +77,7 @@ void main() {
     }
   }
 
-  const vec3 hit = uEye + t * dir;
+  const vec3 hit = origin + t * dir;
   WaterView water;
   if (kind == kWater) water = waterView(hit);
   vec2 ddx, ddy;

@@ -16,6 +16,11 @@ uniform vec3 uWaterColor;     // linear RGB
 uniform float uViewDistance;  // world units of water that absorb ~63% (Beer-Lambert)
 uniform float uAmbient;       // floor light without sun
 uniform vec3 uEye;            // world
+uniform int uOrtho;           // 1: orthographic camera, every view ray along uViewDir
+uniform vec3 uViewDir;        // world, unit: the camera's view direction
+
+// Unit direction of the view ray that reaches `world`.
+vec3 viewRay(vec3 world) { return uOrtho != 0 ? uViewDir : normalize(world - uEye); }
 
 const vec3 kBackground = vec3(0.07, 0.08, 0.1);  // behind the tank
 
@@ -41,7 +46,7 @@ struct WaterView {
 WaterView waterView(vec3 world) {
   WaterView w;
   w.normal = surfaceNormal(world.xy);
-  w.view = normalize(world - uEye);
+  w.view = viewRay(world);
   if (dot(w.normal, w.view) > 0.0) w.normal = -w.normal;  // grazing views of steep waves
   const vec3 r = refract(w.view, w.normal, kEtaAirWater);
   // The refracted ray ends on the floor, or on a wall if it leaves the tank first; a wall shows
@@ -68,7 +73,7 @@ vec3 waterColor(WaterView w, vec3 tiles) {
 // on the glass and a bright meniscus line at the surface.
 vec3 wallColor(vec3 world, vec3 normal) {
   const float surface = surfaceZ(clamp(world.xy, vec2(0.0), uTank));
-  const vec3 v = normalize(world - uEye);
+  const vec3 v = viewRay(world);
   const float depth = surface - world.z;
   const vec2 foot = clamp(world.xy - normal.xy * 0.01, vec2(0.0), uTank);
   const float light = uAmbient + (1.0 - uAmbient) * texture(uCaustics, foot / uTank).r;
