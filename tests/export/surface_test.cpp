@@ -9,6 +9,7 @@
 #include <map>
 #include <numbers>
 #include <random>
+#include <regex>
 
 #include "render/marching_cubes.h"
 #include "render/particle_exporter.h"
@@ -266,4 +267,16 @@ TEST(SurfaceCli, WritesOneMeshPerExportedFrameAndRefusesWhatItCannot) {
   test::expectOneLineError(
       {"render", balls, "--frames", "2", "--export", "surface", "--surface-format", "stl", "--out", out, "--quiet"},
       "--surface-format 'stl' is not a format (expected ply, obj or vtk)");
+}
+
+TEST(SurfaceCli, BenchPrintsARowPerResolution) {
+  const std::string balls = std::string(TIDEPOOL_TEST_DATA) + "/soak/balls.json";
+  const test::ProcessResult r = test::runTidepool(
+      {"bench", "surface", balls, "--resolution", "16,24", "--repeats", "1", "--warmup", "0", "--steps", "1"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  for (const char* row : {R"(\n +[0-9]+ +16 +[0-9]+x[0-9]+x[0-9]+ +[1-9])", R"(\n +[0-9]+ +24 +[0-9]+x)"})
+    EXPECT_TRUE(std::regex_search(r.out, std::regex(row))) << row << "\n" << r.out;
+  test::expectOneLineError({"bench", "surface", "life", "--repeats", "1"}, "life has no water");
+  test::expectOneLineError({"bench", "surface", "life", "--particles", "1000"},
+                           "--particles needs a balls or fluid scene");
 }
