@@ -23,9 +23,11 @@ void main() {
   if (i >= uCount) return;
   const vec3 g = (positions[i].xyz - uOrigin) / uCell;  // in cells
   if (any(isnan(g)) || any(isinf(g))) return;
-  // Interior corners only: the shell reads as 0 anyway (cube.glsl).
-  const ivec3 lo = ivec3(max(ceil(g - uReach), vec3(1.0)));
-  const ivec3 hi = ivec3(min(floor(g + uReach), vec3(uCorners) - 2.0));
+  // Interior corners only: the shell reads as 0 anyway (cube.glsl). Clamped as floats, so a
+  // particle flung far away converts to no loop rather than to an overflowed int.
+  const vec3 top = vec3(uCorners) - 2.0;
+  const ivec3 lo = ivec3(clamp(ceil(g - uReach), vec3(1.0), top + 1.0));
+  const ivec3 hi = ivec3(clamp(floor(g + uReach), vec3(0.0), top));
   for (int z = lo.z; z <= hi.z; ++z)
     for (int y = lo.y; y <= hi.y; ++y)
       for (int x = lo.x; x <= hi.x; ++x) {

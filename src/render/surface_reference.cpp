@@ -49,8 +49,8 @@ std::vector<std::uint32_t> splatReference(const std::vector<glm::vec4>& position
   for (const glm::vec4& p : positions) {
     const glm::vec3 g = (glm::vec3(p) - grid.origin) / grid.cell;
     if (!std::isfinite(g.x) || !std::isfinite(g.y) || !std::isfinite(g.z)) continue;
-    const glm::ivec3 lo(glm::max(glm::ceil(g - reach), glm::vec3(1.0f)));
-    const glm::ivec3 hi(glm::min(glm::floor(g + reach), top));
+    const glm::ivec3 lo(glm::clamp(glm::ceil(g - reach), glm::vec3(1.0f), top + 1.0f));
+    const glm::ivec3 hi(glm::clamp(glm::floor(g + reach), glm::vec3(0.0f), top));
     for (int z = lo.z; z <= hi.z; ++z)
       for (int y = lo.y; y <= hi.y; ++y)
         for (int x = lo.x; x <= hi.x; ++x) {

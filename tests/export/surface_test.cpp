@@ -107,6 +107,8 @@ TEST_F(SurfaceTest, GpuMatchesTheCpuReference) {
   std::uniform_real_distribution<float> u(0.1f, 0.9f);
   std::vector<glm::vec4> particles(300);
   for (auto& p : particles) p = glm::vec4(u(rng), u(rng), 0.5f * u(rng), 1.0f);
+  particles[7] = glm::vec4(3e30f, -3e30f, 1e20f, 1.0f);  // flung far away: adds nothing, ends
+  particles[8] = glm::vec4(NAN, 0.5f, 0.5f, 1.0f);
   const gl::Buffer buffer{std::span<const glm::vec4>(particles)};
   const SurfaceInput input{&buffer, particles.size(), 0.03f, 2e-4f, {0, 0, 0}, {1, 1, 0.5f}};
   const SurfaceParams params{14, 2.0f, 0.5f};
