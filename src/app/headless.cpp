@@ -1,5 +1,7 @@
 #include "app/headless.h"
 
+#include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <memory>
 
@@ -74,10 +76,17 @@ int renderHeadless(const RenderJob& request) {
   CheckpointSchedule schedule(job.checkpointEvery, stage->simTime());
   int saved = 0;
   std::unique_ptr<ParticleExporter> exporter;
-  if (job.exportFormat) {
+  std::unique_ptr<SurfaceMesher> mesher;  // --export surface
+  if (job.surface) {
+    const std::optional<SurfaceInput> water = stage->surfaceInput();
+    if (!water) throw Error(scene.model + " has no water: --export surface needs a balls or fluid scene");
+    mesher = std::make_unique<SurfaceMesher>(shaders);
+    mesher->plan(*water, *job.surface);  // a grid that does not fit is refused before the run
+  } else if (job.exportFormat) {
     checkExportable(scene.model, stage->exportSource(), *job.exportFormat);
-    exporter = std::make_unique<ParticleExporter>(job.outDir, *job.exportFormat, job.exportEvery);
   }
+  if (job.exportFormat) exporter = std::make_unique<ParticleExporter>(job.outDir, *job.exportFormat, job.exportEvery);
+  double surfaceMs = 0;  // building the meshes (GPU work and the wait for their sizes)
   RenderTarget target(width, height);
   gl::GpuProfiler profiler;
   FrameWriter writer;
@@ -96,8 +105,14 @@ int renderHeadless(const RenderJob& request) {
     profiler.endFrame();
     if (exporter) {
       // After render(): a view may set what the state means (the swarm's aspect, its image colours).
-      if (exporter->due(i))
-        exporter->capture(i, stage->simTime(), *stage->exportSource());  // back a frame or two later
+      if (exporter->due(i) && mesher) {
+        const auto start = std::chrono::steady_clock::now();
+        mesher->build(*stage->surfaceInput(), *job.surface);
+        surfaceMs += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        exporter->capture(i, stage->simTime(), mesher->exportSource());  // back a frame or two later
+      } else if (exporter->due(i)) {
+        exporter->capture(i, stage->simTime(), *stage->exportSource());
+      }
       if (i == 0) exporter->writeObstacles(stage->exportObstacles());
       exporter->poll();
     }
@@ -121,6 +136,12 @@ int renderHeadless(const RenderJob& request) {
   }
   if (video) video->close();
   progress.finish();
+  if (mesher) {
+    char line[160];
+    std::snprintf(line, sizeof line, "water surface: %.2f ms per exported frame to build the mesh (%zu triangles last)",
+                  surfaceMs / std::max(1, exporter->written()), mesher->counts().triangles);
+    log::info(line);
+  }
   if (exporter) log::info(exporter->summary());
   if (pngFrames)
     log::info("wrote " + std::to_string(frames) + " frames (" + std::to_string(width) + "x" + std::to_string(height) +

@@ -8,6 +8,7 @@
 #include "gl/context.h"
 #include "io/export_series.h"
 #include "io/json.h"
+#include "render/surface_mesher.h"
 
 namespace tidepool {
 
@@ -20,11 +21,12 @@ struct RenderJob {
   std::filesystem::path video;                   // .mp4 through ffmpeg; empty: none
   std::optional<io::ExportFormat> exportFormat;  // particles to outDir every exportEvery frames (frame 0 too)
   int exportEvery = 1;
-  bool noFrames = false;             // no PNG frames in outDir (with an export)
-  std::filesystem::path resume;      // a checkpoint to start from (scene/checkpoint.h); empty: the scene's start
-  std::filesystem::path checkpoint;  // where checkpoints go; empty: defaultCheckpointPath when any is asked for
-  double checkpointEvery = 0;        // simulated s between checkpoints (0: none but the last)
-  bool saveLast = false;             // a checkpoint after the last frame (implied by checkpoint or checkpointEvery)
+  std::optional<SurfaceParams> surface;  // with exportFormat (ply, obj, vtk): the water surface, not the particles
+  bool noFrames = false;                 // no PNG frames in outDir (with an export)
+  std::filesystem::path resume;          // a checkpoint to start from (scene/checkpoint.h); empty: the scene's start
+  std::filesystem::path checkpoint;      // where checkpoints go; empty: defaultCheckpointPath when any is asked for
+  double checkpointEvery = 0;            // simulated s between checkpoints (0: none but the last)
+  bool saveLast = false;                 // a checkpoint after the last frame (implied by checkpoint or checkpointEvery)
   gl::Backend backend = gl::Backend::Auto;
   bool debugGl = false;
   bool progress = true;

@@ -10,13 +10,14 @@ Benchmark addGridBench(CLI::App& bench);     // grid_bench.cpp
 Benchmark addMemoryBench(CLI::App& bench);   // memory_bench.cpp
 Benchmark addRenderBench(CLI::App& bench);   // render_bench.cpp
 Benchmark addRipplesBench(CLI::App& bench);  // ripples_bench.cpp
+Benchmark addSurfaceBench(CLI::App& bench);  // surface_bench.cpp
 Benchmark addLifeBench(CLI::App& bench);     // life_bench.cpp
 Benchmark addSwarmBench(CLI::App& bench);    // swarm_bench.cpp
 
 const std::vector<Registrar>& registrars() {
-  static const std::vector<Registrar> table = {addBallsBench,  addExportBench,  addFluidBench,
-                                               addGridBench,   addLifeBench,    addMemoryBench,
-                                               addRenderBench, addRipplesBench, addSwarmBench};
+  static const std::vector<Registrar> table = {addBallsBench,   addExportBench, addFluidBench,  addGridBench,
+                                               addLifeBench,    addMemoryBench, addRenderBench, addRipplesBench,
+                                               addSurfaceBench, addSwarmBench};
   return table;
 }
 

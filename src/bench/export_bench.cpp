@@ -17,6 +17,9 @@
 namespace tidepool::bench {
 namespace {
 
+// The particles' formats: the first two of io::ExportFormat (OBJ is for surfaces: bench surface).
+constexpr std::array<const char*, 2> kParticleFormats = {io::kExportFormatNames[0], io::kExportFormatNames[1]};
+
 struct Options {
   std::string scene = "dam-break", formats = "vtk,ply", out;
   int frames = 0;  // 0: common.repeats
@@ -31,8 +34,7 @@ double wallMs(const std::function<void()>& work) {
 
 int run(Env& env, const Options& o) {
   const Scene scene = loadScene(resolveScenePath(o.scene));
-  const std::vector<io::ExportFormat> formats =
-      parseChoices<io::ExportFormat>(o.formats, io::kExportFormatNames, "--format");
+  const std::vector<io::ExportFormat> formats = parseChoices<io::ExportFormat>(o.formats, kParticleFormats, "--format");
   auto stage = createStage(scene, env.shaders);
   for (io::ExportFormat format : formats) checkExportable(scene.model, stage->exportSource(), format);
   const int frames = o.frames > 0 ? o.frames : env.common.repeats;

@@ -128,7 +128,8 @@ Command addRender(CLI::App& app) {
     int frames = 0;
     std::string size, backend = "auto";
     bool quiet = false;
-    std::string rules, exportFormat;
+    std::string rules, exportFormat, surfaceFormat = "ply";
+    SurfaceParams surface;
     CheckpointOpts checkpoints;
     ResolutionOpts resolution;
   };
@@ -141,17 +142,31 @@ Command addRender(CLI::App& app) {
   sub->add_option("--video", o->job.video, "video file written through ffmpeg (e.g. clip.mp4)");
   auto* exportOpt = sub->add_option("--export", o->exportFormat,
                                     "also write the particles to --out: vtk (frame_*.vtp + particles.pvd for "
-                                    "ParaView) or ply (frame_*.ply for Blender); ripples: vtk, its heightfield");
+                                    "ParaView) or ply (frame_*.ply for Blender); ripples: vtk, its heightfield; "
+                                    "surface: the water's surface mesh (balls, fluid: surface_*.ply)");
   sub->add_option("--every", o->job.exportEvery, "with --export: every K-th frame (frame 0 included; default 1)")
       ->needs(exportOpt);
   sub->add_flag("--no-frames", o->job.noFrames, "with --export: no PNG frames in --out")->needs(exportOpt);
+  sub->add_option("--surface-resolution", o->surface.resolution,
+                  "with --export surface: grid cells along the domain's longest axis (default 128)")
+      ->needs(exportOpt);
+  sub->add_option("--surface-smoothing", o->surface.smoothing,
+                  "with --export surface: the density kernel's reach in particle radii (default 4)")
+      ->needs(exportOpt);
+  sub->add_option(
+         "--surface-iso", o->surface.iso,
+         "with --export surface: the level of the density (1 = water at rest) the surface passes (default 0.5)")
+      ->needs(exportOpt);
+  sub->add_option("--surface-format", o->surfaceFormat,
+                  "with --export surface: ply (default; x y z nx ny nz and faces), obj or vtk (+ surface.pvd)")
+      ->needs(exportOpt);
   sub->add_option("--backend", o->backend, "auto, egl or osmesa")->check(CLI::IsMember({"auto", "egl", "osmesa"}));
   sub->add_flag("--debug-gl", o->job.debugGl, "log KHR_debug driver messages");
   sub->add_flag("--quiet", o->quiet, "no progress bar");
   sub->add_option("--rules", o->rules, "life: rules JSON file, preset name or share code (sets params.rules)");
   addCheckpointOptions(sub, o->checkpoints);
   addResolutionOptions(sub, o->resolution);
-  return {sub, [o] {
+  return {sub, [o, sub] {
             RenderJob job = o->job;
             applyCheckpointOptions(o->checkpoints, job);
             if (o->frames > 0) job.frames = o->frames;
@@ -166,7 +181,15 @@ Command addRender(CLI::App& app) {
             job.progress = !o->quiet;
             if (!o->rules.empty()) job.paramOverrides = {{"rules", o->rules}};
             job.paramOverrides = applyResolutionOptions(o->resolution, job.paramOverrides, job.fitBudgetMs);
-            if (!o->exportFormat.empty()) job.exportFormat = io::parseExportFormat(o->exportFormat);
+            if (o->exportFormat == "surface") {
+              job.surface = o->surface;
+              job.exportFormat = io::parseSurfaceFormat(o->surfaceFormat);
+            } else if (!o->exportFormat.empty()) {
+              for (const char* option :
+                   {"--surface-resolution", "--surface-smoothing", "--surface-iso", "--surface-format"})
+                if (sub->count(option) > 0) throw Error(std::string(option) + " needs --export surface");
+              job.exportFormat = io::parseExportFormat(o->exportFormat);
+            }
             renderHeadless(job);
             return 0;
           }};

@@ -5,6 +5,8 @@
 // and the obstacles once, as a mesh: obstacles.vtp or obstacles.ply. Frame numbers are those of
 // the run (frame_00010 is the state the PNG frame_00010.png shows). A heightfield (ripples) is
 // written as VTK ImageData, frame_00010.vti, in the same collection; PLY has no form for it.
+// A water surface (render/surface_mesher.h) is a triangle mesh per frame: surface_00010.ply (x y z
+// nx ny nz, faces), surface_00010.obj (v, vn, f) or surface_00010.vtp listed in surface.pvd.
 #pragma once
 
 #include <array>
@@ -19,14 +21,22 @@
 
 namespace tidepool::io {
 
-enum class ExportFormat { Vtk, Ply };
-inline constexpr std::array<const char*, 2> kExportFormatNames = {"vtk", "ply"};
+enum class ExportFormat { Vtk, Ply, Obj };  // Obj: surfaces only
+inline constexpr std::array<const char*, 3> kExportFormatNames = {"vtk", "ply", "obj"};
 
-using ExportFrame = std::variant<PointCloud, HeightField>;
+struct SurfaceFrame {
+  double time = 0;    // simulated s
+  TriangleMesh mesh;  // with normals
+};
 
-// "vtk" or "ply"; anything else throws Error "--export 'xyz' is not a format (expected vtk or ply)".
+using ExportFrame = std::variant<PointCloud, HeightField, SurfaceFrame>;
+
+// --export's particle formats, "vtk" or "ply" (the CLI takes "surface" before asking); anything
+// else throws Error "--export 'xyz' is not a format (expected vtk, ply or surface)".
 ExportFormat parseExportFormat(const std::string& name);
-const char* exportExtension(ExportFormat format);  // "vtp", "ply"
+// --surface-format: "ply", "obj" or "vtk"; anything else throws Error naming them.
+ExportFormat parseSurfaceFormat(const std::string& name);
+const char* exportExtension(ExportFormat format);  // "vtp", "ply", "obj"
 
 class ExportSeries {
  public:
@@ -38,11 +48,12 @@ class ExportSeries {
   const std::filesystem::path& folder() const { return m_folder; }
   ExportFormat format() const { return m_format; }
   std::filesystem::path framePath(int frame, bool heightField = false) const;  // folder/frame_00010.vtp (.vti)
+  std::filesystem::path surfacePath(int frame) const;                          // folder/surface_00010.ply
 
  private:
   std::filesystem::path m_folder;
   ExportFormat m_format;
-  PvdCollection m_collection;
+  PvdCollection m_collection, m_surfaces;  // particles.pvd, surface.pvd (vtk)
   int m_written = 0;
 };
 

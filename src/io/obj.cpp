@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -11,6 +12,7 @@
 #include "io/assets.h"
 #include "io/json.h"
 #include "io/limits.h"
+#include "io/output_file.h"
 
 namespace tidepool::io {
 namespace {
@@ -204,6 +206,35 @@ std::filesystem::path findMesh(const std::string& nameOrPath) {
   std::string list;
   for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
   throw Error("mesh '" + nameOrPath + "' not found: neither a file nor a name in assets/meshes (known: " + list + ")");
+}
+
+std::vector<std::uint8_t> objBytes(const TriangleMesh& mesh, const std::string& comment) {
+  std::string out;
+  out.reserve(40 * mesh.vertices.size() * (mesh.normals.empty() ? 1 : 2) + 40 * mesh.triangles.size() + 64);
+  if (!comment.empty()) out += "# " + comment + "\n";
+  char line[160];
+  for (const glm::vec3& v : mesh.vertices) {
+    std::snprintf(line, sizeof line, "v %.9g %.9g %.9g\n", double(v.x), double(v.y), double(v.z));
+    out += line;
+  }
+  for (const glm::vec3& n : mesh.normals) {
+    std::snprintf(line, sizeof line, "vn %.6g %.6g %.6g\n", double(n.x), double(n.y), double(n.z));
+    out += line;
+  }
+  const bool normals = !mesh.normals.empty();
+  for (const glm::uvec3& t : mesh.triangles) {
+    const unsigned a = t.x + 1, b = t.y + 1, c = t.z + 1;
+    if (normals)
+      std::snprintf(line, sizeof line, "f %u//%u %u//%u %u//%u\n", a, a, b, b, c, c);
+    else
+      std::snprintf(line, sizeof line, "f %u %u %u\n", a, b, c);
+    out += line;
+  }
+  return {out.begin(), out.end()};
+}
+
+void writeObj(const std::filesystem::path& file, const TriangleMesh& mesh, const std::string& comment) {
+  replaceFile(file, objBytes(mesh, comment));
 }
 
 }  // namespace tidepool::io

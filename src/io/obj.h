@@ -1,5 +1,6 @@
 // Wavefront OBJ triangle meshes: vertex positions and faces; texture coordinates and normals are
-// read past. Polygons are fan-triangulated, negative indices count back from the last vertex:
+// read past (and normals written: objBytes below). Polygons are fan-triangulated, negative indices count back from the
+// last vertex:
 //
 //   v 0 0 0
 //   v 1 0 0
@@ -11,6 +12,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <glm/glm.hpp>
 #include <string>
@@ -21,6 +23,7 @@ namespace tidepool::io {
 struct TriangleMesh {
   std::vector<glm::vec3> vertices;    // positions, file units
   std::vector<glm::uvec3> triangles;  // 0-based vertex indices, in the file's winding
+  std::vector<glm::vec3> normals;     // per vertex (unit, outward), or none
   glm::vec3 boundsMin() const;        // of the vertices that triangles use
   glm::vec3 boundsMax() const;
 };
@@ -40,6 +43,12 @@ struct EdgeCheck {
   std::string describe() const;  // "not closed: 4 edges belong to one triangle only (a hole), first 3-7"
 };
 EdgeCheck checkClosed(const TriangleMesh& mesh);
+
+// The mesh as OBJ text: a comment line (`comment`, e.g. "tidepool time 0.5", when not empty),
+// "v x y z" per vertex, "vn nx ny nz" per vertex when it has normals, then "f a//a b//b c//c"
+// (1-based; "f a b c" without normals). Blender and ParaView import it.
+std::vector<std::uint8_t> objBytes(const TriangleMesh& mesh, const std::string& comment = "");
+void writeObj(const std::filesystem::path& file, const TriangleMesh& mesh, const std::string& comment = "");
 
 // A mesh named in a scene: an absolute or existing path as given, else assets/meshes/<name>
 // (".obj" may be left out). Throws Error listing the meshes there.

@@ -5,6 +5,7 @@
 #include <cstring>
 #include <string>
 
+#include "base/error.h"
 #include "io/output_file.h"
 
 namespace tidepool::io {
@@ -71,14 +72,28 @@ std::vector<std::uint8_t> plyBytes(const PointCloud& cloud) {
   return out;
 }
 
-std::vector<std::uint8_t> plyBytes(const TriangleMesh& mesh) {
-  const std::string header =
-      "ply\nformat binary_little_endian 1.0\nelement vertex " + std::to_string(mesh.vertices.size()) +
-      "\nproperty float x\nproperty float y\nproperty float z\nelement face " + std::to_string(mesh.triangles.size()) +
-      "\nproperty list uchar int vertex_indices\n" + "end_header\n";
+std::vector<std::uint8_t> plyBytes(const TriangleMesh& mesh, std::optional<double> time, bool withNormals) {
+  const bool normals = withNormals || !mesh.normals.empty();
+  if (normals && mesh.normals.size() != mesh.vertices.size())
+    throw Error("a mesh has " + std::to_string(mesh.normals.size()) + " normals for " +
+                std::to_string(mesh.vertices.size()) + " vertices");
+  std::string header = "ply\nformat binary_little_endian 1.0\n";
+  if (time) {
+    char comment[96];
+    std::snprintf(comment, sizeof comment, "comment tidepool time %.9g\n", *time);
+    header += comment;
+  }
+  header += "element vertex " + std::to_string(mesh.vertices.size()) +
+            "\nproperty float x\nproperty float y\nproperty float z\n" +
+            (normals ? "property float nx\nproperty float ny\nproperty float nz\n" : "") + "element face " +
+            std::to_string(mesh.triangles.size()) + "\nproperty list uchar int vertex_indices\nend_header\n";
   std::vector<std::uint8_t> out = headerBytes(header);
-  for (const glm::vec3& v : mesh.vertices)
-    for (int k = 0; k < 3; ++k) put(out, v[k]);
+  out.reserve(out.size() + mesh.vertices.size() * (normals ? 24 : 12) + mesh.triangles.size() * 13);
+  for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+    for (int k = 0; k < 3; ++k) put(out, mesh.vertices[i][k]);
+    if (normals)
+      for (int k = 0; k < 3; ++k) put(out, mesh.normals[i][k]);
+  }
   for (const glm::uvec3& t : mesh.triangles) {
     put(out, std::uint8_t(3));
     for (int k = 0; k < 3; ++k) put(out, std::int32_t(t[k]));
@@ -88,6 +103,8 @@ std::vector<std::uint8_t> plyBytes(const TriangleMesh& mesh) {
 
 void writePly(const std::filesystem::path& file, const PointCloud& cloud) { replaceFile(file, plyBytes(cloud)); }
 
-void writePly(const std::filesystem::path& file, const TriangleMesh& mesh) { replaceFile(file, plyBytes(mesh)); }
+void writePly(const std::filesystem::path& file, const TriangleMesh& mesh, std::optional<double> time, bool normals) {
+  replaceFile(file, plyBytes(mesh, time, normals));
+}
 
 }  // namespace tidepool::io

@@ -23,6 +23,8 @@ io::ExportSeries makeSeries(std::filesystem::path folder, io::ExportFormat forma
 void checkExportable(const std::string& model, const std::optional<ExportSource>& source, io::ExportFormat format) {
   if (!source)
     throw Error(model + " has no particles: --export vtk|ply needs balls, fluid, life or swarm (ripples: vtk only)");
+  if (format == io::ExportFormat::Obj)
+    throw Error(model + " particles have no OBJ form: export them as vtk or ply (--export surface writes OBJ meshes)");
   if (source->heightField && format != io::ExportFormat::Vtk)
     throw Error(
         model +

@@ -19,6 +19,7 @@
 #include "io/json.h"
 #include "io/obj.h"
 #include "render/export_source.h"
+#include "render/surface_mesher.h"
 #include "render/target.h"
 #include "scene/scene_params.h"
 #include "sim/divergence.h"
@@ -66,6 +67,9 @@ class Stage {
   // now (water scenes; empty for none).
   virtual std::optional<ExportSource> exportSource() { return std::nullopt; }
   virtual io::TriangleMesh exportObstacles() { return {}; }
+  // What the water-surface mesher reads (render/surface_mesher.h); nullopt for a model without
+  // water (life, swarm, ripples, blank).
+  virtual std::optional<SurfaceInput> surfaceInput() { return std::nullopt; }
 };
 
 // A stage whose model is a sim::Model (every model but blank): stepping, the clock, the status

@@ -157,6 +157,13 @@ class WaterStage final : public Stage {
     return m_balls ? waterSource(*m_balls) : fluidSource(*m_fluid);
   }
   io::TriangleMesh exportObstacles() override { return obstacleSurface(water().obstacles(), water().radius()); }
+  std::optional<SurfaceInput> surfaceInput() override {
+    const sim::ParticleWater& w = water();
+    // Water at rest: balls pack hexagonally (√2 per (2r)³), the fluid's lattice is cubic (one per d³ = (2r)³).
+    const float cube = std::pow(2.0f * w.radius(), 3.0f);
+    const float volume = m_balls ? cube / std::sqrt(2.0f) : cube;
+    return SurfaceInput{&w.positions(), w.count(), w.radius(), volume, w.water().domainMin, w.water().domainMax};
+  }
 
   // Checkpoints: which model runs comes before the parameters (they are that model's keys).
   void visitSetupState(sim::StateVisitor& v) override {

@@ -29,7 +29,7 @@ TEST(ExportCli, UnknownFormatEveryZeroAndEveryAloneAreOneLine) {
   test::TempDir dir;
   const std::string out = (dir / "out").string();
   test::expectOneLineError({"render", kBalls, "--frames", "2", "--export", "xyz", "--out", out, "--quiet"},
-                           "--export 'xyz' is not a format (expected vtk or ply)");
+                           "--export 'xyz' is not a format (expected vtk, ply or surface)");
   test::expectOneLineError(
       {"render", kBalls, "--frames", "2", "--export", "ply", "--every", "0", "--out", out, "--quiet"},
       "--every 0 must be at least 1");

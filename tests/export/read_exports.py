@@ -7,7 +7,9 @@
     vertex counts, the fields and their components per model, z = 0 for the 2D models;
   - each .ply is read by the small reader below (not VTK's) and must hold, value for value, what
     the .vtp of the same frame holds (the runs are reproducible);
-  - the obstacles' mesh (.vtp, .ply) and the ripples' heightfield (.vti, vtkXMLImageDataReader).
+  - the obstacles' mesh (.vtp, .ply) and the ripples' heightfield (.vti, vtkXMLImageDataReader);
+  - the water surface (`--export surface`): each surface_*.vtp read by VTK and the surface_*.ply of
+    the same frame by the small mesh reader below hold the same closed, consistently wound mesh.
 Usage: read_exports.py TIDEPOOL_EXE TEST_DATA_DIR WORK_DIR. Exits 77 (skipped) only when VTK's
 Python module is not installed."""
 import json
@@ -240,6 +242,62 @@ for d in sets:
     else:
         check(lo < -0.01 and hi <= 0.06, f"{where}: height range {lo}..{hi}")
 print(f"ripples: {len(sets)} heightfields of {ripples['width']} x {ripples['height']} cells")
+
+
+def read_ply_mesh(path):
+    """A plain binary_little_endian PLY mesh reader: float vertex rows, then uchar-counted int faces."""
+    with open(path, "rb") as f:
+        data = f.read()
+    end = data.index(b"end_header\n") + len(b"end_header\n")
+    counts, props = {}, []
+    for line in data[:end].decode("ascii").splitlines()[2:]:
+        words = line.split()
+        if words[0] == "element":
+            counts[words[1]] = int(words[2])
+        elif words[0] == "property" and words[1] == "float":
+            props.append(words[2])
+    stride = 4 * len(props)
+    rows = [struct.unpack_from("<" + "f" * len(props), data, end + i * stride) for i in range(counts["vertex"])]
+    at, faces = end + counts["vertex"] * stride, []
+    for _ in range(counts["face"]):
+        n = data[at]
+        faces.append(struct.unpack_from(f"<{n}i", data, at + 1))
+        at += 1 + 4 * n
+    if at != len(data):
+        raise ValueError(f"{path}: {len(data) - at} bytes after the faces")
+    return props, rows, faces
+
+
+surface_dir = os.path.join(WORK, "surface")
+balls_file = os.path.join(DATA, "soak", "balls.json")
+for fmt in ("vtk", "ply"):
+    out = os.path.join(surface_dir, fmt)
+    shutil.rmtree(out, ignore_errors=True)
+    cmd = [EXE, "render", balls_file, "--frames", "3", "--size", "32x18", "--export", "surface", "--surface-format",
+           fmt, "--surface-resolution", "32", "--every", "2", "--no-frames", "--quiet", "--out", out]
+    r = subprocess.run(cmd, capture_output=True, text=True)
+    if r.returncode != 0:
+        sys.exit(f"{' '.join(cmd)} failed ({r.returncode}): {r.stderr}")
+sets = ET.parse(os.path.join(surface_dir, "vtk", "surface.pvd")).getroot().find("Collection").findall("DataSet")
+check([d.get("file") for d in sets] == ["surface_00000.vtp", "surface_00002.vtp"], f"surface.pvd files {sets}")
+for frame in (0, 2):
+    where = f"surface frame {frame}"
+    poly, points, _ = read_vtp(os.path.join(surface_dir, "vtk", f"surface_{frame:05d}.vtp"))
+    props, rows, faces = read_ply_mesh(os.path.join(surface_dir, "ply", f"surface_{frame:05d}.ply"))
+    check(props == ["x", "y", "z", "nx", "ny", "nz"], f"{where}: ply properties {props}")
+    check(len(rows) == len(points) and all(tuple(row[:3]) == tuple(p) for row, p in zip(rows, points)),
+          f"{where}: ply and vtp vertices differ ({len(rows)}, {len(points)})")
+    ids = poly.GetPolys().GetData()
+    vtp_faces = [tuple(int(ids.GetValue(4 * t + 1 + k)) for k in range(3)) for t in range(poly.GetNumberOfPolys())]
+    check(len(faces) > 20 and faces == vtp_faces, f"{where}: {len(faces)} ply faces, {len(vtp_faces)} vtp polys")
+    directed = {}
+    for a, b, c in faces:
+        for e in ((a, b), (b, c), (c, a)):
+            directed[e] = directed.get(e, 0) + 1
+    check(all(n == 1 and directed.get((b, a)) == 1 for (a, b), n in directed.items()),
+          f"{where}: not closed or not consistently wound")
+    check(all(abs(math.sqrt(sum(x * x for x in row[3:])) - 1) < 1e-4 for row in rows), f"{where}: normals not unit")
+print(f"surface: 2 frames of {len(faces)} triangles, closed and wound one way, vtp (VTK reader) and ply agree")
 
 if failures:
     sys.exit(f"{len(failures)} checks failed")
