@@ -74,8 +74,9 @@ class Balls final : public sim::Model, public sim::ParticleWater {
   glm::vec3 wallMax() const override { return m_wallMax; }
   float domainRotation() const override;  // radians about x
   const Params& water() const override { return m_params; }
-  std::size_t bytesPerBall() const;                                   // GPU memory per ball, grid included
-  std::size_t cells() const { return m_grid ? m_grid->cells() : 0; }  // of the neighbour grid
+  std::size_t bytesPerBall() const;                                        // GPU memory per ball, grid included
+  std::size_t cells() const { return m_grid ? m_grid->cells() : 0; }       // of the neighbour grid
+  const grid::UniformGrid* neighbourGrid() const { return m_grid.get(); }  // null before the first reset
   double speedBound() const;  // m/s: faster means more than 2r per step, balls can pass through each other
 
   const gl::Buffer& positions() const override { return m_pos[m_posIndex]; }   // vec4 (m, w = 1)

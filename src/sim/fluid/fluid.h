@@ -76,7 +76,8 @@ class Fluid final : public sim::Model, public sim::ParticleWater {
   double mass() const { return m_params.restDensity * m_rest.volume; }  // kg per particle
   const RestLattice& rest() const { return m_rest; }
   std::size_t obstacleCount() const { return m_obstacles.particles(); }
-  std::size_t cells() const { return m_grid ? m_grid->cells() : 0; }  // of the neighbour grid (cell h)
+  std::size_t cells() const { return m_grid ? m_grid->cells() : 0; }       // of the neighbour grid (cell h)
+  const grid::UniformGrid* neighbourGrid() const { return m_grid.get(); }  // null before the first reset
   std::size_t bytesPerParticle() const;  // GPU memory of the state, the solver and the grid, per particle
   double speedBound() const;             // m/s: faster moves more than h per step (neighbours missed)
 
