@@ -49,6 +49,13 @@ void ParamEditor::choiceIndex(const ParamInfo& info, int& index, std::span<const
   tooltip(info);
 }
 
+bool ParamEditor::action(const ParamInfo& info) {
+  const bool pressed = ImGui::Button(info.label);
+  tooltip(info);
+  m_changed |= pressed;
+  return pressed;
+}
+
 bool ParamEditor::beginGroup(const ParamInfo& info) {
   const bool open = ImGui::TreeNodeEx(info.key, 0, "%s", info.label);  // groups start closed: a compact panel
   tooltip(info);

@@ -18,6 +18,7 @@ class ParamEditor final : public ParamVisitor {
   void color(const ParamInfo& info, glm::vec3& value) override;
   void vector(const ParamInfo& info, glm::vec3& value, float min, float max) override;
   void choiceIndex(const ParamInfo& info, int& index, std::span<const char* const> names) override;
+  bool action(const ParamInfo& info) override;  // a button
   bool beginGroup(const ParamInfo& info) override;
   void endGroup() override;
   // Lists: a tree node with an "Add" button, one node per item with a "Remove" button.

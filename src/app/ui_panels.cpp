@@ -81,14 +81,19 @@ bool drawMainPanel(const Scene& scene, Stage& stage, const gl::GpuProfiler& prof
   ImGui::Text("%s  [%s%s]", scene.name.c_str(), scene.model.c_str(), modelAuto ? ", model auto" : "");
   if (const std::string s = stage.status(); !s.empty()) ImGui::TextDisabled("%s", s.c_str());
   ImGui::Text("simulated time %.3f s", stage.simTime());
-  timingTable(profiler);
+  if (ui.showTimings) timingTable(profiler);
   livePlots(stage, ui);
+  ImGui::Checkbox("Timings (D)", &ui.showTimings);
+  ImGui::SameLine();
+  ImGui::Checkbox("Indicators", &ui.showIndicators);
+  ImGui::SameLine();
+  if (ImGui::Button("Fullscreen (F11)")) ui.fullscreenRequested = true;
 
   ImGui::Checkbox("Pause (Space)", &ui.paused);
   ImGui::SameLine();
   if (ImGui::Button("Step (.)")) ui.stepOnce = true;
   ImGui::SameLine();
-  if (ImGui::Button("Reset (R)")) ui.resetRequested = true;
+  if (ImGui::Button("Restart (R)")) ui.resetRequested = true;
   if (ImGui::Button("Reload shaders (F5)")) ui.reloadRequested = true;
   ImGui::SameLine();
   if (ImGui::Button("Screenshot (F12)")) ui.screenshotRequested = true;

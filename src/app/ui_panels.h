@@ -24,7 +24,10 @@ struct UiState {
   bool resetRequested = false;
   bool reloadRequested = false;
   bool screenshotRequested = false;
-  bool showUi = true;
+  bool showUi = true;                // S (or H): the panels
+  bool showTimings = true;           // D: FPS and the GPU passes' times
+  bool showIndicators = true;        // the overlay: FPS, steps/s, count, grid, axes
+  bool fullscreenRequested = false;  // F11 or the panel's button
   bool recoverRequested = false;
   bool checkpointRequested = false;  // F6
   std::string divergence;            // the model\'s blow-up report; the run is paused while it is set

@@ -6,16 +6,21 @@
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <ctime>
+#include <utility>
 
 #include "app/fit_gpu.h"
+#include "app/indicators.h"
+#include "app/key_bindings.h"
 #include "app/ui_panels.h"
 #include "app/window_checkpoints.h"
 #include "app/window_export.h"
 #include "base/log.h"
 #include "gl/context_window.h"
+#include "gl/frame_pacer.h"
 #include "io/png.h"
 
 namespace tidepool {
@@ -57,8 +62,9 @@ std::string timestampedName() {
   return buf;
 }
 
-Input readInput(GLFWwindow* window, glm::vec2& lastCursor, float& scroll) {
+Input readInput(GLFWwindow* window, glm::vec2& lastCursor, float& scroll, float dt) {
   Input in;
+  in.dt = dt;
   double x = 0, y = 0;
   glfwGetCursorPos(window, &x, &y);
   in.cursor = {float(x), float(y)};
@@ -75,6 +81,21 @@ Input readInput(GLFWwindow* window, glm::vec2& lastCursor, float& scroll) {
 
 float g_scroll = 0.0f;               // accumulated by the GLFW callback between frames
 std::vector<std::string> g_dropped;  // files dropped on the window since the last frame
+
+void apply(KeyAction action, UiState& ui, GLFWwindow* window) {
+  switch (action) {
+    case KeyAction::Quit: glfwSetWindowShouldClose(window, GLFW_TRUE); break;
+    case KeyAction::Pause: ui.paused = !ui.paused; break;
+    case KeyAction::StepOnce: ui.stepOnce = true; break;
+    case KeyAction::Restart: ui.resetRequested = true; break;
+    case KeyAction::ReloadShaders: ui.reloadRequested = true; break;
+    case KeyAction::SaveCheckpoint: ui.checkpointRequested = true; break;
+    case KeyAction::Fullscreen: ui.fullscreenRequested = true; break;
+    case KeyAction::Screenshot: ui.screenshotRequested = true; break;
+    case KeyAction::TogglePanel: ui.showUi = !ui.showUi; break;
+    case KeyAction::ToggleTimings: ui.showTimings = !ui.showTimings; break;
+  }
+}
 
 }  // namespace
 
@@ -131,26 +152,37 @@ int runWindow(const WindowJob& job) {
   Keys keys(window);
   glm::vec2 lastCursor{0.0f};
   constexpr double kFrameSeconds = 1.0 / 60.0;  // simulated time per displayed frame
+  gl::FramePacer pacer(job.framesInFlight);
+  Indicators counters;
+  double lastTime = glfwGetTime();
 
   for (int frame = 0; !context.shouldClose(); ++frame) {
+    pacer.waitForSlot();  // before reading input: what the frame shows is as fresh as the GPU allows
     glfwPollEvents();
-    if (keys.pressed(GLFW_KEY_ESCAPE)) glfwSetWindowShouldClose(window, GLFW_TRUE);
-    if (keys.pressed(GLFW_KEY_SPACE)) ui.paused = !ui.paused;
-    if (keys.pressed(GLFW_KEY_PERIOD)) ui.stepOnce = true;
-    if (keys.pressed(GLFW_KEY_R)) ui.resetRequested = true;
-    if (keys.pressed(GLFW_KEY_F5)) ui.reloadRequested = true;
-    if (keys.pressed(GLFW_KEY_F6)) ui.checkpointRequested = true;
-    if (keys.pressed(GLFW_KEY_F12)) ui.screenshotRequested = true;
-    if (keys.pressed(GLFW_KEY_H)) ui.showUi = !ui.showUi;
-    for (int k = GLFW_KEY_A; k <= GLFW_KEY_Z; ++k)  // other letters are the model's (life: C, N, S)
-      if (k != GLFW_KEY_R && k != GLFW_KEY_H && keys.pressed(k)) stage->key('A' + (k - GLFW_KEY_A));
+    for (const KeyBinding& b : keyBindings())
+      if (keys.pressed(b.key)) apply(b.action, ui, window);
+    for (int k = GLFW_KEY_A; k <= GLFW_KEY_Z; ++k)  // other letters are the model's (life: C, N, W)
+      if (!appAction(k) && keys.pressed(k)) stage->key('A' + (k - GLFW_KEY_A));
+    if (std::exchange(ui.fullscreenRequested, false) && !context.setFullscreen(!context.fullscreen())) {
+      ui.message = "no monitor to go fullscreen on";
+      ui.messageIsError = true;
+    }
+    const double now = glfwGetTime();
+    const float dt = float(std::min(now - lastTime, 0.25));  // real time; a stall does not fling the camera
+    lastTime = now;
 
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
+    const StageIndicators shown = stage->indicators();
+    counters.update(now, shown);
     if (ui.showUi) {
       drawMainPanel(scene, *stage, profiler, ui, checkpoints.autosaveEvery());
       if (auto m = drawExportPanel(exports, *stage)) show(*m);
+    }
+    if (ui.showIndicators) {  // as the original's: apart from the panel (S hides only the panels)
+      drawIndicators(counters, shown);
+      if (shown.view) drawAxesGizmo(*shown.view);
     }
 
     if (ui.reloadRequested) {
@@ -165,7 +197,7 @@ int runWindow(const WindowJob& job) {
       ui.resetRequested = false;
       ui.divergence.clear();
       if (exports.running()) show(exports.stop());  // the series ends where the run restarts
-      stage->reset();
+      stage->restart();
     }
     if (ui.recoverRequested) {
       ui.recoverRequested = false;
@@ -179,7 +211,7 @@ int runWindow(const WindowJob& job) {
         ui.messageIsError = true;
       }
     }
-    stage->input(readInput(window, lastCursor, g_scroll));
+    stage->input(readInput(window, lastCursor, g_scroll, dt));
     for (const std::string& path : std::exchange(g_dropped, {})) {
       const std::string refused = stage->dropFile(path);
       ui.messageIsError = !refused.empty();
@@ -234,6 +266,7 @@ int runWindow(const WindowJob& job) {
       }
     }
     context.swapBuffers();
+    pacer.frameSubmitted();
     if (last) break;
   }
 

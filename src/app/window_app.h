@@ -1,7 +1,8 @@
 // The interactive window: GLFW + Dear ImGui, live parameter tuning, per-pass GPU times.
-// Keys: Space pause, . single step, R reset, F5 reload shaders, F6 save a checkpoint, F12 screenshot,
-// H hide UI, Esc quit.
-// Other letters go to the stage (Stage::key; life: C centre, N new rules, S save rules).
+// Keys (app/key_bindings.h): Space pause, . single step, R restart, F5 reload shaders, F6 save a
+// checkpoint, F11 fullscreen, F12 screenshot, S (or H) hide the panels, D the timings, Esc quit.
+// Other letters go to the stage (Stage::key; life: C centre, N new rules, W save rules).
+// Frames are paced with fences (gl/frame_pacer.h): at most job.framesInFlight queued on the GPU.
 #pragma once
 
 #include <filesystem>
@@ -23,6 +24,7 @@ struct WindowJob {
   std::filesystem::path resume;       // a checkpoint to start from; empty: the scene's start
   std::filesystem::path checkpoint;   // where F6 and the autosave write; empty: "<scene name>.ckpt" here
   double autosaveEvery = 0;           // simulated s between autosaves (0: off; the panel edits it)
+  int framesInFlight = 2;             // frames the CPU may queue ahead of the GPU before it waits
   std::optional<double> fitBudgetMs;  // --fit-gpu: particles.resolution measured for this budget (app/fit_gpu.h)
 };
 

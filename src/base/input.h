@@ -11,6 +11,7 @@ struct Input {
   glm::ivec2 viewport{1, 1};                         // pixels
   bool left = false, right = false, middle = false;  // buttons held (and not captured by the UI)
   float scroll = 0.0f;                               // wheel steps since the last frame
+  float dt = 0.0f;                                   // real seconds since the last frame (eased moves)
 };
 
 }  // namespace tidepool

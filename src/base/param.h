@@ -39,6 +39,8 @@ class ParamVisitor {
   virtual void color(const ParamInfo& info, glm::vec3& value) = 0;  // linear RGB in [0,1]
   virtual void vector(const ParamInfo& info, glm::vec3& value, float min, float max) = 0;
   virtual void choiceIndex(const ParamInfo& info, int& index, std::span<const char* const> names) = 0;
+  // A button (the editor): true the frame it is pressed; readers and writers have nothing to do.
+  virtual bool action(const ParamInfo& /*info*/) { return false; }
   virtual bool beginGroup(const ParamInfo& info) = 0;  // false: skip the group's contents
   virtual void endGroup() = 0;
 

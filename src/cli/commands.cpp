@@ -201,6 +201,7 @@ Command addRun(CLI::App& app) {
     std::string scene = "default", size = "1280x720", backend = "auto", screenshot, out = "out", rules;
     int frames = 0;
     bool noVsync = false, debugGl = false;
+    int framesInFlight = 2;
     CheckpointOpts checkpoints;
     ResolutionOpts resolution;
   };
@@ -213,6 +214,8 @@ Command addRun(CLI::App& app) {
       ->check(CLI::IsMember(kBackends));
   sub->add_option("--out", o->out, "folder for the headless clip when there is no display");
   sub->add_flag("--no-vsync", o->noVsync, "render as fast as possible");
+  sub->add_option("--frames-in-flight", o->framesInFlight, "frames queued ahead of the GPU at most (window)")
+      ->check(CLI::Range(1, 8));
   sub->add_option("--rules", o->rules, "life: rules JSON file, preset name or share code (sets params.rules)");
   sub->add_flag("--debug-gl", o->debugGl, "log KHR_debug driver messages");
   addCheckpointOptions(sub, o->checkpoints);
@@ -241,6 +244,7 @@ Command addRun(CLI::App& app) {
                             o->checkpoints.every};
               if (o->frames > 0) job.maxFrames = o->frames;
               job.fitBudgetMs = fitBudgetMs;
+              job.framesInFlight = o->framesInFlight;
               return runWindow(job);
             }
             // No display: render the scene's default clip headless and say where it went.

@@ -43,8 +43,46 @@ WindowContext::WindowContext(const WindowOptions& o) {
   glfwMakeContextCurrent(m_window);
   if (!gladLoadGL(glfwGetProcAddress)) throw Error("window: could not load OpenGL functions");
   requireGl43("window");
+  m_vsync = o.vsync;
   glfwSwapInterval(o.vsync ? 1 : 0);
   if (o.debug) enableDebugOutput();
+}
+
+namespace {
+// The monitor whose area holds the window's centre; the primary one when none does.
+GLFWmonitor* monitorUnder(GLFWwindow* window) {
+  int x = 0, y = 0, w = 0, h = 0, count = 0;
+  glfwGetWindowPos(window, &x, &y);
+  glfwGetWindowSize(window, &w, &h);
+  GLFWmonitor** monitors = glfwGetMonitors(&count);
+  for (int i = 0; i < count; ++i) {
+    int mx = 0, my = 0;
+    glfwGetMonitorPos(monitors[i], &mx, &my);
+    const GLFWvidmode* mode = glfwGetVideoMode(monitors[i]);
+    const int cx = x + w / 2, cy = y + h / 2;
+    if (mode && cx >= mx && cx < mx + mode->width && cy >= my && cy < my + mode->height) return monitors[i];
+  }
+  return glfwGetPrimaryMonitor();
+}
+}  // namespace
+
+bool WindowContext::fullscreen() const { return glfwGetWindowMonitor(m_window) != nullptr; }
+
+bool WindowContext::setFullscreen(bool on) {
+  if (on == fullscreen()) return true;
+  if (on) {
+    GLFWmonitor* monitor = monitorUnder(m_window);
+    const GLFWvidmode* mode = monitor ? glfwGetVideoMode(monitor) : nullptr;
+    if (!mode) return false;
+    glfwGetWindowPos(m_window, &m_windowedPos.x, &m_windowedPos.y);
+    glfwGetWindowSize(m_window, &m_windowedSize.x, &m_windowedSize.y);
+    glfwSetWindowMonitor(m_window, monitor, 0, 0, mode->width, mode->height, mode->refreshRate);
+  } else {
+    glfwSetWindowMonitor(m_window, nullptr, m_windowedPos.x, m_windowedPos.y, m_windowedSize.x, m_windowedSize.y,
+                         GLFW_DONT_CARE);
+  }
+  glfwSwapInterval(m_vsync ? 1 : 0);  // some platforms drop it with the switch
+  return true;
 }
 
 WindowContext::~WindowContext() {

@@ -1,6 +1,7 @@
 // The GLFW window context (GL 4.3 core). The app reaches the GLFWwindow for input and ImGui.
 #pragma once
 
+#include <glm/glm.hpp>
 #include <memory>
 #include <string>
 
@@ -31,9 +32,15 @@ class WindowContext final : public Context {
   bool shouldClose() const;
   void swapBuffers();
   void framebufferSize(int& width, int& height) const;
+  // Fullscreen on the monitor under the window's centre (its current video mode); back to windowed
+  // restores the size and position the window had. False when there is no monitor to fill.
+  bool setFullscreen(bool on);
+  bool fullscreen() const;
 
  private:
   GLFWwindow* m_window = nullptr;
+  bool m_vsync = true;
+  glm::ivec2 m_windowedPos{0}, m_windowedSize{0};  // before going fullscreen, screen coordinates
 };
 
 // True when GLFW can reach a display (checked without opening a window).

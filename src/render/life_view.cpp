@@ -33,13 +33,27 @@ glm::vec2 LifeView::toWorld(glm::vec2 pixel, glm::ivec2 viewport) const {
 }
 
 void LifeView::pan(glm::vec2 cursor, glm::vec2 delta, glm::ivec2 viewport) {
-  m_camera.centre -= toWorld(cursor, viewport) - toWorld(cursor - delta, viewport);
+  const glm::vec2 shift = toWorld(cursor, viewport) - toWorld(cursor - delta, viewport);
+  m_camera.centre -= shift;
+  m_camera.anchorWorld -= shift;  // a glide in progress keeps the panned point under its pixel
 }
 
 void LifeView::zoomAbout(glm::vec2 cursor, float clicks, glm::ivec2 viewport) {
-  const glm::vec2 anchor = toWorld(cursor, viewport);
-  m_camera.extentX *= std::pow(1.25f, -clicks);
-  m_camera.centre += anchor - toWorld(cursor, viewport);
+  const float from = gliding() ? m_camera.targetExtentX : m_camera.extentX;
+  m_camera.targetExtentX = from * std::pow(1.25f, -clicks);
+  m_camera.anchorPixel = cursor;
+  m_camera.anchorWorld = toWorld(cursor, viewport);
+}
+
+void LifeView::glide(float seconds, glm::ivec2 viewport) {
+  if (!gliding()) return;
+  LifeCamera& c = m_camera;
+  c.extentX += (c.targetExtentX - c.extentX) * (1.0f - std::exp(-kZoomEaseRate * std::max(seconds, 0.0f)));
+  if (std::abs(c.extentX - c.targetExtentX) <= 1e-5f * c.targetExtentX) {
+    c.extentX = c.targetExtentX;  // arrived: the glide ends
+    c.targetExtentX = 0.0f;
+  }
+  c.centre += c.anchorWorld - toWorld(c.anchorPixel, viewport);  // the anchor back under its pixel
 }
 
 void LifeView::drawParticles(const life::Life& model, const char* fragment, float halfSize, float ppu,

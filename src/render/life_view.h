@@ -27,11 +27,17 @@ struct LifeViewParams {
 };
 void visit(ParamVisitor& v, LifeViewParams& p);
 
-// A 2D camera: the world point at the image centre and half the visible width.
+// A 2D camera: the world point at the image centre and half the visible width, and where the
+// wheel's zoom is gliding to (as the original: the extent eases toward its target at 20/s while
+// the world point under the cursor of the last wheel step stays under it).
 struct LifeCamera {
-  glm::vec2 centre{0.0f};  // world units
-  float extentX = 512.0f;  // half the visible width (world units); the height follows the aspect
+  glm::vec2 centre{0.0f};       // world units
+  float extentX = 512.0f;       // half the visible width (world units); the height follows the aspect
+  float targetExtentX = 0.0f;   // where the zoom glides to (0: no glide)
+  glm::vec2 anchorPixel{0.0f};  // cursor of the last wheel step (pixels, origin top-left)
+  glm::vec2 anchorWorld{0.0f};  // the world point kept under it while gliding
 };
+constexpr float kZoomEaseRate = 20.0f;  // 1/s: extent += (target - extent)(1 - exp(-rate dt))
 
 class LifeView {
  public:
@@ -45,8 +51,11 @@ class LifeView {
   glm::vec2 toWorld(glm::vec2 pixel, glm::ivec2 viewport) const;  // pixel: origin top-left
   // Right drag: the world point that was under cursor - delta moves to the cursor.
   void pan(glm::vec2 cursor, glm::vec2 delta, glm::ivec2 viewport);
-  // Wheel: zoom in by 1.25^clicks (out when negative), the world point under the cursor fixed.
+  // Wheel: the target extent *= 1.25^-clicks (in when positive), anchored at the cursor; the
+  // extent then glides there (glide()), the world point under the cursor fixed.
   void zoomAbout(glm::vec2 cursor, float clicks, glm::ivec2 viewport);
+  void glide(float seconds, glm::ivec2 viewport);  // eases the extent toward the target, once a frame
+  bool gliding() const { return m_camera.targetExtentX > 0.0f; }
   float pixelsPerUnit(int imageWidth) const { return float(imageWidth) / (2.0f * m_camera.extentX); }
   const gl::Texture2D& hdr() const { return m_hdr; }  // the last frame before the tone map (tests)
 

@@ -145,14 +145,18 @@ class LifeStage final : public ModelStage<life::Life> {
       m_model.push(here, (here - before) * m_model.params().pushStrength, cam.extentX / 16.0f);
     if (in.right) m_view.pan(in.cursor, in.cursorDelta, in.viewport);
     if (in.scroll != 0.0f) m_view.zoomAbout(in.cursor, in.scroll, in.viewport);
+    m_view.glide(in.dt, in.viewport);
   }
+  // The original's Restart: same rules, new random positions (reset() stays the seed's start,
+  // which checkpoints and headless runs rely on).
+  void restart() override { m_model.respawn(++m_restarts); }
   void key(int c) override {
     if (c == 'C') {
       m_cameraPlaced = false;
       m_settings.zoom = 1.0f;
       m_settings.centre = glm::vec3(0.0f);
     }
-    if (c == 'S') {  // the web app's "Save system", under its suggested name
+    if (c == 'W') {  // the web app's "Save system", under its suggested name (its S hides the panel)
       try {
         io::writeJsonFile(kSaveName, life::rulesToJson(m_model.rules()));
         log::info(std::string("saved the rules to ") + kSaveName);
@@ -181,6 +185,12 @@ class LifeStage final : public ModelStage<life::Life> {
     return m_error;
   }
   std::string shareText() const override { return m_shareCode; }
+  StageIndicators indicators() override {
+    StageIndicators s = ModelStage::indicators();
+    s.gridCells = m_model.grid().dims();
+    s.cellSize = m_model.grid().params().cellSize;
+    return s;
+  }
 
   // The refusal the panel shows comes before the parameters: it is one of their keys while set.
   void visitSetupState(sim::StateVisitor& v) override { v.text("stage.error", m_error, 4096); }
@@ -240,6 +250,7 @@ class LifeStage final : public ModelStage<life::Life> {
   std::string m_shareCode;
   std::string m_error;  // why the last edit of the setup was refused
   bool m_cameraPlaced = false;
+  std::uint32_t m_restarts = 0;  // R presses: each draws the particles from another stream
 };
 
 // A life scene's "params": the setup's keys, "model" (stepping) and "view".

@@ -28,11 +28,21 @@
 
 namespace tidepool {
 
+// What the window's indicators show of a stage besides the frame rate (app/indicators.h).
+struct StageIndicators {
+  std::uint64_t steps = 0;        // simulation steps taken, a running count (a reset may restart it)
+  std::size_t particles = 0;      // particles (or cells)
+  glm::uvec3 gridCells{0u};       // the neighbour grid's cells per axis (0: no grid to show)
+  float cellSize = 0.0f;          // its cell edge, world units
+  std::optional<glm::mat4> view;  // 3D views: the camera's view matrix (the axes gizmo)
+};
+
 class Stage {
  public:
   virtual ~Stage() = default;
-  virtual void visitParams(ParamVisitor& v) = 0;                          // the model's and the view's Params
-  virtual void reset() = 0;                                               // back to the initial state (same parameters)
+  virtual void visitParams(ParamVisitor& v) = 0;  // the model's and the view's Params
+  virtual void reset() = 0;                       // back to the initial state (same parameters)
+  virtual void restart() { reset(); }             // the window's R: as reset, but life draws new random particles
   virtual void step(double frameSeconds, gl::GpuProfiler& profiler) = 0;  // one frame of simulated time
   virtual void render(RenderTarget& target, gl::GpuProfiler& profiler) = 0;
   virtual void input(const Input&) {}
@@ -44,6 +54,7 @@ class Stage {
   virtual double simTime() const = 0;                   // simulated seconds since reset
   virtual std::string status() const { return ""; }     // one line for the UI (counts, warnings)
   virtual std::string shareText() const { return ""; }  // the UI offers to copy it (e.g. a rules share code)
+  virtual StageIndicators indicators() { return {}; }   // steps, count, grid, camera (the window's overlay)
 
   // Failing loudly: a model that watches itself reports a blow-up here (non-blocking, a frame or
   // two late), can go back to its last good state with half the time step, and settles the
@@ -89,6 +100,12 @@ class ModelStage : public Stage {
   void flushChecks() override { m_model.flushChecks(); }
   void visitState(sim::StateVisitor& v) override { m_model.visitState(v); }
   sim::Model* model() override { return &m_model; }
+  StageIndicators indicators() override {
+    StageIndicators s;
+    s.steps = m_model.stepCount();
+    s.particles = m_model.count();
+    return s;
+  }
 
  protected:
   template <class... Args>

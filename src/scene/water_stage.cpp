@@ -34,6 +34,7 @@ balls::Params asBalls(const fluid::Params& f, balls::Params own) {
   own.pistonPeriod = w.pistonPeriod;
   own.rotation = w.rotation;
   own.rotationRate = w.rotationRate;
+  own.contraction = w.contraction;
   own.gravity = w.gravity;
   own.obstacles = w.obstacles;
   own.tap = w.tap;
@@ -92,8 +93,24 @@ class WaterStage final : public Stage {
   void step(double frameSeconds, gl::GpuProfiler& profiler) override {
     if (liveResolution() != m_resolution) refineLive();
     if (m_choice != active()) switchModel();
+    const std::uint64_t before = model()->stepCount();
     model()->step(frameSeconds, profiler);
+    // Balls do not count their steps: a frame is params().substeps of them.
+    const std::uint64_t after = model()->stepCount();
+    m_steps += m_balls ? std::uint64_t(m_balls->params().substeps) : after - std::min(before, after);
     if (m_frames++ % kStatsInterval == 0) refreshStats();
+  }
+  StageIndicators indicators() override {
+    StageIndicators s;
+    s.steps = m_steps;
+    s.particles = water().count();
+    const grid::UniformGrid* g = m_balls ? m_balls->neighbourGrid() : m_fluid->neighbourGrid();
+    if (g) {
+      s.gridCells = g->dims();
+      s.cellSize = g->params().cellSize;
+    }
+    s.view = m_view.camera().view();
+    return s;
   }
   void render(RenderTarget& target, gl::GpuProfiler& profiler) override {
     m_view.params() = m_setup.view.look;
@@ -286,6 +303,7 @@ class WaterStage final : public Stage {
   std::string m_resolutionError;  // why the last resolution edit was refused
   float m_resolution = 1;         // the refinement the running model's parameters have
   long m_frames = 0;
+  std::uint64_t m_steps = 0;  // steps of either model since the start (the indicators' counter)
 };
 
 std::unique_ptr<Stage> build(gl::ShaderLibrary& shaders, const WaterSetup& setup, const std::string& where) {

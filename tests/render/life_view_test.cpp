@@ -154,14 +154,59 @@ TEST_F(LifeViewTest, CentreFitsTheBoxWheelZoomsAboutTheCursorDragPans) {
   const glm::vec2 anchor = view.toWorld(cursor, viewport);
   const float extent = view.camera().extentX;
   view.zoomAbout(cursor, 3.0f, viewport);
+  view.glide(10.0f, viewport);  // long enough to arrive
   EXPECT_NEAR(view.camera().extentX, extent / std::pow(1.25f, 3.0f), 1e-3f);
   EXPECT_NEAR(view.toWorld(cursor, viewport).x, anchor.x, 1e-3f);
   EXPECT_NEAR(view.toWorld(cursor, viewport).y, anchor.y, 1e-3f);
   view.zoomAbout(cursor, -3.0f, viewport);
+  view.glide(10.0f, viewport);
   EXPECT_NEAR(view.camera().extentX, extent, 1e-3f);
 
   const glm::vec2 grabbed = view.toWorld(cursor, viewport), delta(-120, 45);
   view.pan(cursor + delta, delta, viewport);
   EXPECT_NEAR(view.toWorld(cursor + delta, viewport).x, grabbed.x, 1e-3f);
   EXPECT_NEAR(view.toWorld(cursor + delta, viewport).y, grabbed.y, 1e-3f);
+}
+
+// The wheel's zoom glides as the original's: nothing moves at the wheel step; each frame the
+// extent covers 1 - exp(-20 dt) of what is left toward 1.25^-clicks of it, the world point under
+// the cursor stays under it all the way, and the glide arrives (exactly) within a second.
+TEST_F(LifeViewTest, WheelZoomGlidesToItsTargetKeepingThePointUnderTheCursor) {
+  const glm::ivec2 viewport(800, 450);
+  LifeView view(shaders());
+  view.camera() = LifeView::fit({1024, 576}, viewport);
+  view.camera().centre = {40.0f, -25.0f};
+  const glm::vec2 cursor(610, 95);
+  const glm::vec2 anchor = view.toWorld(cursor, viewport);
+  const float start = view.camera().extentX;
+  view.zoomAbout(cursor, 2.0f, viewport);  // two steps in
+  view.zoomAbout(cursor, 1.0f, viewport);  // and one more while the first glides: 1.25^-3 in all
+  const float target = start / std::pow(1.25f, 3.0f);
+  EXPECT_TRUE(view.gliding());
+  EXPECT_EQ(view.camera().extentX, start) << "the wheel step itself moves nothing";
+  const float dt = 1.0f / 60.0f;
+  float before = start;
+  for (int frame = 0; frame < 60 && view.gliding(); ++frame) {
+    view.glide(dt, viewport);
+    const float extent = view.camera().extentX;
+    if (frame == 0) EXPECT_NEAR((before - extent) / (before - target), 1.0f - std::exp(-20.0f * dt), 1e-4f);
+    EXPECT_LT(extent, before) << "frame " << frame;
+    EXPECT_GE(extent, target) << "frame " << frame << ": no overshoot";
+    EXPECT_NEAR(view.toWorld(cursor, viewport).x, anchor.x, 2e-3f) << "frame " << frame;
+    EXPECT_NEAR(view.toWorld(cursor, viewport).y, anchor.y, 2e-3f) << "frame " << frame;
+    before = extent;
+  }
+  EXPECT_FALSE(view.gliding()) << "arrived within a second";
+  EXPECT_EQ(view.camera().extentX, target);
+  // A pan during a glide moves the anchor with the world: the point under the wheel's pixel
+  // after the pan stays there until the glide ends.
+  view.zoomAbout(cursor, -1.0f, viewport);
+  view.glide(dt, viewport);
+  const glm::vec2 delta(30, -12);
+  view.pan(cursor + delta, delta, viewport);
+  const glm::vec2 held = view.toWorld(cursor, viewport);
+  for (int frame = 0; frame < 60; ++frame) view.glide(dt, viewport);
+  EXPECT_NEAR(view.toWorld(cursor, viewport).x, held.x, 2e-3f);
+  EXPECT_NEAR(view.toWorld(cursor, viewport).y, held.y, 2e-3f);
+  EXPECT_NEAR(view.camera().extentX, target * 1.25f, 1e-3f);
 }

@@ -5,6 +5,7 @@
 
 #include "io/json.h"
 #include "scene/scene.h"
+#include "sim/life/life.h"
 #include "sim/life/life_rules.h"
 #include "support/gl_test.h"
 #include "support/null_visitor.h"
@@ -98,4 +99,39 @@ TEST_F(LifeStageTest, DroppedRulesFileLoadsAndABadOneChangesNothing) {
   EXPECT_NE(error.find("not loaded: "), std::string::npos) << error;
   EXPECT_NE(error.find("species[0].forces[1].collisionRadius = 1000 is larger than radius"), std::string::npos)
       << error;
+}
+
+// R in the window (Stage::restart): the original's Restart, new random particles under the same
+// rules; each restart draws others, and reset() still gives the seed's own start.
+TEST_F(LifeStageTest, RestartKeepsTheRulesAndDrawsNewPositions) {
+  auto stage = lifeStage(smallScene(), shaders());
+  auto* life = dynamic_cast<life::Life*>(stage->model());
+  ASSERT_NE(life, nullptr);
+  const std::string rules = stage->shareText();
+  const std::vector<glm::vec4> start = life->downloadPositions();
+  gl::GpuProfiler profiler;
+  stage->step(0.025, profiler);
+  stage->restart();
+  EXPECT_EQ(stage->shareText(), rules);
+  EXPECT_EQ(stage->simTime(), 0.0);
+  const std::vector<glm::vec4> first = life->downloadPositions();
+  stage->restart();
+  const std::vector<glm::vec4> second = life->downloadPositions();
+  ASSERT_EQ(first.size(), start.size());
+  ASSERT_EQ(second.size(), start.size());
+  std::size_t movedFromStart = 0, movedAgain = 0;
+  std::vector<int> perSpecies(3, 0), perSpeciesStart(3, 0);
+  for (std::size_t i = 0; i < start.size(); ++i) {
+    movedFromStart += glm::vec2(first[i]) != glm::vec2(start[i]);
+    movedAgain += glm::vec2(second[i]) != glm::vec2(first[i]);
+    EXPECT_LE(std::abs(first[i].x), 128.0f);  // inside the 256 x 144 box
+    EXPECT_LE(std::abs(first[i].y), 72.0f);
+    ++perSpecies[std::size_t(first[i].w)];
+    ++perSpeciesStart[std::size_t(start[i].w)];
+  }
+  EXPECT_GT(movedFromStart, start.size() * 9 / 10) << "new random positions";
+  EXPECT_GT(movedAgain, start.size() * 9 / 10) << "each restart draws others";
+  for (int s = 0; s < 3; ++s) EXPECT_NEAR(perSpecies[s], perSpeciesStart[s], 120) << "the same spawn weights";
+  stage->reset();
+  EXPECT_EQ(life->downloadPositions(), start) << "reset: the seed's own start (checkpoints rely on it)";
 }

@@ -82,6 +82,17 @@ void visitWalls(ParamVisitor& v, Params& p) {
   v.real({"piston_period", "Piston period", "s"}, p.pistonPeriod, 0.01f, 1000.0f);
   v.real({"rotation", "Rotation", "degrees about x (gravity follows)"}, p.rotation, -360.0f, 360.0f);
   v.real({"rotation_rate", "Rotation rate", "degrees per s"}, p.rotationRate, -3600.0f, 3600.0f);
+  v.real({"contraction", "Contraction", "the top wall (z) at this fraction of the domain's height"}, p.contraction,
+         0.2f, 1.0f);
+  if (v.action({"reset_domain", "Reset domain", "rotation 0, contraction 1; stops the rotation and the piston"}))
+    resetDomain(p);
+}
+
+void resetDomain(Params& p) {
+  p.rotation = 0.0f;
+  p.rotationRate = 0.0f;
+  p.contraction = 1.0f;
+  p.pistonAxis = 0;
 }
 
 void visitTap(ParamVisitor& v, Params& p) {

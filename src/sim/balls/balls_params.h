@@ -105,6 +105,7 @@ struct Params {
   float pistonPeriod = 4.0f;  // s per in-and-out
   float rotation = 0.0f;      // degrees about x
   float rotationRate = 0.0f;  // degrees per s
+  float contraction = 1.0f;   // the max wall on z at this fraction of the domain's height (the original's)
   // Obstacles: up to kMaxObstacles, each moving rigidly (src/sim/balls/obstacles.h)
   std::vector<ObstacleParams> obstacles;
   // Tap: emits balls over time (up to tapMax in total) from a disc facing tapDirection
@@ -120,8 +121,11 @@ struct Params {
 
 void visit(ParamVisitor& v, Params& p);
 // The parts the fluid model shares (sim/fluid/fluid_params.h), each without its group.
-void visitFill(ParamVisitor& v, Params& p);       // domain, fill, fill region, jitter, max particles
-void visitWalls(ParamVisitor& v, Params& p);      // piston, rotation
+void visitFill(ParamVisitor& v, Params& p);   // domain, fill, fill region, jitter, max particles
+void visitWalls(ParamVisitor& v, Params& p);  // piston, rotation, contraction, "Reset domain"
+// The original's "Reset domain": rotation 0, contraction 1, and the animations (rotation rate,
+// piston) stopped, since here they are functions of the time, not steps from the current shape.
+void resetDomain(Params& p);
 void visitTap(ParamVisitor& v, Params& p);        // the tap's keys
 void visitObstacles(ParamVisitor& v, Params& p);  // the "obstacles" list
 

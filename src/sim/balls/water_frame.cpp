@@ -16,6 +16,12 @@ Walls wallsAt(const Params& p, double time) {
     w.max[k] = p.domainMax[k] - p.pistonTravel * extent * 0.5f * (1.0f - std::cos(omega * t));
     w.maxVel[k] = -p.pistonTravel * extent * 0.5f * omega * std::sin(omega * t);
   }
+  // The static contraction, below the piston (if any) on z; 1 leaves the walls bit for bit as they were.
+  const float contracted = p.domainMin.z + p.contraction * (p.domainMax.z - p.domainMin.z);
+  if (p.contraction < 1.0f && contracted < w.max.z) {
+    w.max.z = contracted;
+    w.maxVel.z = 0.0f;
+  }
   return w;
 }
 

@@ -15,7 +15,8 @@ struct Walls {
   glm::vec3 min{0.0f}, max{1.0f};        // wall positions, m
   glm::vec3 minVel{0.0f}, maxVel{0.0f};  // wall velocities (the piston), m/s
 };
-// The piston's max wall of its axis travels in and out: offset = travel·extent·(1 − cos(2πt/T))/2.
+// The piston's max wall of its axis travels in and out: offset = travel·extent·(1 − cos(2πt/T))/2;
+// the contraction holds the max z wall at min.z + contraction·height (the lower of the two wins).
 Walls wallsAt(const Params& p, double time);
 float domainRotation(const Params& p, double time);  // radians about x
 glm::vec3 gravityAt(const Params& p, double time);   // p.gravity turned with the domain (p already resolved)

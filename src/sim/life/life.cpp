@@ -98,8 +98,8 @@ void Life::uploadTable() {
   m_colors = gl::Buffer(std::span<const glm::vec4>(colors));
 }
 
-void Life::reset() {
-  const std::vector<InitialParticle> spawn = spawnParticles(m_rules);
+void Life::respawn(std::uint32_t stream) {
+  const std::vector<InitialParticle> spawn = spawnParticles(m_rules, stream);
   std::vector<glm::vec4> pos(spawn.size()), vel(spawn.size());
   for (std::size_t i = 0; i < spawn.size(); ++i) {
     pos[i] = {spawn[i].position, 0.0f, float(spawn[i].species)};

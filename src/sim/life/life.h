@@ -43,7 +43,8 @@ class Life final : public sim::Model {
   void setRules(const Rules& rules, bool respawn = true);
 
   // sim::Model. A frame is one step of min(params().maxDt, frameSeconds).
-  void reset() override;  // the seed's initial particles
+  void reset() override { respawn(0); }  // the seed's initial particles
+  void respawn(std::uint32_t stream);    // t = 0 with spawnParticles(rules, stream): same rules, other particles
   void step(double frameSeconds, gl::GpuProfiler& profiler) override;
   double time() const override { return m_time; }
   std::size_t count() const override { return m_count; }

@@ -160,9 +160,10 @@ std::vector<Force> effectiveForces(const Rules& r) {
   return table;
 }
 
-std::vector<InitialParticle> spawnParticles(const Rules& r) {
-  // A stream apart from the rule stream: the seed xor 0x6a09e667 (the fractional bits of sqrt 2).
-  SplitMix32 rng(r.seed ^ 0x6a09e667u);
+std::vector<InitialParticle> spawnParticles(const Rules& r, std::uint32_t stream) {
+  // A stream apart from the rule stream: the seed xor 0x6a09e667 (the fractional bits of sqrt 2);
+  // restarts step by the golden-ratio constant.
+  SplitMix32 rng(r.seed ^ 0x6a09e667u ^ (stream * 0x9e3779b9u));
   std::vector<double> cumulative;
   double total = 0;
   for (const Species& s : r.species) cumulative.push_back(total += std::max(0.0f, s.spawnWeight));

@@ -96,7 +96,9 @@ struct InitialParticle {
   glm::vec2 position, velocity;
   int species;
 };
-std::vector<InitialParticle> spawnParticles(const Rules& rules);
+// `stream` 0 is the seed's own start; another draws other positions, species and velocities from the
+// same weights (a restart: same rules, new particles).
+std::vector<InitialParticle> spawnParticles(const Rules& rules, std::uint32_t stream = 0);
 
 // JSON in the web app's schema. Reading checks every field and names the bad one
 // ("mine.json: species[2].forces[1].collisionRadius = 40 is larger than radius = 30"); a failed
