@@ -43,7 +43,7 @@ TEST(ResolutionCli, ResolutionAndSetReachTheScene) {
 TEST(ResolutionCli, FitGpuPrintsItsTrialsAndRenders) {
   test::TempDir dir;
   dir.write("dam.json", kSmallDam);
-  auto r = runTidepool({"render", (dir / "dam.json").string(), "--fit-gpu", "--budget", "100000", "--frames", "1",
+  auto r = runTidepool({"render", (dir / "dam.json").string(), "--fit-gpu", "--budget", "60", "--frames", "1",
                         "--out", (dir / "f").string(), "--quiet"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.err.find("resolution  particles   ms/frame  fits"), std::string::npos) << r.err;
