@@ -37,6 +37,6 @@ if [ -f "$driver" ]; then
   ASAN_OPTIONS+=":verify_asan_link_order=0"  # the driver precedes the ASan runtime; it defines no malloc
 fi
 cd build-asan
-selection=(-R 'Grid|Modes|Determinism|DomainEdges|ParticleMemory|GpuLimits|BadInput|Checkpoint|InputLimits|BadDrop|Hostile|Fuzz|SoakJudge|SoakCli|Json|Obj|Png|ParamJson|SceneFile|LifeRules|LifeStep|RipplesStep|BallsStep|FluidStep|Swarms|SwarmStages|BallsLists|DispatchGate|Export|Video')
+selection=(-R 'Grid|Modes|Determinism|DomainEdges|ParticleMemory|GpuLimits|BadInput|Checkpoint|InputLimits|BadDrop|Hostile|Fuzz|SoakJudge|SoakCli|Json|Obj|Png|ParamJson|SceneFile|LifeRules|LifeStep|RipplesStep|BallsStep|FluidStep|Swarms|SwarmStages|BallsLists|DispatchGate|Export|Video|Surface|Resolution|FramePacer|BallsDebugViews|KeyBindings|Indicators')
 [ $# -gt 0 ] && selection=("$@")
 ctest --output-on-failure -j "$(nproc)" -E '^(Layers|Build)\.' -LE soak "${selection[@]}"

@@ -63,7 +63,7 @@ FitTrial measure(const std::filesystem::path& file, const io::Json& overrides, g
     profiler.endFrame();
     glFinish();
     const std::chrono::duration<double, std::milli> took = std::chrono::steady_clock::now() - start;
-    if (i >= 2) ms.push_back(took.count());  // two warm-up frames: programs compiled, caches filled
+    if (i >= 2) ms.push_back(took.count());           // two warm-up frames: programs compiled, caches filled
     if (i >= 1 && took.count() > 4.0 * o.budgetMs) {  // far over already: not worth more frames
       ms.assign(1, took.count());
       break;

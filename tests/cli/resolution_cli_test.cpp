@@ -43,8 +43,8 @@ TEST(ResolutionCli, ResolutionAndSetReachTheScene) {
 TEST(ResolutionCli, FitGpuPrintsItsTrialsAndRenders) {
   test::TempDir dir;
   dir.write("dam.json", kSmallDam);
-  auto r = runTidepool({"render", (dir / "dam.json").string(), "--fit-gpu", "--budget", "60", "--frames", "1",
-                        "--out", (dir / "f").string(), "--quiet"});
+  auto r = runTidepool({"render", (dir / "dam.json").string(), "--fit-gpu", "--budget", "60", "--frames", "1", "--out",
+                        (dir / "f").string(), "--quiet"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.err.find("resolution  particles   ms/frame  fits"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("yes"), std::string::npos) << r.err;
@@ -57,10 +57,15 @@ TEST(ResolutionCli, BadValuesGetOneLine) {
   test::expectOneLineError({"render", scene, "--set", "view.mode", "--out", out}, "is not KEY=VALUE");
   test::expectOneLineError({"render", scene, "--set", "particles.radius=big", "--out", out}, "radius");
   test::expectOneLineError({"render", scene, "--set", "particles.nonsense=1", "--out", out}, "unknown key");
-  test::expectOneLineError({"render", scene, "--resolution", "100", "--out", out}, "--resolution");
-  test::expectOneLineError({"render", scene, "--resolution", "40", "--out", out}, "substeps per frame");
+  test::expectOneLineError({"render", scene, "--resolution", "100", "--out", out}, "--resolution", 2);  // usage
+  test::expectOneLineError({"render", scene, "--set", "engine.substeps=50", "--resolution", "40", "--out", out},
+                           "substeps per frame");
   test::expectOneLineError({"render", "life", "--resolution", "2", "--out", out}, "unknown key");
   test::expectOneLineError({"render", "life", "--fit-gpu", "--out", out}, "--fit-gpu refines water");
-  test::expectOneLineError({"render", scene, "--fit-gpu", "--budget", "0.001", "--out", out, "--quiet"},
-                           "over the budget", 1);
+  // No trial fits: the trials as usual, then one line of error, the last.
+  const auto r = runTidepool({"render", scene, "--fit-gpu", "--budget", "0.1", "--out", out, "--quiet"});
+  EXPECT_FALSE(r.signaled);
+  EXPECT_EQ(r.exitCode, 1) << r.err;
+  ASSERT_FALSE(r.errLines().empty());
+  EXPECT_NE(r.errLines().back().find("over the budget of 0.1 ms"), std::string::npos) << r.err;
 }
