@@ -241,10 +241,10 @@ Command addRun(CLI::App& app) {
                             overrides,
                             o->checkpoints.resume,
                             o->checkpoints.checkpoint,
-                            o->checkpoints.every};
+                            o->checkpoints.every,
+                            o->framesInFlight,
+                            fitBudgetMs};
               if (o->frames > 0) job.maxFrames = o->frames;
-              job.fitBudgetMs = fitBudgetMs;
-              job.framesInFlight = o->framesInFlight;
               return runWindow(job);
             }
             // No display: render the scene's default clip headless and say where it went.
