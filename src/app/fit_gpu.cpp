@@ -7,6 +7,7 @@
 #include <limits>
 #include <memory>
 
+#include "base/log.h"
 #include "gl/gl.h"
 #include "gl/gpu_profiler.h"
 #include "render/target.h"
@@ -132,6 +133,13 @@ io::Json withFittedResolution(const FitResult& fit, const io::Json& overrides, d
                 (fit.trials.empty() ? std::string("none tried") : fit.trials.back().refused) + ")");
   throw Error("--fit-gpu: even resolution " + number(coarsest->resolution) + " takes " + number(coarsest->frameMs) +
               " ms per frame, over the budget of " + number(budgetMs) + " ms (raise --budget)");
+}
+
+io::Json fitOverrides(const std::filesystem::path& scene, const io::Json& overrides, gl::ShaderLibrary& shaders,
+                      const FitOptions& options) {
+  const FitResult fit = fitResolution(scene, overrides, shaders, options);
+  log::info("fit to this GPU (step + render of a frame, budget " + number(options.budgetMs) + " ms):\n" + fit.table());
+  return withFittedResolution(fit, overrides, options.budgetMs);
 }
 
 }  // namespace tidepool

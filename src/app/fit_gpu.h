@@ -52,4 +52,9 @@ FitResult fitResolution(const std::filesystem::path& scene, const io::Json& over
 // trial fitted (the coarsest tried, its ms and the budget).
 io::Json withFittedResolution(const FitResult& fit, const io::Json& overrides, double budgetMs);
 
+// The whole of --fit-gpu for render and run: the trials (logged as a table), then `overrides` with
+// the pick, as withFittedResolution.
+io::Json fitOverrides(const std::filesystem::path& scene, const io::Json& overrides, gl::ShaderLibrary& shaders,
+                      const FitOptions& options);
+
 }  // namespace tidepool

@@ -28,14 +28,9 @@ RenderJob fitted(const RenderJob& job) {
   options.width = job.width.value_or(scene.clip.width);
   options.height = job.height.value_or(scene.clip.height);
   RenderJob out = job;
-  {
-    auto context = gl::createHeadlessContext({job.backend, job.debugGl});
-    gl::ShaderLibrary shaders(gl::ShaderLibrary::findRoot());
-    const FitResult fit = fitResolution(file, job.paramOverrides, shaders, options);
-    log::info("fit to this GPU (step + render of a frame, budget " + std::to_string(*job.fitBudgetMs) + " ms):\n" +
-              fit.table());
-    out.paramOverrides = withFittedResolution(fit, job.paramOverrides, *job.fitBudgetMs);
-  }
+  auto context = gl::createHeadlessContext({job.backend, job.debugGl});
+  gl::ShaderLibrary shaders(gl::ShaderLibrary::findRoot());
+  out.paramOverrides = fitOverrides(file, job.paramOverrides, shaders, options);
   return out;
 }
 

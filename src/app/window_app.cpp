@@ -97,20 +97,15 @@ void apply(KeyAction action, UiState& ui, GLFWwindow* window) {
   }
 }
 
-}  // namespace
-
-namespace {
 // --fit-gpu: the scene at the finest resolution whose frame fits the budget in this window.
 Scene fitScene(const std::filesystem::path& file, const WindowJob& job, gl::ShaderLibrary& shaders) {
   FitOptions options;
   options.budgetMs = *job.fitBudgetMs;
   options.width = job.width;
   options.height = job.height;
-  const FitResult fit = fitResolution(file, job.paramOverrides, shaders, options);
-  log::info("fit to this GPU (step + render of a frame, budget " + std::to_string(options.budgetMs) + " ms):\n" +
-            fit.table());
-  return loadScene(file, withFittedResolution(fit, job.paramOverrides, options.budgetMs));
+  return loadScene(file, fitOverrides(file, job.paramOverrides, shaders, options));
 }
+
 }  // namespace
 
 int runWindow(const WindowJob& job) {
