@@ -57,16 +57,14 @@ namespace {
 // A water scene states particles.resolution R beside its own spacing (or --resolution sets it): the
 // params read hold that spacing until here, then are refined R times (balls::refine), after method
 // auto, which picks for the scene as measured. The params keep R as the record of what was done.
+float& resolutionOf(balls::Params& p) { return p.resolution; }
+float& resolutionOf(fluid::Params& p) { return p.water.resolution; }
+
 template <class P>
 bool refineStated(SceneParams& params, const std::string& where) {
   if (!params.holds<P>()) return false;
   P& p = params.model<P>();
-  float& record = [&]() -> float& {
-    if constexpr (requires { p.water; })
-      return p.water.resolution;
-    else
-      return p.resolution;
-  }();
+  float& record = resolutionOf(p);
   const double stated = record;
   if (stated == 1.0) return true;
   record = 1.0f;
