@@ -23,6 +23,13 @@ layout(std430, binding = STEP_OUT_BINDING) writeonly buffer StepOut { vec4 stepO
 
 #include "balls/contact.glsl"
 
+#ifdef COUNT_CELLS
+// The next step's grid count (grid_count.comp) done here, at the positions this pass writes: no
+// count pass reading them again. Only without obstacles and lists (8 storage blocks).
+layout(std430, binding = BALLS_NEXT_CELL_COUNT) buffer NextCellCount { uint nextCellCount[]; };
+layout(std430, binding = BALLS_NEXT_INDEX_IN_CELL) writeonly buffer NextIndexInCell { uint nextIndexInCell[]; };
+#endif
+
 vec3 gAccel;
 vec3 gVelocity = vec3(0.0);  // set in main(); initialised so that no compiler warns of its use in onContact()
 void onContact(vec3 n, float overlap, vec3 otherVelocity, float massRatio, float share) {
@@ -61,6 +68,9 @@ void stepBall(uint i) {
   foam = min(1.0, (foam + uFoamGain * uDt * length(gVelocity)) * uFoamDecay);
   stepOut[i] = vec4(x, posIn[i].w);  // x
   velOut[i] = vec4(v, foam);
+#ifdef COUNT_CELLS
+  nextIndexInCell[i] = atomicAdd(nextCellCount[cellOf(x)], 1u);
+#endif
 #ifdef LISTS
   displacementBoxAdd(i, x);  // where the next step's forces act
 #endif

@@ -2,21 +2,39 @@
 // Rank pass of the stable uniform grid (src/grid/grid.h, GridParams::stable): after the members
 // pass wrote each cell's particles in atomicAdd order (members[cellStart[cell] + slot] = i), a
 // particle's slot in its cell becomes its rank by index among the cell's members, which no
-// scheduling can change. Without WRITE_PERMUTATION the rank replaces indexInCell (the scatter
-// reorder reads it); with it the pass writes the gather's permutation[cellStart[cell] + rank] = i
-// directly, in place of the gather's own permutation pass. A cell of more than
-// GRID_STABLE_MAX_CELL particles keeps its atomic slots: ranking is O(count) per particle.
+// scheduling can change. A cell of more than GRID_STABLE_MAX_CELL particles keeps its atomic
+// slots: ranking is O(count) per particle. What the pass does with the rank:
+//   ARRAYS = 0, WRITE_PERMUTATION = 0   indexInCell[i] = rank (a scatter pass reads it)
+//   ARRAYS = 0, WRITE_PERMUTATION = 1   permutation[slot] = i, the gather's permutation
+//   ARRAYS > 0                          the stable scatter itself: dst[slot] = src[i] for ARRAYS
+//                                       arrays, permutation[slot] = i with WRITE_PERMUTATION, and
+//                                       with KEEP_RANK indexInCell[i] = rank for later batches
+// where slot = cellStart[cell] + rank. With arrays the positions are src[0] (the caller moves
+// them too), which frees their binding for the members: 8 storage blocks at most.
 layout(local_size_x = 256) in;
 #include "common/index.glsl"
 #include "common/grid.glsl"
 #include "grid/bindings.glsl"
+#if ARRAYS > 0
+#define GRID_POSITIONS_IN_SRC
+#define RANK_MEMBERS GRID_POSITIONS
+#else
+#define RANK_MEMBERS GRID_MEMBERS
+#endif
 #include "grid/positions.glsl"
 
 layout(std430, binding = GRID_INDEX_IN_CELL) buffer IndexInCell { uint indexInCell[]; };
 layout(std430, binding = GRID_CELL_START) readonly buffer CellStart { uint cellStart[]; };
-layout(std430, binding = GRID_MEMBERS) readonly buffer Members { uint members[]; };
+layout(std430, binding = RANK_MEMBERS) readonly buffer Members { uint members[]; };
 #if WRITE_PERMUTATION
 layout(std430, binding = GRID_PERMUTATION) writeonly buffer Permutation { uint permutation[]; };
+#endif
+#if ARRAYS > 0
+layout(std430, binding = GRID_REORDER_SRC) readonly buffer Src { GridElement values[]; } src[ARRAYS];
+layout(std430, binding = GRID_REORDER_DST) writeonly buffer Dst { GridElement values[]; } dst[ARRAYS];
+vec3 rankedPosition(uint i) { return elementPosition(src[0].values[i]); }
+#else
+vec3 rankedPosition(uint i) { return particlePosition(i); }
 #endif
 
 uniform uint uCount;  // particles
@@ -24,7 +42,7 @@ uniform uint uCount;  // particles
 void main() {
   const uint i = globalIndex();
   if (i >= uCount) return;
-  const uint cell = cellOf(particlePosition(i));
+  const uint cell = cellOf(rankedPosition(i));
   const uint begin = cellStart[cell], end = cellStart[cell + 1u];
   uint rank = 0u;
   if (end - begin > uint(GRID_STABLE_MAX_CELL)) {
@@ -32,8 +50,17 @@ void main() {
   } else {
     for (uint k = begin; k < end; ++k) rank += members[k] < i ? 1u : 0u;
   }
+  const uint slot = begin + rank;
+#if ARRAYS > 0
+  for (int a = 0; a < ARRAYS; ++a) dst[a].values[slot] = src[a].values[i];
+#if KEEP_RANK
+  indexInCell[i] = rank;
+#endif
 #if WRITE_PERMUTATION
-  permutation[begin + rank] = i;
+  permutation[slot] = i;
+#endif
+#elif WRITE_PERMUTATION
+  permutation[slot] = i;
 #else
   indexInCell[i] = rank;
 #endif

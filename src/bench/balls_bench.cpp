@@ -3,8 +3,10 @@
 // ball count of lattice scenes (bench-lattice); other scenes run as they are. --reorder
 // scatter,gather runs each size once per grid reorder mode (the scene's grid_reorder otherwise),
 // --deterministic on,off once per grid order (stable: bit-identical runs; the scene's otherwise),
-// --neighbours grid,lists once per neighbour search, --skin 0.2,0.4 once per list skin (lists).
+// --neighbours grid,lists once per neighbour search, --skin 0.2,0.4 once per list skin (lists),
+// --count pass,collide once per place of the grid's count (its own pass, or in the collide).
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <cstdlib>
 
@@ -29,59 +31,78 @@ std::vector<float> parseSkins(const std::string& text) {
 
 struct Options {
   std::string scene = "bench-lattice", sizes = "65536,1M,4M,16M", window = "10:310", reorder, deterministic, neighbours,
-              skin;
+              skin, count;
 };
 
-int run(Env& env, const Options& o) {
-  const std::string &sceneName = o.scene, &sizes = o.sizes, &window = o.window, &reorder = o.reorder,
-                    &deterministic = o.deterministic;
-  const Scene scene = loadScene(resolveScenePath(sceneName));
-  const balls::Params base = ballsParams(scene);
-  const StepWindow w = parseStepWindow(window);
+// One row of the table: the scene's parameters with the bench's choices applied.
+struct Variant {
+  balls::Params params;
+  bool countInCollide = true;
+};
+
+std::vector<Variant> variants(const Options& o, const balls::Params& base) {
   const bool lattice = base.fill == balls::Fill::Lattice;
   const std::vector<grid::ReorderMode> modes =
-      reorder.empty() ? std::vector<grid::ReorderMode>{base.gridReorder} : parseReorderModes(reorder);
+      o.reorder.empty() ? std::vector<grid::ReorderMode>{base.gridReorder} : parseReorderModes(o.reorder);
   const std::vector<bool> orders =
-      deterministic.empty() ? std::vector<bool>{base.deterministic} : parseOnOff(deterministic, "--deterministic");
+      o.deterministic.empty() ? std::vector<bool>{base.deterministic} : parseOnOff(o.deterministic, "--deterministic");
   const std::vector<balls::Neighbours> searches =
       o.neighbours.empty() ? std::vector<balls::Neighbours>{base.neighbours}
                            : parseChoices<balls::Neighbours>(o.neighbours, balls::kNeighboursNames, "--neighbours");
   const std::vector<float> skins = o.skin.empty() ? std::vector<float>{base.skin} : parseSkins(o.skin);
-  std::printf("balls benchmark on %s: scene %s, steps %d..%d, medians per step\n", env.device.c_str(),
-              scene.name.c_str(), w.first, w.last);
-  Table table({"balls", "r", "cells", "reorder", "determ.", "search", "count ms", "scan ms", "reorder ms", "lists ms",
-               "drift ms", "collide ms", "obstacles ms", "ms/step", "steps/s", "steps/build", "bytes/ball"});
-  std::vector<std::size_t> counts = lattice ? parseSizes(sizes) : std::vector<std::size_t>{0};
-  for (std::size_t n : counts)
+  static constexpr std::array<const char*, 2> kCountNames = {"pass", "collide"};
+  const std::vector<int> countIn =
+      o.count.empty() ? std::vector<int>{1} : parseChoices<int>(o.count, kCountNames, "--count");
+  std::vector<Variant> out;
+  for (std::size_t n : lattice ? parseSizes(o.sizes) : std::vector<std::size_t>{0})
     for (grid::ReorderMode mode : modes)
       for (bool stable : orders)
         for (balls::Neighbours search : searches)
-          for (float skin : search == balls::Neighbours::Lists ? skins : std::vector<float>{base.skin}) {
-            balls::Params p = base;
-            p.deterministic = stable;
-            if (lattice) p.latticeCount = int(n);
-            p.gridReorder = mode;
-            p.neighbours = search;
-            p.skin = skin;
-            balls::Balls model(env.shaders, p);
-            const PassTimes t = timePasses(w.first, w.last - w.first, [&](gl::GpuProfiler& p) { model.stepOnce(&p); });
-            const double perStep = t.frameMs();
-            // Lists: the gate's section (count, scan, permutation, build) is timed as "balls.lists";
-            // steps per build over the whole run.
-            std::string searchName = balls::kNeighboursNames[std::size_t(search)], perBuild = "";
-            if (model.listsActive()) {
-              const balls::Balls::ListCounts c = model.listCounts();
-              searchName += " " + fixed(skin, 2);
-              perBuild = fixed(c.rebuilds > 0 ? double(c.steps) / c.rebuilds : 0.0, 1);
+          for (float skin : search == balls::Neighbours::Lists ? skins : std::vector<float>{base.skin})
+            for (int fused : countIn) {
+              Variant v{base, fused == 1};
+              v.params.deterministic = stable;
+              if (lattice) v.params.latticeCount = int(n);
+              v.params.gridReorder = mode;
+              v.params.neighbours = search;
+              v.params.skin = skin;
+              out.push_back(v);
             }
-            table.add({std::to_string(model.count()), fixed(model.radius(), 5), std::to_string(model.cells()),
-                       grid::kReorderModeNames[std::size_t(mode)], stable ? "on" : "off", searchName,
-                       fixed(t.median("balls.count"), 4), fixed(t.median("balls.scan"), 4),
-                       fixed(t.median("balls.reorder"), 4), fixed(t.median("balls.lists"), 4),
-                       fixed(t.median("balls.drift"), 4), fixed(t.median("balls.collide"), 4),
-                       fixed(t.median("balls.obstacles"), 4), fixed(perStep, 4),
-                       fixed(perStep > 0 ? 1000.0 / perStep : 0.0, 0), perBuild, std::to_string(model.bytesPerBall())});
-          }
+  return out;
+}
+
+int run(Env& env, const Options& o) {
+  const Scene scene = loadScene(resolveScenePath(o.scene));
+  const balls::Params base = ballsParams(scene);
+  const StepWindow w = parseStepWindow(o.window);
+  const std::vector<Variant> rows = variants(o, base);
+  std::printf("balls benchmark on %s: scene %s, steps %d..%d, medians per step\n", env.device.c_str(),
+              scene.name.c_str(), w.first, w.last);
+  Table table({"balls", "r", "cells", "reorder", "determ.", "search", "count in", "count ms", "scan ms", "reorder ms",
+               "lists ms", "drift ms", "collide ms", "obstacles ms", "ms/step", "steps/s", "steps/build",
+               "bytes/ball"});
+  for (const Variant& v : rows) {
+    const balls::Params& p = v.params;
+    balls::Balls model(env.shaders, p);
+    model.countInCollide(v.countInCollide);
+    const PassTimes t = timePasses(w.first, w.last - w.first, [&](gl::GpuProfiler& prof) { model.stepOnce(&prof); });
+    const double perStep = t.frameMs();
+    // Lists: the gate's section (count, scan, permutation, build) is timed as "balls.lists";
+    // steps per build over the whole run.
+    std::string searchName = balls::kNeighboursNames[std::size_t(p.neighbours)], perBuild = "";
+    if (model.listsActive()) {
+      const balls::Balls::ListCounts c = model.listCounts();
+      searchName += " " + fixed(p.skin, 2);
+      perBuild = fixed(c.rebuilds > 0 ? double(c.steps) / c.rebuilds : 0.0, 1);
+    }
+    table.add({std::to_string(model.count()), fixed(model.radius(), 5), std::to_string(model.cells()),
+               grid::kReorderModeNames[std::size_t(p.gridReorder)], p.deterministic ? "on" : "off", searchName,
+               v.countInCollide ? "collide" : "pass", fixed(t.median("balls.count"), 4),
+               fixed(t.median("balls.scan"), 4), fixed(t.median("balls.reorder"), 4), fixed(t.median("balls.lists"), 4),
+               fixed(t.median("balls.drift"), 4), fixed(t.median("balls.collide"), 4),
+               fixed(t.median("balls.obstacles"), 4), fixed(perStep, 4), fixed(perStep > 0 ? 1000.0 / perStep : 0.0, 0),
+               perBuild, std::to_string(model.bytesPerBall())});
+  }
   return finish(env, table, "; its per-pass timer queries read 0");
 }
 
@@ -99,6 +120,9 @@ Benchmark addBallsBench(CLI::App& bench) {
                   "stable grid order (bit-identical runs) on or off, one row each, e.g. on,off");
   sub->add_option("--neighbours", o->neighbours, "neighbour searches, one row each: grid, lists or grid,lists");
   sub->add_option("--skin", o->skin, "list skins (fraction of r), one row each with lists, e.g. 0.2,0.4");
+  sub->add_option("--count", o->count,
+                  "where the grid counts the balls, one row each: collide (in the collide's write, the default "
+                  "without obstacles and lists) or pass (a count pass), e.g. pass,collide");
   return {sub, [o](Env& env) { return run(env, *o); }};
 }
 

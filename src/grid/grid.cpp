@@ -81,9 +81,8 @@ void UniformGrid::build(const gl::Buffer& positions, std::size_t count) {
   scanCells();
 }
 
-void UniformGrid::countParticles(const gl::Buffer& positions, std::size_t count) {
+void UniformGrid::prepareCount(std::size_t count) {
   const std::size_t bytes = count * elementBytes();
-  checkArray(&positions, bytes, std::to_string(count) + " positions");
   if (bytes > m_maxBlockBytes)
     throw Error("grid: " + std::to_string(count) + " positions need " + std::to_string(bytes >> 20) +
                 " MiB, over this driver's SSBO limit of " + std::to_string(m_maxBlockBytes >> 20) + " MiB");
@@ -91,6 +90,11 @@ void UniformGrid::countParticles(const gl::Buffer& positions, std::size_t count)
   m_count = count;
   // The previous count pass and scan read and wrote cellCount; their barriers order the clear.
   m_ops.fill(m_cellCount, 0);
+}
+
+void UniformGrid::countParticles(const gl::Buffer& positions, std::size_t count) {
+  checkArray(&positions, count * elementBytes(), std::to_string(count) + " positions");
+  prepareCount(count);
   if (count) {
     positions.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_POSITIONS);
     m_cellCount.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_CELL_COUNT);
@@ -122,6 +126,8 @@ void UniformGrid::reorder(const gl::Buffer& positions, std::span<const ReorderAr
   m_cellStart.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_CELL_START);
   if (m_params.reorder == ReorderMode::Gather && !arrays.empty()) {
     gather(arrays, permutation);
+  } else if (m_params.stable && !arrays.empty() && arrays[0].src->id() == positions.id()) {
+    rankAndScatter(positions, arrays, permutation);
   } else {
     if (m_params.stable) rankWithinCells(nullptr);
     scatter(arrays, permutation);  // a permutation alone is the gather's first pass anyway
@@ -151,10 +157,10 @@ std::size_t UniformGrid::bindBatch(std::span<const ReorderArray> arrays, std::si
   return batch;
 }
 
-// Batches of GRID_REORDER_MAX_ARRAYS arrays; the first batch also writes the permutation.
-void UniformGrid::scatter(std::span<const ReorderArray> arrays, gl::Buffer* permutation) {
+// Batches of GRID_REORDER_MAX_ARRAYS arrays from `first` on; the first batch also writes the
+// permutation.
+void UniformGrid::scatter(std::span<const ReorderArray> arrays, gl::Buffer* permutation, std::size_t first) {
   if (permutation) permutation->bindBase(GL_SHADER_STORAGE_BUFFER, GRID_PERMUTATION);
-  std::size_t first = 0;
   bool writePermutation = permutation != nullptr;
   do {
     const std::size_t batch = bindBatch(arrays, first);
@@ -194,21 +200,51 @@ void UniformGrid::gather(std::span<const ReorderArray> arrays, gl::Buffer* permu
 // m_members; the rank pass then gives each particle its rank among them: into indexInCell for
 // the scatter, or straight into the gather's permutation (saving the gather its own pass).
 void UniformGrid::rankWithinCells(gl::Buffer* permutation) {
+  writeMembers();
+  gl::Program& program = rankPass(0, permutation != nullptr, false);
+  m_members.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_MEMBERS);
+  if (permutation) permutation->bindBase(GL_SHADER_STORAGE_BUFFER, GRID_PERMUTATION);
+  program.dispatchThreads(m_count);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+// The members pass: the scatter of each particle's index into its cell, in atomic order.
+void UniformGrid::writeMembers() {
   if (m_members.size() < m_count * kWord) m_members = gl::Buffer(m_count * kWord);
   m_members.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_PERMUTATION);
   reorderPass(0, true).dispatchThreads(m_count);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  gl::Program*& program = m_rankPass[permutation != nullptr];
+}
+
+gl::Program& UniformGrid::rankPass(std::size_t arrays, bool writePermutation, bool keepRank) {
+  gl::Program*& program = m_rankPass[arrays][writePermutation][keepRank];
   if (!program)
-    program = &m_shaders->program({"grid/grid_rank.comp"}, {{"WRITE_PERMUTATION", permutation ? "1" : "0"},
+    program = &m_shaders->program({"grid/grid_rank.comp"}, {{"ARRAYS", std::to_string(arrays)},
+                                                            {"WRITE_PERMUTATION", writePermutation ? "1" : "0"},
+                                                            {"KEEP_RANK", keepRank ? "1" : "0"},
                                                             {"HALF_POSITIONS", halfDefine(m_params)}});
   program->use();
   setUniforms(*program);
   program->set("uCount", uint32_t(m_count));
-  m_members.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_MEMBERS);
+  return *program;
+}
+
+// The stable scatter when the positions are the first array: the members pass, then one pass
+// that ranks each particle and moves the first batch of arrays to its slot (the positions read
+// from that batch, the members bound in their place); later batches scatter by the rank it kept.
+void UniformGrid::rankAndScatter(const gl::Buffer& positions, std::span<const ReorderArray> arrays,
+                                 gl::Buffer* permutation) {
+  writeMembers();
+  const std::size_t batch = bindBatch(arrays, 0);
+  const bool more = batch < arrays.size();
+  gl::Program& program = rankPass(batch, permutation != nullptr, more);
+  m_members.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_POSITIONS);
   if (permutation) permutation->bindBase(GL_SHADER_STORAGE_BUFFER, GRID_PERMUTATION);
-  program->dispatchThreads(m_count);
+  program.dispatchThreads(m_count);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  if (!more) return;
+  positions.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_POSITIONS);
+  scatter(arrays, nullptr, batch);
 }
 
 std::size_t UniformGrid::memoryBytes() const {

@@ -22,7 +22,9 @@
 // stable grid ranks each cell's particles by their index before the reorder, in two more passes:
 //   members  members[cellStart[cell] + atomic slot] = i      (the cell's particles, any order)
 //   rank     indexInCell[i] = #{ members of i's cell < i }   (the same on every run); the gather
-//            writes permutation[cellStart[cell] + rank] = i instead, in place of its own pass
+//            writes permutation[cellStart[cell] + rank] = i instead, in place of its own pass;
+//            when the positions are the first array, the scatter moves the arrays from the rank
+//            pass itself (one pass less)
 //   cell 2 holds particles {0, 2, 4}; atomicAdd gave them slots {2, 0, 1} -> ranks {0, 1, 2}
 // so the reordered arrays and the permutation are a stable counting sort: bit-identical runs for
 // the models that sum over neighbours in grid order. A cell of more than GRID_STABLE_MAX_CELL
@@ -90,6 +92,10 @@ class UniformGrid {
   void build(const gl::Buffer& positions, std::size_t count);           // countParticles() + scanCells()
   void countParticles(const gl::Buffer& positions, std::size_t count);  // clear, atomicAdd pass
   void scanCells();                                                     // cellCount -> cellStart
+  // For a kernel that counts the particles itself, as grid_count.comp does (atomicAdd into
+  // cellCount(), the slot into indexInCell(), both bound by the caller): checks the count against
+  // the limits, sizes indexInCell, clears the counts. scanCells() follows as after countParticles().
+  void prepareCount(std::size_t count);
   // Moves each array to cell order for the positions and count of the last build (the positions
   // must be unchanged since). GRID_REORDER_MAX_ARRAYS arrays per dispatch; permutation optional.
   void reorder(const gl::Buffer& positions, std::span<const ReorderArray> arrays, gl::Buffer* permutation = nullptr);
@@ -124,7 +130,8 @@ class UniformGrid {
   std::size_t m_maxBlockBytes;  // GL_MAX_SHADER_STORAGE_BLOCK_SIZE, queried once
   gl::BufferOps m_ops;          // the cellCount clear
   gl::Program* m_countPass;
-  gl::Program* m_rankPass[2] = {};  // stable grid (grid_rank.comp) [writes permutation], made on use
+  // Stable grid (grid_rank.comp) [arrays it moves][writes permutation][keeps the rank], made on use.
+  gl::Program* m_rankPass[GRID_REORDER_MAX_ARRAYS + 1][2][2] = {};
   gl::Program* m_reorderPass[GRID_REORDER_MAX_ARRAYS + 1][2] = {};  // [arrays][writes permutation], made on use
   gl::Program* m_gatherPass[GRID_REORDER_MAX_ARRAYS + 1] = {};      // [arrays], made on use
   PrefixScan m_scan;
@@ -134,10 +141,14 @@ class UniformGrid {
 
   gl::Program& reorderPass(std::size_t arrays, bool writePermutation);
   static std::size_t bindBatch(std::span<const ReorderArray> arrays, std::size_t first);
-  void scatter(std::span<const ReorderArray> arrays, gl::Buffer* permutation);
+  void scatter(std::span<const ReorderArray> arrays, gl::Buffer* permutation, std::size_t first = 0);
   void gather(std::span<const ReorderArray> arrays, gl::Buffer* permutation);
   // Stable grid: the rank by index (see above) into indexInCell, or as the gather's permutation.
   void rankWithinCells(gl::Buffer* permutation);
+  void writeMembers();
+  gl::Program& rankPass(std::size_t arrays, bool writePermutation, bool keepRank);  // in use, uniforms set
+  // Stable scatter with the positions as arrays[0]: the rank pass moves the first batch itself.
+  void rankAndScatter(const gl::Buffer& positions, std::span<const ReorderArray> arrays, gl::Buffer* permutation);
   std::size_t m_count = 0;
 };
 

@@ -88,6 +88,7 @@ void Balls::reset() {
   m_posIndex = m_velIndex = 0;
   m_time = 0;
   m_accValid = false;
+  m_countedAhead = {};
   m_grid.reset();
   ensureGrid();
   m_obstacleError.clear();
@@ -109,6 +110,7 @@ void Balls::emitFromTap() {
   m_count += layer.pos.size();
   m_tapEmitted += layer.pos.size();
   m_listsStale = true;
+  m_countedAhead = {};
   m_tapNextLayer = m_time + layer.interval;
 }
 
@@ -134,6 +136,7 @@ std::string Balls::status() const {
 }
 
 std::vector<sim::StateBuffer> Balls::stateBuffers() {
+  m_countedAhead = {};  // the caller may write them (a restore)
   const std::size_t bytes = m_count * sizeof(glm::vec4);
   return {{"positions", &m_pos[m_posIndex], bytes}, {"velocities", &m_vel[m_velIndex], bytes}};
 }
@@ -164,6 +167,7 @@ void Balls::resume(const sim::StateStamp& good) {
   m_time = good.time;
   m_accValid = false;  // Verlet re-evaluates a(x) for the restored state
   m_listsStale = true;
+  m_countedAhead = {};
   m_params.dt *= 0.5f;
   m_params.substeps = std::min(m_params.substeps * 2, 1000);  // same simulated time per frame
 }
@@ -201,7 +205,10 @@ void Balls::visitOwnState(sim::StateVisitor& v) {
       m_gateKey = gateKey();
     }
   }
-  if (v.loading()) updateWalls();
+  if (v.loading()) {
+    updateWalls();
+    m_countedAhead = {};
+  }
 }
 
 std::size_t Balls::bytesPerBall() const {
@@ -219,6 +226,7 @@ void Balls::upload(const std::vector<glm::vec4>& pos, const std::vector<glm::vec
   m_vel[0].upload(vel.data(), vel.size() * sizeof(glm::vec4));
   m_accValid = false;
   m_listsStale = true;
+  m_countedAhead = {};
   ensureGrid();    // lists for the new capacity
   restartWatch();  // a new state: nothing judged yet
 }
@@ -276,6 +284,7 @@ void Balls::ensureGrid() {
                       .stable = p.deterministic};
   m_grid = std::make_unique<grid::UniformGrid>(m_shaders, gp, m_capacity);
   m_listsStale = true;
+  m_countedAhead = {};
   m_gate.forget();
 }
 

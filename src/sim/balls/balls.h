@@ -90,6 +90,8 @@ class Balls final : public sim::Model, public sim::ParticleWater {
   std::vector<glm::vec4> downloadPositions() const { return positions().read<glm::vec4>(m_count); }
   std::vector<glm::vec4> downloadVelocities() const { return velocities().read<glm::vec4>(m_count); }
   void trackOrder(bool on) { m_trackOrder = on; }
+  // Bench and tests: the next step's grid count inside the collide (the default) or as its own pass.
+  void countInCollide(bool on) { m_countInCollide = on; }
   // Tests: velocity Verlet's a(x), part of its state (it was evaluated with the half-step velocity).
   std::vector<glm::vec4> downloadAccelerations() const { return m_acc.read<glm::vec4>(m_count); }
   void uploadAccelerations(const std::vector<glm::vec4>& acc);
@@ -136,8 +138,21 @@ class Balls final : public sim::Model, public sim::ParticleWater {
   void gateLists(gl::GpuProfiler* profiler);
   void buildLists();
   void bindLists(gl::Program& program) const;
-  std::vector<gl::ShaderDefine> defines(bool verlet, bool lists = false) const;
-  gl::Program& useKernel(const char* file, bool verlet, bool lists = false);  // in use, common uniforms set
+  std::vector<gl::ShaderDefine> defines(bool verlet, bool lists = false, bool countCells = false) const;
+  // In use, common uniforms set.
+  gl::Program& useKernel(const char* file, bool verlet, bool lists = false, bool countCells = false);
+  // The grid's counts taken by the last collide (COUNT_CELLS) hold for the state it wrote: the
+  // next sortByCell skips its count pass while the key still matches (anything else that writes
+  // the balls clears it).
+  struct CountKey {
+    std::size_t count = 0;
+    int posIndex = 0;
+    const grid::UniformGrid* grid = nullptr;
+    bool valid = false;
+    bool operator==(const CountKey&) const = default;
+  };
+  CountKey countKey() const;  // now
+  bool countsInCollide(Collide what) const;
 
   gl::ShaderLibrary& m_shaders;
   Params m_params;
@@ -169,6 +184,8 @@ class Balls final : public sim::Model, public sim::ParticleWater {
   gl::Buffer m_accScratch;  // Verlet with lists: a(x) in the grid's order at a rebuild
   gl::BufferOps m_ops;
   bool m_listsStale = true;  // the next gate rebuilds (new balls, a reset, a step without lists)
+  bool m_countInCollide = true;
+  CountKey m_countedAhead;
 };
 
 }  // namespace tidepool::balls

@@ -82,9 +82,10 @@ void Balls::placeObstacles(double time, gl::GpuProfiler* profiler) {
   m_obstacles.place(m_params.obstacles, time, m_params.domainMin, m_params.domainMax, profiler);
 }
 
-std::vector<gl::ShaderDefine> Balls::defines(bool verlet, bool lists) const {
+std::vector<gl::ShaderDefine> Balls::defines(bool verlet, bool lists, bool countCells) const {
   std::vector<gl::ShaderDefine> d;
   if (lists) d.push_back({"LISTS", ""});
+  if (countCells) d.push_back({"COUNT_CELLS", ""});
   switch (m_params.contact) {
     case Contact::Penalty: d.push_back({"CONTACT_PENALTY", ""}); break;
     case Contact::CudaSample: d.push_back({"CONTACT_CUDA", ""}); break;
@@ -98,8 +99,8 @@ std::vector<gl::ShaderDefine> Balls::defines(bool verlet, bool lists) const {
   return d;
 }
 
-gl::Program& Balls::useKernel(const char* file, bool verlet, bool lists) {
-  gl::Program& p = m_shaders.program({file}, defines(verlet, lists));
+gl::Program& Balls::useKernel(const char* file, bool verlet, bool lists, bool countCells) {
+  gl::Program& p = m_shaders.program({file}, defines(verlet, lists, countCells));
   const Params& q = m_params;
   p.use();
   p.set("uCount", GLuint(m_count));
@@ -141,10 +142,11 @@ void Balls::drift(gl::GpuProfiler* profiler) {
 
 void Balls::sortByCell(gl::GpuProfiler* profiler) {
   const int p = m_posIndex, v = m_velIndex;
-  {
+  if (!(m_countedAhead == countKey())) {
     auto scope = timed(profiler, "balls.count");
     m_grid->countParticles(m_pos[p], m_count);
   }
+  m_countedAhead = {};
   {
     auto scope = timed(profiler, "balls.scan");
     m_grid->scanCells();
@@ -161,7 +163,9 @@ void Balls::collide(gl::GpuProfiler* profiler, Collide what) {
   const bool verlet = what != Collide::Integrate;
   const int p = m_posIndex, v = m_velIndex;
   const bool lists = listsActive();
-  gl::Program& collide = useKernel("balls/collide.comp", verlet, lists);
+  const bool countCells = countsInCollide(what);
+  if (countCells) m_grid->prepareCount(m_count);  // its fill binds and runs a kernel of its own: first
+  gl::Program& collide = useKernel("balls/collide.comp", verlet, lists, countCells);
   if (lists) {  // the balls in place: read the current buffers, write the others
     bindLists(collide);
     m_pos[p].bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_POS_IN);
@@ -189,9 +193,22 @@ void Balls::collide(gl::GpuProfiler* profiler, Collide what) {
   } else {
     m_pos[p].bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_POS_OUT);
   }
+  if (countCells) {  // the counts for the next step's grid, at the positions written here
+    m_grid->cellCount().bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_NEXT_CELL_COUNT);
+    m_grid->indexInCell().bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_NEXT_INDEX_IN_CELL);
+  }
   collide.dispatchThreads(m_count);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  if (countCells) m_countedAhead = countKey();
 }
+
+// The collide counts the balls into the next step's grid when it writes their positions in
+// place (Euler) and has two storage blocks to spare (no obstacle, no lists).
+bool Balls::countsInCollide(Collide what) const {
+  return m_countInCollide && what == Collide::Integrate && !listsActive() && !m_obstacles.active();
+}
+
+Balls::CountKey Balls::countKey() const { return {m_count, m_posIndex, m_grid.get(), true}; }
 
 void Balls::bindLists(gl::Program& program) const {
   m_lists.bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_LISTS);
@@ -284,6 +301,7 @@ Stats Balls::stats() {
   // The stats pass needs the balls in cell order: sort copies into the scratch buffers, leaving
   // the state (and Verlet's accelerations, which follow its order) untouched.
   const int p = m_posIndex, v = m_velIndex;
+  m_countedAhead = {};  // the reorder below ranks over the slots
   m_grid->build(m_pos[p], m_count);
   m_grid->reorder(m_pos[p], {{&m_pos[p], &m_pos[1 - p]}, {&m_vel[v], &m_vel[1 - v]}});
   gl::Program& prog = useKernel("balls/stats.comp", false);
