@@ -9,7 +9,6 @@
 #define BALLS_OBST_POS 6       // vec4 obstacle particles (world, w = obstacle index), obstacle-grid cell order
 #define BALLS_OBST_CELL_START 7  // uint per obstacle-grid cell + 1
 #define BALLS_LISTS 6           // Verlet lists (balls/list_layout.glsl), list mode: no obstacle particles then
-#define BALLS_VEL_ORDER 4            // collide with VELOCITY_ORDER (Euler, no obstacle, no lists): the grid's permutation
 #define BALLS_NEXT_CELL_COUNT 6      // collide with COUNT_CELLS (no obstacle, no lists): the grid's cellCount,
 #define BALLS_NEXT_INDEX_IN_CELL 7   // and indexInCell, counted at the new positions for the next step
 #define BALLS_OBST_POSES 0     // uniform block (std140): each obstacle's pose and velocity (obstacle_poses.glsl)

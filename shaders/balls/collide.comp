@@ -23,14 +23,6 @@ layout(std430, binding = STEP_OUT_BINDING) writeonly buffer StepOut { vec4 stepO
 
 #include "balls/contact.glsl"
 
-#ifdef VELOCITY_ORDER
-// The sort moved only the positions: the velocities are still in the last step's order, and
-// velocityOrder[j] (the grid's permutation) is where cell-ordered ball j's velocity lies. Only
-// without obstacles and lists (8 storage blocks).
-layout(std430, binding = BALLS_VEL_ORDER) readonly buffer VelocityOrder { uint velocityOrder[]; };
-#define BALL_VELOCITY(j) velIn[velocityOrder[j]]
-#endif
-
 #ifdef COUNT_CELLS
 // The next step's grid count (grid_count.comp) done here, at the positions this pass writes: no
 // count pass reading them again. Only without obstacles and lists (8 storage blocks).
@@ -55,12 +47,11 @@ uniform float uFoamDecay; // factor per step
 
 void stepBall(uint i) {
   const vec3 p = posIn[i].xyz;
-  const vec4 own = BALL_VELOCITY(i);
-  gVelocity = own.xyz;
+  gVelocity = velIn[i].xyz;
   gAccel = uGravity;
   forEachContact(i, p);
   gAccel += wallsAccel(p, gVelocity);
-  float foam = own.w;
+  float foam = velIn[i].w;
 #ifdef INTEGRATOR_VERLET
   const vec3 v = (gVelocity + uKick * uDt * gAccel) * (uKick > 0.0 ? uDecay : 1.0);
   stepOut[i] = vec4(gAccel, 0.0);  // a

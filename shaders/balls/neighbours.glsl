@@ -3,15 +3,9 @@
 // through their own grid; each moves with its obstacle (obstacle_poses.glsl, index k in w).
 // The including kernel declares the cell-ordered posIn[] and velIn[] buffers and
 //   void onContact(vec3 n, float overlap, vec3 otherVelocity, float massRatio, float share);
-// before including this file (n points from the other body to the ball, world frame). A kernel
-// whose velocities are not in cell order defines BALL_VELOCITY(j), the velocity of cell-ordered
-// ball j (collide.comp with VELOCITY_ORDER).
+// before including this file (n points from the other body to the ball, world frame).
 #ifndef BALLS_NEIGHBOURS_GLSL
 #define BALLS_NEIGHBOURS_GLSL
-
-#ifndef BALL_VELOCITY
-#define BALL_VELOCITY(j) velIn[j]
-#endif
 
 #include "common/grid.glsl"
 
@@ -43,7 +37,7 @@ void candidate(uint j, vec3 p, vec3 q, float reach) {
   const float dist2 = dot(d, d);
   if (dist2 >= reach * reach || dist2 == 0.0) return;  // itself, or coincident: no normal
   const float dist = sqrt(dist2);
-  onContact(d / dist, reach - dist, BALL_VELOCITY(j).xyz, 0.5, 0.5);
+  onContact(d / dist, reach - dist, velIn[j].xyz, 0.5, 0.5);
 }
 
 // Every ball within reach, from the 27 cells around p (the cells are at least 2r).

@@ -4,8 +4,7 @@
 // scatter,gather runs each size once per grid reorder mode (the scene's grid_reorder otherwise),
 // --deterministic on,off once per grid order (stable: bit-identical runs; the scene's otherwise),
 // --neighbours grid,lists once per neighbour search, --skin 0.2,0.4 once per list skin (lists),
-// --count pass,collide once per place of the grid's count (its own pass, or in the collide),
-// --velocities moved,permuted once per way the collide finds the velocities.
+// --count pass,collide once per place of the grid's count (its own pass, or in the collide).
 #include <algorithm>
 #include <array>
 #include <cstdio>
@@ -32,14 +31,13 @@ std::vector<float> parseSkins(const std::string& text) {
 
 struct Options {
   std::string scene = "bench-lattice", sizes = "65536,1M,4M,16M", window = "10:310", reorder, deterministic, neighbours,
-              skin, count, velocities;
+              skin, count;
 };
 
 // One row of the table: the scene's parameters with the bench's choices applied.
 struct Variant {
   balls::Params params;
   bool countInCollide = true;
-  bool velocitiesPermuted = true;
 };
 
 std::vector<Variant> variants(const Options& o, const balls::Params& base) {
@@ -55,25 +53,21 @@ std::vector<Variant> variants(const Options& o, const balls::Params& base) {
   static constexpr std::array<const char*, 2> kCountNames = {"pass", "collide"};
   const std::vector<int> countIn =
       o.count.empty() ? std::vector<int>{1} : parseChoices<int>(o.count, kCountNames, "--count");
-  static constexpr std::array<const char*, 2> kVelocityNames = {"moved", "permuted"};
-  const std::vector<int> velocities =
-      o.velocities.empty() ? std::vector<int>{1} : parseChoices<int>(o.velocities, kVelocityNames, "--velocities");
   std::vector<Variant> out;
   for (std::size_t n : lattice ? parseSizes(o.sizes) : std::vector<std::size_t>{0})
     for (grid::ReorderMode mode : modes)
       for (bool stable : orders)
         for (balls::Neighbours search : searches)
           for (float skin : search == balls::Neighbours::Lists ? skins : std::vector<float>{base.skin})
-            for (int fused : countIn)
-              for (int permuted : velocities) {
-                Variant v{base, fused == 1, permuted == 1};
-                v.params.deterministic = stable;
-                if (lattice) v.params.latticeCount = int(n);
-                v.params.gridReorder = mode;
-                v.params.neighbours = search;
-                v.params.skin = skin;
-                out.push_back(v);
-              }
+            for (int fused : countIn) {
+              Variant v{base, fused == 1};
+              v.params.deterministic = stable;
+              if (lattice) v.params.latticeCount = int(n);
+              v.params.gridReorder = mode;
+              v.params.neighbours = search;
+              v.params.skin = skin;
+              out.push_back(v);
+            }
   return out;
 }
 
@@ -84,14 +78,13 @@ int run(Env& env, const Options& o) {
   const std::vector<Variant> rows = variants(o, base);
   std::printf("balls benchmark on %s: scene %s, steps %d..%d, medians per step\n", env.device.c_str(),
               scene.name.c_str(), w.first, w.last);
-  Table table({"balls", "r", "cells", "reorder", "determ.", "search", "count in", "velocities", "count ms", "scan ms",
-               "reorder ms", "lists ms", "drift ms", "collide ms", "obstacles ms", "ms/step", "steps/s", "steps/build",
+  Table table({"balls", "r", "cells", "reorder", "determ.", "search", "count in", "count ms", "scan ms", "reorder ms",
+               "lists ms", "drift ms", "collide ms", "obstacles ms", "ms/step", "steps/s", "steps/build",
                "bytes/ball"});
   for (const Variant& v : rows) {
     const balls::Params& p = v.params;
     balls::Balls model(env.shaders, p);
     model.countInCollide(v.countInCollide);
-    model.velocitiesThroughPermutation(v.velocitiesPermuted);
     const PassTimes t = timePasses(w.first, w.last - w.first, [&](gl::GpuProfiler& prof) { model.stepOnce(&prof); });
     const double perStep = t.frameMs();
     // Lists: the gate's section (count, scan, permutation, build) is timed as "balls.lists";
@@ -104,11 +97,11 @@ int run(Env& env, const Options& o) {
     }
     table.add({std::to_string(model.count()), fixed(model.radius(), 5), std::to_string(model.cells()),
                grid::kReorderModeNames[std::size_t(p.gridReorder)], p.deterministic ? "on" : "off", searchName,
-               v.countInCollide ? "collide" : "pass", v.velocitiesPermuted ? "permuted" : "moved",
-               fixed(t.median("balls.count"), 4), fixed(t.median("balls.scan"), 4), fixed(t.median("balls.reorder"), 4),
-               fixed(t.median("balls.lists"), 4), fixed(t.median("balls.drift"), 4),
-               fixed(t.median("balls.collide"), 4), fixed(t.median("balls.obstacles"), 4), fixed(perStep, 4),
-               fixed(perStep > 0 ? 1000.0 / perStep : 0.0, 0), perBuild, std::to_string(model.bytesPerBall())});
+               v.countInCollide ? "collide" : "pass", fixed(t.median("balls.count"), 4),
+               fixed(t.median("balls.scan"), 4), fixed(t.median("balls.reorder"), 4), fixed(t.median("balls.lists"), 4),
+               fixed(t.median("balls.drift"), 4), fixed(t.median("balls.collide"), 4),
+               fixed(t.median("balls.obstacles"), 4), fixed(perStep, 4), fixed(perStep > 0 ? 1000.0 / perStep : 0.0, 0),
+               perBuild, std::to_string(model.bytesPerBall())});
   }
   return finish(env, table, "; its per-pass timer queries read 0");
 }
@@ -130,10 +123,6 @@ Benchmark addBallsBench(CLI::App& bench) {
   sub->add_option("--count", o->count,
                   "where the grid counts the balls, one row each: collide (in the collide's write, the default "
                   "without obstacles and lists) or pass (a count pass), e.g. pass,collide");
-  sub->add_option("--velocities", o->velocities,
-                  "what the sort does with the velocities, one row each: moved (to cell order with the positions) "
-                  "or permuted (left in place, read through the permutation: the default with Euler, no obstacles "
-                  "and no lists), e.g. moved,permuted");
   return {sub, [o](Env& env) { return run(env, *o); }};
 }
 

@@ -92,9 +92,6 @@ class Balls final : public sim::Model, public sim::ParticleWater {
   void trackOrder(bool on) { m_trackOrder = on; }
   // Bench and tests: the next step's grid count inside the collide (the default) or as its own pass.
   void countInCollide(bool on) { m_countInCollide = on; }
-  // Bench and tests: the sort moves the velocities too, or leaves them for the collide to read
-  // through the permutation (the default without obstacles, lists and Verlet).
-  void velocitiesThroughPermutation(bool on) { m_velocityOrder = on; }
   // Tests: velocity Verlet's a(x), part of its state (it was evaluated with the half-step velocity).
   std::vector<glm::vec4> downloadAccelerations() const { return m_acc.read<glm::vec4>(m_count); }
   void uploadAccelerations(const std::vector<glm::vec4>& acc);
@@ -141,13 +138,9 @@ class Balls final : public sim::Model, public sim::ParticleWater {
   void gateLists(gl::GpuProfiler* profiler);
   void buildLists();
   void bindLists(gl::Program& program) const;
-  std::vector<gl::ShaderDefine> defines(bool verlet, bool lists = false, bool countCells = false,
-                                        bool velocityOrder = false) const;
+  std::vector<gl::ShaderDefine> defines(bool verlet, bool lists = false, bool countCells = false) const;
   // In use, common uniforms set.
-  gl::Program& useKernel(const char* file, bool verlet, bool lists = false, bool countCells = false,
-                         bool velocityOrder = false);
-  bool velocitiesThroughOrder()
-      const;  // the sort leaves the velocities; the collide reads them through the permutation
+  gl::Program& useKernel(const char* file, bool verlet, bool lists = false, bool countCells = false);
   // The grid's counts taken by the last collide (COUNT_CELLS) hold for the state it wrote: the
   // next sortByCell skips its count pass while the key still matches (anything else that writes
   // the balls clears it).
@@ -191,8 +184,7 @@ class Balls final : public sim::Model, public sim::ParticleWater {
   gl::Buffer m_accScratch;  // Verlet with lists: a(x) in the grid's order at a rebuild
   gl::BufferOps m_ops;
   bool m_listsStale = true;  // the next gate rebuilds (new balls, a reset, a step without lists)
-  bool m_countInCollide = true, m_velocityOrder = true;
-  bool m_velocitiesInOrder = true;  // the last sortByCell moved the velocities to cell order
+  bool m_countInCollide = true;
   CountKey m_countedAhead;
 };
 

@@ -82,11 +82,10 @@ void Balls::placeObstacles(double time, gl::GpuProfiler* profiler) {
   m_obstacles.place(m_params.obstacles, time, m_params.domainMin, m_params.domainMax, profiler);
 }
 
-std::vector<gl::ShaderDefine> Balls::defines(bool verlet, bool lists, bool countCells, bool velocityOrder) const {
+std::vector<gl::ShaderDefine> Balls::defines(bool verlet, bool lists, bool countCells) const {
   std::vector<gl::ShaderDefine> d;
   if (lists) d.push_back({"LISTS", ""});
   if (countCells) d.push_back({"COUNT_CELLS", ""});
-  if (velocityOrder) d.push_back({"VELOCITY_ORDER", ""});
   switch (m_params.contact) {
     case Contact::Penalty: d.push_back({"CONTACT_PENALTY", ""}); break;
     case Contact::CudaSample: d.push_back({"CONTACT_CUDA", ""}); break;
@@ -100,8 +99,8 @@ std::vector<gl::ShaderDefine> Balls::defines(bool verlet, bool lists, bool count
   return d;
 }
 
-gl::Program& Balls::useKernel(const char* file, bool verlet, bool lists, bool countCells, bool velocityOrder) {
-  gl::Program& p = m_shaders.program({file}, defines(verlet, lists, countCells, velocityOrder));
+gl::Program& Balls::useKernel(const char* file, bool verlet, bool lists, bool countCells) {
+  gl::Program& p = m_shaders.program({file}, defines(verlet, lists, countCells));
   const Params& q = m_params;
   p.use();
   p.set("uCount", GLuint(m_count));
@@ -155,20 +154,8 @@ void Balls::sortByCell(gl::GpuProfiler* profiler) {
   auto scope = timed(profiler, "balls.reorder");
   m_grid->setReorderMode(m_params.gridReorder);  // may change while running
   m_grid->setStable(m_params.deterministic);
-  m_velocitiesInOrder = !velocitiesThroughOrder();
-  if (m_velocitiesInOrder)
-    m_grid->reorder(m_pos[p], {{&m_pos[p], &m_pos[1 - p]}, {&m_vel[v], &m_vel[1 - v]}},
-                    m_trackOrder ? &m_permutation : nullptr);
-  else  // the collide reads the velocities through the permutation
-    m_grid->reorder(m_pos[p], {{&m_pos[p], &m_pos[1 - p]}}, &m_permutation);
-}
-
-// Euler's collide may read the velocities where the last step left them, through the grid's
-// permutation, so that the sort moves half the bytes; it has the storage block to spare without
-// obstacles and lists.
-bool Balls::velocitiesThroughOrder() const {
-  return m_velocityOrder && m_params.integrator != Integrator::VelocityVerlet && !listsActive() &&
-         !m_obstacles.active();
+  m_grid->reorder(m_pos[p], {{&m_pos[p], &m_pos[1 - p]}, {&m_vel[v], &m_vel[1 - v]}},
+                  m_trackOrder ? &m_permutation : nullptr);
 }
 
 void Balls::collide(gl::GpuProfiler* profiler, Collide what) {
@@ -178,8 +165,7 @@ void Balls::collide(gl::GpuProfiler* profiler, Collide what) {
   const bool lists = listsActive();
   const bool countCells = countsInCollide(what);
   if (countCells) m_grid->prepareCount(m_count);  // its fill binds and runs a kernel of its own: first
-  const bool velocityOrder = !m_velocitiesInOrder && !verlet && !lists;
-  gl::Program& collide = useKernel("balls/collide.comp", verlet, lists, countCells, velocityOrder);
+  gl::Program& collide = useKernel("balls/collide.comp", verlet, lists, countCells);
   if (lists) {  // the balls in place: read the current buffers, write the others
     bindLists(collide);
     m_pos[p].bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_POS_IN);
@@ -198,15 +184,8 @@ void Balls::collide(gl::GpuProfiler* profiler, Collide what) {
     return;
   }
   m_pos[1 - p].bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_POS_IN);  // the cell-ordered copies
-  if (velocityOrder) {  // the velocities where the last step left them, written in cell order
-    m_vel[v].bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VEL_IN);
-    m_permutation.bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VEL_ORDER);
-    m_vel[1 - v].bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VEL_OUT);
-    m_velIndex = 1 - v;
-  } else {
-    m_vel[1 - v].bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VEL_IN);
-    m_vel[v].bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VEL_OUT);
-  }
+  m_vel[1 - v].bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VEL_IN);
+  m_vel[v].bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VEL_OUT);
   if (verlet) {
     collide.set("uKick", what == Collide::VerletKick ? 0.5f : 0.0f);
     m_acc.bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_ACC);
