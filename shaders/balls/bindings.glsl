@@ -10,7 +10,8 @@
 #define BALLS_OBST_CELL_START 7  // uint per obstacle-grid cell + 1
 #define BALLS_LISTS 6           // Verlet lists (balls/list_layout.glsl), list mode: no obstacle particles then
 #define BALLS_NEXT_CELL_COUNT 6      // collide with COUNT_CELLS (no obstacle, no lists): the grid's cellCount,
-#define BALLS_NEXT_INDEX_IN_CELL 7   // and indexInCell, counted at the new positions for the next step
+#define BALLS_NEXT_INDEX_IN_CELL 7   // indexInCell
+#define BALLS_NEXT_PARTICLE_CELL 4   // and particleCell, counted at the new positions for the next step (Euler)
 #define BALLS_OBST_POSES 0     // uniform block (std140): each obstacle's pose and velocity (obstacle_poses.glsl)
 #define BALLS_MAX_OBSTACLES 16
 #define BALLS_STATS 2          // stats pass: BALLS_STATS_VALUES floats per work group (stats_layout.glsl; reuses POS_OUT)

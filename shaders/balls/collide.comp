@@ -28,6 +28,7 @@ layout(std430, binding = STEP_OUT_BINDING) writeonly buffer StepOut { vec4 stepO
 // count pass reading them again. Only without obstacles and lists (8 storage blocks).
 layout(std430, binding = BALLS_NEXT_CELL_COUNT) buffer NextCellCount { uint nextCellCount[]; };
 layout(std430, binding = BALLS_NEXT_INDEX_IN_CELL) writeonly buffer NextIndexInCell { uint nextIndexInCell[]; };
+layout(std430, binding = BALLS_NEXT_PARTICLE_CELL) writeonly buffer NextParticleCell { uint nextParticleCell[]; };
 #endif
 
 vec3 gAccel;
@@ -69,7 +70,9 @@ void stepBall(uint i) {
   stepOut[i] = vec4(x, posIn[i].w);  // x
   velOut[i] = vec4(v, foam);
 #ifdef COUNT_CELLS
-  nextIndexInCell[i] = atomicAdd(nextCellCount[cellOf(x)], 1u);
+  const uint cell = cellOf(x);
+  nextParticleCell[i] = cell;
+  nextIndexInCell[i] = atomicAdd(nextCellCount[cell], 1u);
 #endif
 #ifdef LISTS
   displacementBoxAdd(i, x);  // where the next step's forces act

@@ -1,4 +1,6 @@
-#define GRID_POSITIONS 0  // positions (vec4 xyz + w, or uvec2 half xy + word: grid/positions.glsl), read by count and reorder
+#define GRID_POSITIONS 0  // positions (vec4 xyz + w, or uvec2 half xy + word: grid/positions.glsl), read by count and the rank-scatter
+#define GRID_PARTICLE_CELL_OUT 3  // uint per particle, its cell, written by the count pass (shares 3: no permutation there)
+#define GRID_PARTICLE_CELL 0  // the same cells, read by the reorder passes in place of the positions
 #define GRID_INDEX_IN_CELL 1  // uint per particle, the count pass's atomicAdd result
 #define GRID_CELL_COUNT 2  // uint per cell, atomicAdd target (count pass only, so it shares 2)
 #define GRID_CELL_START 2  // uint per cell + 1, exclusive scan of the counts (reorder pass)

@@ -15,8 +15,10 @@ layout(local_size_x = 256) in;
 #include "common/index.glsl"
 #include "common/grid.glsl"
 #include "grid/bindings.glsl"
+// Without arrays the cell is the one the count pass stored (particleCell, at the positions'
+// binding); with arrays it comes from the positions, src[0], whose binding the members take.
+#define GRID_NO_POSITIONS_BLOCK
 #if ARRAYS > 0
-#define GRID_POSITIONS_IN_SRC
 #define RANK_MEMBERS GRID_POSITIONS
 #else
 #define RANK_MEMBERS GRID_MEMBERS
@@ -32,9 +34,10 @@ layout(std430, binding = GRID_PERMUTATION) writeonly buffer Permutation { uint p
 #if ARRAYS > 0
 layout(std430, binding = GRID_REORDER_SRC) readonly buffer Src { GridElement values[]; } src[ARRAYS];
 layout(std430, binding = GRID_REORDER_DST) writeonly buffer Dst { GridElement values[]; } dst[ARRAYS];
-vec3 rankedPosition(uint i) { return elementPosition(src[0].values[i]); }
+uint rankedCell(uint i) { return cellOf(elementPosition(src[0].values[i])); }
 #else
-vec3 rankedPosition(uint i) { return particlePosition(i); }
+layout(std430, binding = GRID_PARTICLE_CELL) readonly buffer ParticleCell { uint particleCell[]; };
+uint rankedCell(uint i) { return particleCell[i]; }
 #endif
 
 uniform uint uCount;  // particles
@@ -42,7 +45,7 @@ uniform uint uCount;  // particles
 void main() {
   const uint i = globalIndex();
   if (i >= uCount) return;
-  const uint cell = cellOf(rankedPosition(i));
+  const uint cell = rankedCell(i);
   const uint begin = cellStart[cell], end = cellStart[cell + 1u];
   uint rank = 0u;
   if (end - begin > uint(GRID_STABLE_MAX_CELL)) {

@@ -66,6 +66,7 @@ UniformGrid::UniformGrid(gl::ShaderLibrary& shaders, const GridParams& params, s
   m_cellStart = gl::Buffer(startBytes);
   m_scan.reserve(cells());
   if (particleCapacity) m_indexInCell = gl::Buffer(particleCapacity * kWord);
+  if (particleCapacity) m_particleCell = gl::Buffer(particleCapacity * kWord);
   if (particleCapacity && params.reorder == ReorderMode::Gather) m_permutation = gl::Buffer(particleCapacity * kWord);
   if (particleCapacity && params.stable) m_members = gl::Buffer(particleCapacity * kWord);
 }
@@ -87,6 +88,7 @@ void UniformGrid::prepareCount(std::size_t count) {
     throw Error("grid: " + std::to_string(count) + " positions need " + std::to_string(bytes >> 20) +
                 " MiB, over this driver's SSBO limit of " + std::to_string(m_maxBlockBytes >> 20) + " MiB");
   if (m_indexInCell.size() < count * kWord) m_indexInCell = gl::Buffer(count * kWord);
+  if (m_particleCell.size() < count * kWord) m_particleCell = gl::Buffer(count * kWord);
   m_count = count;
   // The previous count pass and scan read and wrote cellCount; their barriers order the clear.
   m_ops.fill(m_cellCount, 0);
@@ -99,6 +101,7 @@ void UniformGrid::countParticles(const gl::Buffer& positions, std::size_t count)
     positions.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_POSITIONS);
     m_cellCount.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_CELL_COUNT);
     m_indexInCell.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_INDEX_IN_CELL);
+    m_particleCell.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_PARTICLE_CELL_OUT);
     m_countPass->use();
     setUniforms(*m_countPass);
     m_countPass->set("uCount", uint32_t(count));
@@ -121,13 +124,14 @@ void UniformGrid::reorder(const gl::Buffer& positions, std::span<const ReorderAr
   }
   if (permutation) checkArray(permutation, n * kWord, "reorder: permutation");
   if (!n || (arrays.empty() && !permutation)) return;
-  positions.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_POSITIONS);
+  m_particleCell.bindBase(GL_SHADER_STORAGE_BUFFER,
+                          GRID_PARTICLE_CELL);  // the passes read the cells, not the positions
   m_indexInCell.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_INDEX_IN_CELL);
   m_cellStart.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_CELL_START);
   if (m_params.reorder == ReorderMode::Gather && !arrays.empty()) {
     gather(arrays, permutation);
   } else if (m_params.stable && !arrays.empty() && arrays[0].src->id() == positions.id()) {
-    rankAndScatter(positions, arrays, permutation);
+    rankAndScatter(arrays, permutation);
   } else {
     if (m_params.stable) rankWithinCells(nullptr);
     scatter(arrays, permutation);  // a permutation alone is the gather's first pass anyway
@@ -232,8 +236,7 @@ gl::Program& UniformGrid::rankPass(std::size_t arrays, bool writePermutation, bo
 // The stable scatter when the positions are the first array: the members pass, then one pass
 // that ranks each particle and moves the first batch of arrays to its slot (the positions read
 // from that batch, the members bound in their place); later batches scatter by the rank it kept.
-void UniformGrid::rankAndScatter(const gl::Buffer& positions, std::span<const ReorderArray> arrays,
-                                 gl::Buffer* permutation) {
+void UniformGrid::rankAndScatter(std::span<const ReorderArray> arrays, gl::Buffer* permutation) {
   writeMembers();
   const std::size_t batch = bindBatch(arrays, 0);
   const bool more = batch < arrays.size();
@@ -243,13 +246,13 @@ void UniformGrid::rankAndScatter(const gl::Buffer& positions, std::span<const Re
   program.dispatchThreads(m_count);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   if (!more) return;
-  positions.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_POSITIONS);
+  m_particleCell.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_PARTICLE_CELL);
   scatter(arrays, nullptr, batch);
 }
 
 std::size_t UniformGrid::memoryBytes() const {
-  return m_cellCount.size() + m_cellStart.size() + m_indexInCell.size() + m_permutation.size() + m_members.size() +
-         m_scan.memoryBytes();
+  return m_cellCount.size() + m_cellStart.size() + m_indexInCell.size() + m_particleCell.size() + m_permutation.size() +
+         m_members.size() + m_scan.memoryBytes();
 }
 
 }  // namespace tidepool::grid

@@ -5,6 +5,7 @@
 //
 //   6 particles in 4 cells, cell of particle i = {2, 0, 2, 3, 2, 0}
 //   count    cellCount   = {2, 0, 3, 1}        indexInCell = {0, 0, 1, 0, 2, 1}  (atomicAdd results)
+//            particleCell = {2, 0, 2, 3, 2, 0}  (the reorder's passes read it, not the positions)
 //   scan     cellStart   = {0, 2, 2, 5, 6}     exclusive prefix sum, last entry = particle total
 //   reorder  slot        = cellStart[cell] + indexInCell = {2, 0, 3, 5, 4, 1}
 //            dst         = {p1, p5, p0, p2, p4, p3}   cell c is dst[cellStart[c] .. cellStart[c + 1])
@@ -93,8 +94,9 @@ class UniformGrid {
   void countParticles(const gl::Buffer& positions, std::size_t count);  // clear, atomicAdd pass
   void scanCells();                                                     // cellCount -> cellStart
   // For a kernel that counts the particles itself, as grid_count.comp does (atomicAdd into
-  // cellCount(), the slot into indexInCell(), both bound by the caller): checks the count against
-  // the limits, sizes indexInCell, clears the counts. scanCells() follows as after countParticles().
+  // cellCount(), the slot into indexInCell(), the cell into particleCell(), all bound by the
+  // caller): checks the count against the limits, sizes those arrays, clears the counts.
+  // scanCells() follows as after countParticles().
   void prepareCount(std::size_t count);
   // Moves each array to cell order for the positions and count of the last build (the positions
   // must be unchanged since). GRID_REORDER_MAX_ARRAYS arrays per dispatch; permutation optional.
@@ -119,7 +121,8 @@ class UniformGrid {
   const gl::Buffer& cellStart() const { return m_cellStart; }  // uint per cell + 1 (total)
   const gl::Buffer& indexInCell() const {
     return m_indexInCell;
-  }                                 // uint per particle (stable: the rank, after reorder)
+  }  // uint per particle (stable: the rank, after reorder)
+  const gl::Buffer& particleCell() const { return m_particleCell; }  // uint per particle, its cell (count pass)
   std::size_t memoryBytes() const;  // all GPU buffers the grid owns, scan levels and gather permutation included
   std::size_t elementBytes() const { return m_params.layout == Layout::Half2 ? 8 : 16; }  // of positions and arrays
 
@@ -135,7 +138,7 @@ class UniformGrid {
   gl::Program* m_reorderPass[GRID_REORDER_MAX_ARRAYS + 1][2] = {};  // [arrays][writes permutation], made on use
   gl::Program* m_gatherPass[GRID_REORDER_MAX_ARRAYS + 1] = {};      // [arrays], made on use
   PrefixScan m_scan;
-  gl::Buffer m_cellCount, m_cellStart, m_indexInCell;
+  gl::Buffer m_cellCount, m_cellStart, m_indexInCell, m_particleCell;
   gl::Buffer m_permutation;  // gather mode without a caller's permutation: uint per particle
   gl::Buffer m_members;      // stable grid: each cell's particles in atomic order, uint per particle
 
@@ -148,7 +151,7 @@ class UniformGrid {
   void writeMembers();
   gl::Program& rankPass(std::size_t arrays, bool writePermutation, bool keepRank);  // in use, uniforms set
   // Stable scatter with the positions as arrays[0]: the rank pass moves the first batch itself.
-  void rankAndScatter(const gl::Buffer& positions, std::span<const ReorderArray> arrays, gl::Buffer* permutation);
+  void rankAndScatter(std::span<const ReorderArray> arrays, gl::Buffer* permutation);
   std::size_t m_count = 0;
 };
 

@@ -94,6 +94,9 @@ void checkGrid(gl::ShaderLibrary& shaders, const GridParams& params, const std::
   const std::vector<uint32_t> starts = reference::exclusiveScan(counts);
   ASSERT_EQ(grid.cellCount().read<uint32_t>(grid.cells()), counts) << "counts must equal the CPU histogram";
   ASSERT_EQ(grid.cellStart().read<uint32_t>(grid.cells() + 1), starts);
+  const std::vector<uint32_t> cellOfParticle = grid.particleCell().read<uint32_t>(n);
+  for (std::size_t i = 0; i < n; ++i)
+    ASSERT_EQ(cellOfParticle[i], reference::cellOf(shape, glm::vec3(pos[i]))) << "the stored cell of particle " << i;
 
   const std::vector<glm::vec4> sortedPos = posOut.read<glm::vec4>(n), sortedVel = velOut.read<glm::vec4>(n),
                                sortedExtra = extraOut.read<glm::vec4>(n);
@@ -279,6 +282,10 @@ TEST_P(GridModes, HalfFloatPositionsAndEightByteArrays) {
   const std::vector<uint32_t> starts = reference::exclusiveScan(counts);
   ASSERT_EQ(grid.cellCount().read<uint32_t>(grid.cells()), counts);
   ASSERT_EQ(grid.cellStart().read<uint32_t>(grid.cells() + 1), starts);
+  const std::vector<uint32_t> cellOfParticle = grid.particleCell().read<uint32_t>(n);
+  for (std::size_t i = 0; i < n; ++i)
+    ASSERT_EQ(cellOfParticle[i], reference::cellOf(grid.shape(), glm::vec3(rounded[i])))
+        << "the stored cell of particle " << i;
   const std::vector<glm::uvec2> sortedPos = posOut.read<glm::uvec2>(n), sortedOther = otherOut.read<glm::uvec2>(n);
   const std::vector<uint32_t> permutation = perm.read<uint32_t>(n);
   std::size_t cell = 0;
@@ -374,9 +381,9 @@ TEST_F(Grid, CountsAndStartsAreDeterministic) {
 TEST_F(Grid, MemoryIsReported) {
   UniformGrid grid(shaders(), {.domainMin = {0, 0, 0}, .domainMax = {64, 64, 64}, .cellSize = 1.0f}, 1000);
   const std::size_t cells = 64 * 64 * 64;
-  // counts + starts + indexInCell + the stable order's members + scan levels (64 + 1 block sums)
+  // counts + starts + indexInCell + particleCell + the stable order's members + scan levels (64 + 1 block sums)
   EXPECT_EQ(grid.memoryBytes(),
-            cells * 4 + (cells + 1) * 4 + 2 * 1000 * 4 + (cells / PrefixScan::Config{}.block() + 1) * 4);
+            cells * 4 + (cells + 1) * 4 + 3 * 1000 * 4 + (cells / PrefixScan::Config{}.block() + 1) * 4);
   UniformGrid atomic(shaders(), {.domainMin = {0, 0, 0}, .domainMax = {64, 64, 64}, .cellSize = 1.0f, .stable = false},
                      1000);
   EXPECT_EQ(atomic.memoryBytes(), grid.memoryBytes() - 1000 * 4);

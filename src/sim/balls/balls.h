@@ -8,6 +8,8 @@
 // One step (stepOnce), a list of passes (balls_passes.cpp):
 //   symplectic / explicit Euler:  placeObstacles(t)      -> sortByCell -> collide (forces, integrate)
 //   velocity Verlet:              placeObstacles(t + dt) -> drift -> sortByCell -> collide (forces, kick)
+// Euler's collide, without obstacles and lists, also counts each ball into the next step's grid
+// as it writes it (COUNT_CELLS), so the next sortByCell starts at the scan.
 // With Verlet lists (Params::neighbours = lists, no obstacle) sortByCell gives way to gateLists:
 // the grid (cells of 2r + skin), the balls' order and the lists are rebuilt only when the gate
 // kernel finds the displacements since the last build too large (GPU-side, through

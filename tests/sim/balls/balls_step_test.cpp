@@ -245,10 +245,12 @@ TEST_F(BallsStep, CountingInTheCollideEqualsTheCountPassBitForBit) {
     const std::vector<uint32_t> counts = g.cellCount().read<uint32_t>(g.cells());
     EXPECT_EQ(counts, grid::reference::histogram(g.shape(), x)) << "the counts the collide took";
     const std::vector<uint32_t> slots = g.indexInCell().read<uint32_t>(x.size());
+    const std::vector<uint32_t> cells = g.particleCell().read<uint32_t>(x.size());
     std::vector<std::vector<bool>> taken(g.cells());
     for (std::size_t c = 0; c < counts.size(); ++c) taken[c].resize(counts[c]);
     for (std::size_t i = 0; i < x.size(); ++i) {
       const uint32_t cell = grid::reference::cellOf(g.shape(), glm::vec3(x[i]));
+      ASSERT_EQ(cells[i], cell) << "the cell the collide stored for ball " << i;
       ASSERT_LT(slots[i], counts[cell]) << "ball " << i;
       ASSERT_FALSE(taken[cell][slots[i]]) << "slot taken twice in cell " << cell;
       taken[cell][slots[i]] = true;
