@@ -138,7 +138,7 @@ int runWindow(const WindowJob& job) {
   RenderTarget target(std::max(fbw, 1), std::max(fbh, 1));
   gl::GpuProfiler profiler;
   UiState ui;
-  WindowExport exports;
+  WindowExport exports(shaders);
   const auto show = [&ui](const WindowExport::Message& m) {
     if (m.text.empty()) return;
     ui.message = m.text;

@@ -32,7 +32,7 @@ TEST_F(WindowExportLogic, ExportsEveryKthSteppedFrameFromStart) {
   const Scene scene = loadScene(kLife);
   auto stage = createStage(scene, shaders());
   gl::GpuProfiler profiler;
-  WindowExport exports;
+  WindowExport exports(shaders());
   exports.settings() = {io::ExportFormat::Vtk, 2, (dir / "out").string()};
   const WindowExport::Message started = exports.start(*stage);
   EXPECT_FALSE(started.error) << started.text;
@@ -67,7 +67,7 @@ TEST_F(WindowExportLogic, FailuresStopTheExportWithAMessageAndTheRunGoesOn) {
   dir.write("file", "x");
   auto stage = createStage(loadScene(kLife), shaders());
   gl::GpuProfiler profiler;
-  WindowExport exports;
+  WindowExport exports(shaders());
   exports.settings().folder = (dir / "file/out").string();
   WindowExport::Message m = exports.start(*stage);
   EXPECT_TRUE(m.error);
@@ -104,4 +104,41 @@ TEST_F(WindowExportLogic, FailuresStopTheExportWithAMessageAndTheRunGoesOn) {
   EXPECT_TRUE(m.error);
   EXPECT_NE(m.text.find("has no particles"), std::string::npos) << m.text;
   EXPECT_FALSE(exports.running());
+}
+
+// The panel's "water surface": every K-th stepped frame is meshed and written as a surface file
+// (a closed PLY with faces), the grid is checked at Start, and a model without water refuses.
+TEST_F(WindowExportLogic, TheWaterSurfaceIsMeshedEveryKthFrame) {
+  test::TempDir dir;
+  auto stage = createStage(loadScene(std::string(TIDEPOOL_TEST_DATA) + "/soak/balls.json"), shaders());
+  gl::GpuProfiler profiler;
+  WindowExport exports(shaders());
+  exports.settings() = {io::ExportFormat::Ply, 2, (dir / "out").string(), true, {.resolution = 32}};
+  const WindowExport::Message started = exports.start(*stage);
+  ASSERT_FALSE(started.error) << started.text;
+  for (int i = 0; i < 4; ++i) {
+    stage->step(1.0 / 40, profiler);
+    const auto m = exports.afterFrame(*stage, true);
+    ASSERT_FALSE(m) << m->text;
+  }
+  const WindowExport::Message stopped = exports.stop();
+  ASSERT_FALSE(stopped.error) << stopped.text;
+  EXPECT_EQ(exports.written(), 3);  // frames 0, 2, 4
+  for (const char* f : {"surface_00000.ply", "surface_00002.ply", "surface_00004.ply"}) {
+    const std::string ply = readText(dir / "out" / f);
+    ASSERT_NE(ply.find("element face"), std::string::npos) << f;
+    EXPECT_EQ(ply.find("element face 0\n"), std::string::npos) << f << ": an empty mesh";
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir / "out/frame_00000.ply")) << "particles were not asked for";
+
+  exports.settings().surfaceParams.resolution = 1;  // out of range: refused at Start, nothing written
+  WindowExport::Message m = exports.start(*stage);
+  EXPECT_TRUE(m.error);
+  EXPECT_NE(m.text.find("resolution"), std::string::npos) << m.text;
+  EXPECT_FALSE(exports.running());
+  auto life = createStage(loadScene(kLife), shaders());
+  exports.settings().surfaceParams.resolution = 32;
+  m = exports.start(*life);
+  EXPECT_TRUE(m.error);
+  EXPECT_NE(m.text.find("has no water"), std::string::npos) << m.text;
 }

@@ -130,6 +130,7 @@ gl::Program& Balls::useKernel(const char* file, bool verlet, bool lists, bool co
 
 void Balls::drift(gl::GpuProfiler* profiler) {
   auto scope = timed(profiler, "balls.drift");
+  m_countedAhead = {};  // it moves the balls
   const bool lists = listsActive();
   gl::Program& p = useKernel("balls/drift.comp", false, lists);
   if (lists) bindLists(p);
@@ -164,6 +165,7 @@ void Balls::collide(gl::GpuProfiler* profiler, Collide what) {
   const int p = m_posIndex, v = m_velIndex;
   const bool lists = listsActive();
   const bool countCells = countsInCollide(what);
+  m_countedAhead = {};                            // set again below when this pass counts
   if (countCells) m_grid->prepareCount(m_count);  // its fill binds and runs a kernel of its own: first
   gl::Program& collide = useKernel("balls/collide.comp", verlet, lists, countCells);
   if (lists) {  // the balls in place: read the current buffers, write the others
