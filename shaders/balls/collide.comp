@@ -26,6 +26,9 @@ layout(std430, binding = STEP_OUT_BINDING) writeonly buffer StepOut { vec4 stepO
 #ifdef COUNT_CELLS
 // The next step's grid count (grid_count.comp) done here, at the positions this pass writes: no
 // count pass reading them again. Only without obstacles and lists (8 storage blocks).
+#if defined(LISTS) || defined(HAS_OBSTACLE) || defined(INTEGRATOR_VERLET)
+#error "COUNT_CELLS takes bindings 4, 6 and 7 (8 storage blocks in all): Balls::countsInCollide() keeps it from lists, obstacles and Verlet"
+#endif
 layout(std430, binding = BALLS_NEXT_CELL_COUNT) buffer NextCellCount { uint nextCellCount[]; };
 layout(std430, binding = BALLS_NEXT_INDEX_IN_CELL) writeonly buffer NextIndexInCell { uint nextIndexInCell[]; };
 layout(std430, binding = BALLS_NEXT_PARTICLE_CELL) writeonly buffer NextParticleCell { uint nextParticleCell[]; };

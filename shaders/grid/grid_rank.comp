@@ -31,6 +31,9 @@ layout(std430, binding = RANK_MEMBERS) readonly buffer Members { uint members[];
 #if WRITE_PERMUTATION
 layout(std430, binding = GRID_PERMUTATION) writeonly buffer Permutation { uint permutation[]; };
 #endif
+#if ARRAYS > GRID_REORDER_MAX_ARRAYS
+#error "at most GRID_REORDER_MAX_ARRAYS arrays per pass: more would pass GL 4.3's 8 storage blocks"
+#endif
 #if ARRAYS > 0
 layout(std430, binding = GRID_REORDER_SRC) readonly buffer Src { GridElement values[]; } src[ARRAYS];
 layout(std430, binding = GRID_REORDER_DST) writeonly buffer Dst { GridElement values[]; } dst[ARRAYS];
