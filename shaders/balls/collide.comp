@@ -43,6 +43,10 @@ void onContact(vec3 n, float overlap, vec3 otherVelocity, float massRatio, float
 #include "balls/neighbours.glsl"
 #include "balls/walls.glsl"
 
+// Balls [uFirst, uCount): a window of arrays larger than one storage block (src/gl/window.h), or all
+// of them (uFirst = uSourceFirst = 0). The outputs are bound from ball uFirst on, the inputs from
+// uSourceFirst on (neighbours.glsl): a window of the balls within reach of this one's.
+uniform uint uFirst;
 uniform uint uCount;
 uniform vec3 uGravity;    // m/s^2, rotated with the domain
 uniform float uDecay;     // exp(−damping·dt)
@@ -50,16 +54,17 @@ uniform float uFoamGain;  // per m travelled
 uniform float uFoamDecay; // factor per step
 
 void stepBall(uint i) {
-  const vec3 p = posIn[i].xyz;
-  gVelocity = velIn[i].xyz;
+  const uint s = i - uSourceFirst, o = i - uFirst;  // in the inputs' and the outputs' windows
+  const vec3 p = posIn[s].xyz;
+  gVelocity = velIn[s].xyz;
   gAccel = uGravity;
   forEachContact(i, p);
   gAccel += wallsAccel(p, gVelocity);
-  float foam = velIn[i].w;
+  float foam = velIn[s].w;
 #ifdef INTEGRATOR_VERLET
   const vec3 v = (gVelocity + uKick * uDt * gAccel) * (uKick > 0.0 ? uDecay : 1.0);
-  stepOut[i] = vec4(gAccel, 0.0);  // a
-  velOut[i] = vec4(v, foam);
+  stepOut[o] = vec4(gAccel, 0.0);  // a
+  velOut[o] = vec4(v, foam);
 #else
 #ifdef INTEGRATOR_EXPLICIT
   vec3 x = p + uDt * gVelocity;
@@ -70,8 +75,8 @@ void stepBall(uint i) {
 #endif
   confineToDomain(x, v);
   foam = min(1.0, (foam + uFoamGain * uDt * length(gVelocity)) * uFoamDecay);
-  stepOut[i] = vec4(x, posIn[i].w);  // x
-  velOut[i] = vec4(v, foam);
+  stepOut[o] = vec4(x, posIn[s].w);  // x
+  velOut[o] = vec4(v, foam);
 #ifdef COUNT_CELLS
   const uint cell = cellOf(x);
   nextParticleCell[i] = cell;
@@ -84,7 +89,7 @@ void stepBall(uint i) {
 }
 
 void main() {
-  const uint i = globalIndex();
+  const uint i = uFirst + globalIndex();
 #if defined(LISTS) && !defined(INTEGRATOR_VERLET)
   displacementBoxBegin();
   if (i < uCount) stepBall(i);

@@ -10,6 +10,8 @@ layout(std430, binding = BALLS_POS_OUT) buffer Pos { vec4 pos[]; };
 layout(std430, binding = BALLS_VEL_OUT) buffer Vel { vec4 vel[]; };
 layout(std430, binding = BALLS_ACC) readonly buffer Acc { vec4 acc[]; };
 
+// Balls [uFirst, uCount), the arrays bound from ball uFirst on (src/gl/window.h; 0 with lists).
+uniform uint uFirst;
 uniform uint uCount;
 uniform float uDt;
 uniform float uRadius;
@@ -21,19 +23,20 @@ uniform float uFoamDecay;
 #endif
 
 void driftBall(uint i) {
-  vec3 v = vel[i].xyz + 0.5 * uDt * acc[i].xyz;
-  vec3 x = pos[i].xyz + uDt * v;
+  const uint k = i - uFirst;
+  vec3 v = vel[k].xyz + 0.5 * uDt * acc[k].xyz;
+  vec3 x = pos[k].xyz + uDt * v;
   confineToDomain(x, v);
-  const float foam = min(1.0, (vel[i].w + uFoamGain * uDt * length(v)) * uFoamDecay);
-  pos[i] = vec4(x, pos[i].w);
-  vel[i] = vec4(v, foam);
+  const float foam = min(1.0, (vel[k].w + uFoamGain * uDt * length(v)) * uFoamDecay);
+  pos[k] = vec4(x, pos[k].w);
+  vel[k] = vec4(v, foam);
 #ifdef LISTS
   displacementBoxAdd(i, x);  // where this step's forces act
 #endif
 }
 
 void main() {
-  const uint i = globalIndex();
+  const uint i = uFirst + globalIndex();
 #ifdef LISTS
   displacementBoxBegin();
   if (i < uCount) driftBall(i);

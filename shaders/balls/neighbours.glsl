@@ -28,6 +28,9 @@ uniform uvec3 uObstacleDims;
 #endif
 
 uniform float uRadius;  // m
+// The first ball of the window posIn[] and velIn[] are bound from (src/gl/window.h): 0 when they
+// fit one storage block, as always with lists, whose indices are the balls' own.
+uniform uint uSourceFirst;
 
 // Candidate j at q: a contact when closer than reach. The ball itself (d = 0) is skipped by the
 // distance test rather than by comparing indices: one test fewer per candidate made the collide
@@ -51,8 +54,8 @@ void forEachGridContact(vec3 p, float reach) {
       const ivec3 row = ivec3(x0, c.y + dy, c.z + dz);
       if (!cellInGrid(row)) continue;
       const uint first = cellIndex(row);
-      const uint end = cellStart[first + uint(x1 - x0) + 1u];
-      for (uint j = cellStart[first]; j < end; ++j) candidate(j, p, posIn[j].xyz, reach);
+      const uint end = cellStart[first + uint(x1 - x0) + 1u] - uSourceFirst;
+      for (uint j = cellStart[first] - uSourceFirst; j < end; ++j) candidate(j, p, posIn[j].xyz, reach);
     }
 }
 

@@ -20,6 +20,8 @@ void onContact(vec3 n, float overlap, vec3 otherVelocity, float massRatio, float
 
 #include "balls/neighbours.glsl"
 
+// Balls [uFirst, uCount), as in collide.comp: the partials are bound from uFirst's work group on.
+uniform uint uFirst;
 uniform uint uCount;
 uniform vec3 uGravity;
 uniform vec3 uDomainMin;
@@ -36,14 +38,14 @@ bool reducedByMax(int k) {
 #include "common/group_reduce.glsl"
 
 void main() {
-  const uint i = globalIndex();
+  const uint i = uFirst + globalIndex();
   const float kNone = -3.0e38;
   float values[kValues];
   for (int k = 0; k < kValues; ++k) values[k] = 0.0;
   values[BALLS_STATS_FRONT] = kNone;
   values[BALLS_STATS_BACK_HEIGHT] = kNone;
   if (i < uCount) {
-    const vec3 p = posIn[i].xyz, v = velIn[i].xyz;
+    const vec3 p = posIn[i - uSourceFirst].xyz, v = velIn[i - uSourceFirst].xyz;
     if (any(isnan(p)) || any(isinf(p)) || any(isnan(v)) || any(isinf(v))) {
       values[BALLS_STATS_NON_FINITE] = 1.0;
     } else {

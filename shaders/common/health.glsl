@@ -11,7 +11,10 @@
 #include "common/health_layout.glsl"
 
 layout(std430, binding = HEALTH_BINDING) buffer Health { uint health[HEALTH_WORDS]; };  // zeroed by the watch
-uniform uint uCount;  // elements to check
+// Elements [uFirst, uCount): a window of arrays larger than one storage block (src/gl/window.h),
+// bound from element uFirst on, or all of them (uFirst = 0). checkHealth() gets the index in the window.
+uniform uint uFirst;
+uniform uint uCount;
 
 shared uint sNonFinite, sMaxBits, sFlagged;
 
@@ -30,8 +33,8 @@ void main() {
     sFlagged = 0u;
   }
   barrier();
-  const uint i = globalIndex();
-  if (i < uCount) checkHealth(i);
+  const uint i = uFirst + globalIndex();
+  if (i < uCount) checkHealth(i - uFirst);
   barrier();
   if (gl_LocalInvocationIndex == 0u) {
     if (sNonFinite > 0u) atomicAdd(health[HEALTH_NON_FINITE], sNonFinite);

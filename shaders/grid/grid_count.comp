@@ -14,12 +14,16 @@ layout(std430, binding = GRID_CELL_COUNT) buffer CellCount { uint cellCount[]; }
 layout(std430, binding = GRID_INDEX_IN_CELL) writeonly buffer IndexInCell { uint indexInCell[]; };
 layout(std430, binding = GRID_PARTICLE_CELL_OUT) writeonly buffer ParticleCell { uint particleCell[]; };
 
-uniform uint uCount;  // particles
+// Particles [uFirst, uCount): a window of an array larger than one storage block (src/gl/window.h)
+// or all of it (uFirst = 0). The positions are bound from particle uFirst on; the per-particle
+// words are bound whole.
+uniform uint uFirst;
+uniform uint uCount;
 
 void main() {
-  const uint i = globalIndex();
+  const uint i = uFirst + globalIndex();
   if (i >= uCount) return;
-  const uint cell = cellOf(particlePosition(i));
+  const uint cell = cellOf(particlePosition(i - uFirst));
   particleCell[i] = cell;
   indexInCell[i] = atomicAdd(cellCount[cell], 1u);
 }

@@ -14,11 +14,19 @@ layout(std430, binding = GRID_PERMUTATION) readonly buffer Permutation { uint pe
 layout(std430, binding = GRID_REORDER_SRC) readonly buffer Src { GridElement values[]; } src[ARRAYS];
 layout(std430, binding = GRID_REORDER_DST) writeonly buffer Dst { GridElement values[]; } dst[ARRAYS];
 
-uniform uint uCount;  // particles
+// Arrays larger than one storage block move a window at a time (src/gl/window.h): this dispatch
+// fills slots [uFirst, uCount), the destination arrays bound from slot uFirst on, from the
+// particles [uSrcFirst, uSrcFirst + uSrcCount), the source arrays bound from uSrcFirst on; the
+// caller runs every pair of windows. One window: uFirst = uSrcFirst = 0, uSrcCount = uCount.
+uniform uint uFirst;
+uniform uint uCount;
+uniform uint uSrcFirst;
+uniform uint uSrcCount;
 
 void main() {
-  const uint slot = globalIndex();
+  const uint slot = uFirst + globalIndex();
   if (slot >= uCount) return;
-  const uint i = permutation[slot];
-  for (int a = 0; a < ARRAYS; ++a) dst[a].values[slot] = src[a].values[i];
+  const uint i = permutation[slot] - uSrcFirst;
+  if (i >= uSrcCount) return;  // another window's (wraps below uSrcFirst)
+  for (int a = 0; a < ARRAYS; ++a) dst[a].values[slot - uFirst] = src[a].values[i];
 }

@@ -24,14 +24,23 @@ layout(std430, binding = GRID_REORDER_SRC) readonly buffer Src { GridElement val
 layout(std430, binding = GRID_REORDER_DST) writeonly buffer Dst { GridElement values[]; } dst[ARRAYS];
 #endif
 
-uniform uint uCount;  // particles
+// Arrays larger than one storage block move a window at a time (src/gl/window.h): this dispatch
+// takes particles [uFirst, uCount), the source arrays bound from particle uFirst on, and writes the
+// slots [uDstFirst, uDstFirst + uDstCount), the destination arrays bound from slot uDstFirst on;
+// the caller runs every pair of windows. The per-particle words are bound whole. One window:
+// uFirst = uDstFirst = 0, uDstCount = uCount.
+uniform uint uFirst;
+uniform uint uCount;
+uniform uint uDstFirst;
+uniform uint uDstCount;
 
 void main() {
-  const uint i = globalIndex();
+  const uint i = uFirst + globalIndex();
   if (i >= uCount) return;
   const uint slot = cellStart[particleCell[i]] + indexInCell[i];
+  if (slot - uDstFirst >= uDstCount) return;  // another window's (wraps below uDstFirst)
 #if ARRAYS > 0
-  for (int a = 0; a < ARRAYS; ++a) dst[a].values[slot] = src[a].values[i];
+  for (int a = 0; a < ARRAYS; ++a) dst[a].values[slot - uDstFirst] = src[a].values[i - uFirst];
 #endif
 #if WRITE_PERMUTATION
   permutation[slot] = i;

@@ -79,8 +79,8 @@ int run(Env& env, const Options& o) {
   std::printf("balls benchmark on %s: scene %s, steps %d..%d, medians per step\n", env.device.c_str(),
               scene.name.c_str(), w.first, w.last);
   Table table({"balls", "r", "cells", "reorder", "determ.", "search", "count in", "count ms", "scan ms", "reorder ms",
-               "lists ms", "drift ms", "collide ms", "obstacles ms", "ms/step", "steps/s", "steps/build",
-               "bytes/ball"});
+               "lists ms", "drift ms", "collide ms", "obstacles ms", "ms/step", "steps/s", "steps/build", "bytes/ball",
+               "windows"});
   for (const Variant& v : rows) {
     const balls::Params& p = v.params;
     balls::Balls model(env.shaders, p);
@@ -101,7 +101,7 @@ int run(Env& env, const Options& o) {
                fixed(t.median("balls.scan"), 4), fixed(t.median("balls.reorder"), 4), fixed(t.median("balls.lists"), 4),
                fixed(t.median("balls.drift"), 4), fixed(t.median("balls.collide"), 4),
                fixed(t.median("balls.obstacles"), 4), fixed(perStep, 4), fixed(perStep > 0 ? 1000.0 / perStep : 0.0, 0),
-               perBuild, std::to_string(model.bytesPerBall())});
+               perBuild, std::to_string(model.bytesPerBall()), std::to_string(model.collideWindows())});
   }
   return finish(env, table, "; its per-pass timer queries read 0");
 }

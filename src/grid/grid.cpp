@@ -4,6 +4,7 @@
 #include <string>
 
 #include "base/error.h"
+#include "gl/window.h"
 
 namespace tidepool::grid {
 namespace {
@@ -59,9 +60,9 @@ UniformGrid::UniformGrid(gl::ShaderLibrary& shaders, const GridParams& params, s
       m_scan(shaders) {
   const std::size_t startBytes = (cells() + 1) * kWord;
   if (startBytes > m_maxBlockBytes)
-    throw Error("grid of " + std::to_string(cells()) + " cells needs " + std::to_string(startBytes >> 20) +
-                " MiB per cell array, over this driver's SSBO limit of " + std::to_string(m_maxBlockBytes >> 20) +
-                " MiB: use a larger cell size");
+    throw Error("grid of " + std::to_string(cells()) + " cells needs " + gl::sizeText(startBytes) +
+                " per cell array, over this driver's SSBO limit of " + gl::sizeText(m_maxBlockBytes) +
+                ": use a larger cell size");
   m_cellCount = gl::Buffer(cells() * kWord);
   m_cellStart = gl::Buffer(startBytes);
   m_scan.reserve(cells());
@@ -83,10 +84,11 @@ void UniformGrid::build(const gl::Buffer& positions, std::size_t count) {
 }
 
 void UniformGrid::prepareCount(std::size_t count) {
-  const std::size_t bytes = count * elementBytes();
+  // The particle arrays move a window at a time (gl/window.h); the per-particle words are bound whole.
+  const std::size_t bytes = count * kWord;
   if (bytes > m_maxBlockBytes)
-    throw Error("grid: " + std::to_string(count) + " positions need " + std::to_string(bytes >> 20) +
-                " MiB, over this driver's SSBO limit of " + std::to_string(m_maxBlockBytes >> 20) + " MiB");
+    throw Error("grid: " + std::to_string(count) + " particles need " + gl::sizeText(bytes) +
+                " per array of 4-byte words, over this driver's SSBO limit of " + gl::sizeText(m_maxBlockBytes));
   if (m_indexInCell.size() < count * kWord) m_indexInCell = gl::Buffer(count * kWord);
   if (m_particleCell.size() < count * kWord) m_particleCell = gl::Buffer(count * kWord);
   m_count = count;
@@ -98,14 +100,17 @@ void UniformGrid::countParticles(const gl::Buffer& positions, std::size_t count)
   checkArray(&positions, count * elementBytes(), std::to_string(count) + " positions");
   prepareCount(count);
   if (count) {
-    positions.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_POSITIONS);
     m_cellCount.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_CELL_COUNT);
     m_indexInCell.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_INDEX_IN_CELL);
     m_particleCell.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_PARTICLE_CELL_OUT);
     m_countPass->use();
     setUniforms(*m_countPass);
-    m_countPass->set("uCount", uint32_t(count));
-    m_countPass->dispatchThreads(count);
+    for (const gl::Window& w : gl::windows(count, elementBytes())) {
+      gl::bindWindow(positions, GRID_POSITIONS, w, elementBytes());
+      m_countPass->set("uFirst", uint32_t(w.first));
+      m_countPass->set("uCount", uint32_t(w.end()));
+      m_countPass->dispatchThreads(w.count);
+    }
   }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
@@ -130,7 +135,8 @@ void UniformGrid::reorder(const gl::Buffer& positions, std::span<const ReorderAr
   m_cellStart.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_CELL_START);
   if (m_params.reorder == ReorderMode::Gather && !arrays.empty()) {
     gather(arrays, permutation);
-  } else if (m_params.stable && !arrays.empty() && arrays[0].src->id() == positions.id()) {
+  } else if (m_params.stable && !arrays.empty() && arrays[0].src->id() == positions.id() &&
+             !gl::needsWindows(n, elementBytes())) {  // its positions and members share a binding
     rankAndScatter(arrays, permutation);
   } else {
     if (m_params.stable) rankWithinCells(nullptr);
@@ -147,16 +153,21 @@ gl::Program& UniformGrid::reorderPass(std::size_t arrays, bool writePermutation)
                                                                {"HALF_POSITIONS", halfDefine(m_params)}});
   program->use();
   setUniforms(*program);
+  program->set("uFirst", 0u);
   program->set("uCount", uint32_t(m_count));
+  program->set("uDstFirst", 0u);
+  program->set("uDstCount", uint32_t(m_count));
   return *program;
 }
 
 // Binds the batch of up to GRID_REORDER_MAX_ARRAYS arrays starting at `first`; returns its size.
-std::size_t UniformGrid::bindBatch(std::span<const ReorderArray> arrays, std::size_t first) {
+// Windows of src and dst (gl/window.h): all of each array when it fits one storage block.
+std::size_t UniformGrid::bindBatch(std::span<const ReorderArray> arrays, std::size_t first, const gl::Window& src,
+                                   const gl::Window& dst) const {
   const std::size_t batch = std::min<std::size_t>(GRID_REORDER_MAX_ARRAYS, arrays.size() - first);
   for (std::size_t a = 0; a < batch; ++a) {
-    arrays[first + a].src->bindBase(GL_SHADER_STORAGE_BUFFER, GLuint(GRID_REORDER_SRC + a));
-    arrays[first + a].dst->bindBase(GL_SHADER_STORAGE_BUFFER, GLuint(GRID_REORDER_DST + a));
+    gl::bindWindow(*arrays[first + a].src, GLuint(GRID_REORDER_SRC + a), src, elementBytes());
+    gl::bindWindow(*arrays[first + a].dst, GLuint(GRID_REORDER_DST + a), dst, elementBytes());
   }
   return batch;
 }
@@ -166,9 +177,19 @@ std::size_t UniformGrid::bindBatch(std::span<const ReorderArray> arrays, std::si
 void UniformGrid::scatter(std::span<const ReorderArray> arrays, gl::Buffer* permutation, std::size_t first) {
   if (permutation) permutation->bindBase(GL_SHADER_STORAGE_BUFFER, GRID_PERMUTATION);
   bool writePermutation = permutation != nullptr;
+  const std::vector<gl::Window> windows = gl::windows(m_count, elementBytes());
   do {
-    const std::size_t batch = bindBatch(arrays, first);
-    reorderPass(batch, writePermutation).dispatchThreads(m_count);
+    std::size_t batch = 0;
+    for (const gl::Window& src : windows)  // each slot lies in one destination window
+      for (const gl::Window& dst : windows) {
+        batch = bindBatch(arrays, first, src, dst);
+        gl::Program& program = reorderPass(batch, writePermutation);
+        program.set("uFirst", uint32_t(src.first));
+        program.set("uCount", uint32_t(src.end()));
+        program.set("uDstFirst", uint32_t(dst.first));
+        program.set("uDstCount", uint32_t(dst.count));
+        program.dispatchThreads(src.count);
+      }
     first += batch;
     writePermutation = false;
   } while (first < arrays.size());
@@ -188,16 +209,22 @@ void UniformGrid::gather(std::span<const ReorderArray> arrays, gl::Buffer* permu
     reorderPass(0, true).dispatchThreads(m_count);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   }
-  for (std::size_t first = 0; first < arrays.size(); first += GRID_REORDER_MAX_ARRAYS) {
-    const std::size_t batch = bindBatch(arrays, first);
-    gl::Program*& program = m_gatherPass[batch];
-    if (!program)
-      program = &m_shaders->program({"grid/grid_gather.comp"},
-                                    {{"ARRAYS", std::to_string(batch)}, {"HALF_POSITIONS", halfDefine(m_params)}});
-    program->use();
-    program->set("uCount", uint32_t(m_count));
-    program->dispatchThreads(m_count);
-  }
+  const std::vector<gl::Window> windows = gl::windows(m_count, elementBytes());
+  for (std::size_t first = 0; first < arrays.size(); first += GRID_REORDER_MAX_ARRAYS)
+    for (const gl::Window& dst : windows)  // each particle lies in one source window
+      for (const gl::Window& src : windows) {
+        const std::size_t batch = bindBatch(arrays, first, src, dst);
+        gl::Program*& program = m_gatherPass[batch];
+        if (!program)
+          program = &m_shaders->program({"grid/grid_gather.comp"},
+                                        {{"ARRAYS", std::to_string(batch)}, {"HALF_POSITIONS", halfDefine(m_params)}});
+        program->use();
+        program->set("uFirst", uint32_t(dst.first));
+        program->set("uCount", uint32_t(dst.end()));
+        program->set("uSrcFirst", uint32_t(src.first));
+        program->set("uSrcCount", uint32_t(src.count));
+        program->dispatchThreads(dst.count);
+      }
 }
 
 // The members pass is the scatter of the particle index (the gather's permutation pass) into
@@ -238,7 +265,8 @@ gl::Program& UniformGrid::rankPass(std::size_t arrays, bool writePermutation, bo
 // from that batch, the members bound in their place); later batches scatter by the rank it kept.
 void UniformGrid::rankAndScatter(std::span<const ReorderArray> arrays, gl::Buffer* permutation) {
   writeMembers();
-  const std::size_t batch = bindBatch(arrays, 0);
+  const gl::Window all{0, m_count};
+  const std::size_t batch = bindBatch(arrays, 0, all, all);
   const bool more = batch < arrays.size();
   gl::Program& program = rankPass(batch, permutation != nullptr, more);
   m_members.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_POSITIONS);

@@ -31,6 +31,11 @@
 // the models that sum over neighbours in grid order. A cell of more than GRID_STABLE_MAX_CELL
 // particles (a blow-up piling into a border cell) keeps its atomic order rather than spend
 // O(count^2) there. With stable = false the grid skips both passes (atomicAdd order).
+// Arrays larger than one storage block (GL_MAX_SHADER_STORAGE_BLOCK_SIZE) move a window at a time
+// (gl/window.h): the count pass one dispatch per window of positions, the scatter and the gather
+// one per pair of source and destination windows (each kernel skips the particles whose other end
+// lies outside its pair). The per-particle words (cells, ranks, members, permutation) and the cell
+// arrays stay whole: they bound the particle count at the limit / 4 bytes.
 // Positions are vec4 (xyz + w) std430 SSBOs, or for a 2D grid with Layout::Half2 uvec2 (x =
 // packHalf2x16 of xy, y = any word), and then every reordered array has 8-byte elements. Positions outside the domain
 // are clamped into the border cells (never dropped, never written out of bounds); a position exactly on a cell border
@@ -54,6 +59,7 @@
 #include "gl/buffer.h"
 #include "gl/buffer_ops.h"
 #include "gl/shader_library.h"
+#include "gl/window.h"
 #include "grid/bindings.glsl"
 #include "grid/grid_reference.h"
 #include "grid/prefix_scan.h"
@@ -143,7 +149,8 @@ class UniformGrid {
   gl::Buffer m_members;      // stable grid: each cell's particles in atomic order, uint per particle
 
   gl::Program& reorderPass(std::size_t arrays, bool writePermutation);
-  static std::size_t bindBatch(std::span<const ReorderArray> arrays, std::size_t first);
+  std::size_t bindBatch(std::span<const ReorderArray> arrays, std::size_t first, const gl::Window& src,
+                        const gl::Window& dst) const;
   void scatter(std::span<const ReorderArray> arrays, gl::Buffer* permutation, std::size_t first = 0);
   void gather(std::span<const ReorderArray> arrays, gl::Buffer* permutation);
   // Stable grid: the rank by index (see above) into indexInCell, or as the gather's permutation.

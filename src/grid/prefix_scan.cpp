@@ -3,6 +3,7 @@
 #include <string>
 
 #include "base/error.h"
+#include "gl/window.h"
 #include "grid/bindings.glsl"
 
 namespace tidepool::grid {
@@ -35,17 +36,12 @@ void checkSizes(const char* what, const gl::Buffer& in, const gl::Buffer& out, s
     throw Error(std::string(what) + " of " + std::to_string(n) + " elements: the output buffer needs n + 1 = " +
                 std::to_string(n + 1) + " uints, it holds " + std::to_string(out.size() / kWord));
   if ((n + 1) * kWord > limit)
-    throw Error(std::string(what) + " of " + std::to_string(n) + " elements needs " +
-                std::to_string((n + 1) * kWord >> 20) + " MiB arrays, over this driver's SSBO limit of " +
-                std::to_string(limit >> 20) + " MiB");
+    throw Error(std::string(what) + " of " + std::to_string(n) + " elements needs " + gl::sizeText((n + 1) * kWord) +
+                " arrays, over this driver's SSBO limit of " + gl::sizeText(limit));
 }
 }  // namespace
 
-std::size_t maxStorageBlockBytes() {
-  GLint64 bytes = 0;
-  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &bytes);
-  return std::size_t(bytes);
-}
+std::size_t maxStorageBlockBytes() { return gl::storageBlockBytes(); }
 
 PrefixScan::PrefixScan(gl::ShaderLibrary& shaders, Config config)
     : m_config(config),

@@ -1,5 +1,6 @@
 #include "render/balls_gbuffer.h"
 
+#include "gl/window.h"
 #include "render/balls/bindings.glsl"
 
 namespace tidepool {
@@ -24,9 +25,12 @@ void BallsGBuffer::drawSpheres(gl::Program& program, const SphereBatch& balls, c
   program.set("uProj", camera.proj);
   program.set("uRadius", balls.radius);
   program.set("uHasFoam", balls.velocities ? 1 : 0);
-  balls.positions->bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VIEW_POSITIONS);
-  if (balls.velocities) balls.velocities->bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VIEW_VELOCITIES);
-  glDrawArrays(GL_TRIANGLES, 0, GLsizei(6 * balls.count));
+  // Arrays over one storage block: a draw per window, gl_VertexID / 6 the ball in it (gl/window.h).
+  for (const gl::Window& w : gl::windows(balls.count, sizeof(glm::vec4))) {
+    gl::bindWindow(*balls.positions, BALLS_VIEW_POSITIONS, w, sizeof(glm::vec4));
+    if (balls.velocities) gl::bindWindow(*balls.velocities, BALLS_VIEW_VELOCITIES, w, sizeof(glm::vec4));
+    glDrawArrays(GL_TRIANGLES, 0, GLsizei(6 * w.count));
+  }
 }
 
 std::vector<float> BallsGBuffer::readDepth() const {
@@ -38,7 +42,9 @@ std::vector<float> BallsGBuffer::readDepth() const {
 void BallsGBuffer::draw(const SphereBatch& balls, const BallsCamera& camera, const SceneDepth& scene, bool thickness,
                         BallsRaster raster, gl::GpuProfiler& profiler) {
   resize(camera.width, camera.height);
-  m_compute = raster == BallsRaster::Compute;
+  // The compute raster resolves each pixel's ball from anywhere in the arrays: all of them bound at
+  // once. Balls over one storage block are drawn as fragments, a window at a time.
+  m_compute = raster == BallsRaster::Compute && !gl::needsWindows(balls.count, sizeof(glm::vec4));
   if (m_compute)
     m_splat.draw(balls, camera, scene, thickness, m_surface, m_foam, m_depthImage, profiler);
   else

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "base/error.h"
+#include "gl/window.h"
 #include "render/marching_cubes.h"
 #include "surface/bindings.glsl"
 
@@ -109,13 +110,15 @@ SurfaceMesher::Counts SurfaceMesher::build(const SurfaceInput& in, const Surface
     m_ops.fill(m_density, 0, n * kWord);
     if (in.count > 0) {
       setGrid(*m_splat);
-      m_splat->set("uCount", unsigned(in.count));
       m_splat->set("uReach", m_grid.h / m_grid.cell);
       m_splat->set("uInvH2", 1.0f / (m_grid.h * m_grid.h));
       m_splat->set("uWeightOne", m_grid.weightOne);
-      in.positions->bindBase(GL_SHADER_STORAGE_BUFFER, SURFACE_POSITIONS);
       m_density.bindBase(GL_SHADER_STORAGE_BUFFER, SURFACE_DENSITY);
-      m_splat->dispatchThreads(in.count);
+      for (const gl::Window& w : gl::windows(in.count, sizeof(glm::vec4))) {  // positions over one block: windows
+        gl::bindWindow(*in.positions, SURFACE_POSITIONS, w, sizeof(glm::vec4));
+        m_splat->set("uCount", unsigned(w.count));
+        m_splat->dispatchThreads(w.count);
+      }
       glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     }
   }

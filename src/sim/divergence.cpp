@@ -73,9 +73,13 @@ void DivergenceWatch::frame(Subject& s) {
 void DivergenceWatch::reduce(Subject& s, std::size_t count, gl::Buffer& words) {
   words.fillZero();
   gl::Program& kernel = s.healthKernel();
-  kernel.set("uCount", GLuint(count));
   words.bindBase(GL_SHADER_STORAGE_BUFFER, HEALTH_BINDING);
-  kernel.dispatchThreads(count);
+  for (const gl::Window& w : s.healthWindows(count)) {
+    s.bindHealthWindow(w);
+    kernel.set("uFirst", GLuint(w.first));
+    kernel.set("uCount", GLuint(w.end()));
+    kernel.dispatchThreads(w.count);
+  }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 

@@ -25,6 +25,7 @@
 #include "gl/buffer_ops.h"
 #include "gl/program.h"
 #include "gl/shader_library.h"
+#include "gl/window.h"
 #include "sim/model_state.h"
 
 namespace tidepool {
@@ -75,8 +76,12 @@ class DivergenceWatch {
     virtual StateStamp stamp() const = 0;                 // now
     virtual std::vector<StateBuffer> stateBuffers() = 0;  // what a check copies and recovery restores
     // Its health.comp in use, with its state bound and its own uniforms set (the watch sets
-    // uCount and binds the words at HEALTH_BINDING, then dispatches one invocation per element).
+    // uFirst and uCount and binds the words at HEALTH_BINDING, then dispatches one invocation per element).
     virtual gl::Program& healthKernel() = 0;
+    // State larger than one storage block is checked a window at a time (gl/window.h): these
+    // windows, each bound by bindHealthWindow() before its dispatch. By default all of it at once.
+    virtual std::vector<gl::Window> healthWindows(std::size_t count) const { return {{0, count}}; }
+    virtual void bindHealthWindow(const gl::Window&) {}
     virtual std::optional<std::string> unhealthy(const Words& words) = 0;  // what failed; nullopt: healthy
     virtual std::string method() const = 0;                                // method and time step, for a report
     virtual void resume(const StateStamp& good) = 0;  // after the copies are back: its clock, half its dt

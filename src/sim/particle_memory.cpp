@@ -8,10 +8,11 @@
 
 #include "base/error.h"
 #include "gl/gl.h"
+#include "gl/window.h"
 
 namespace tidepool::sim {
 namespace {
-std::string mib(std::size_t bytes) { return std::to_string((bytes + (1 << 20) - 1) >> 20) + " MiB"; }
+std::string mib(std::size_t bytes) { return gl::sizeText(bytes); }
 
 // The tighter of the current fit and `count` under `limit`.
 void tighten(ParticleFit& fit, std::size_t count, const std::string& limit) {
@@ -48,12 +49,11 @@ ParticleFit particlesThatFit(const ParticleCost& cost, const char* particle) {
   ParticleFit fit = cost.maxParticles > 0
                         ? ParticleFit{cost.maxParticles, "max_particles = " + std::to_string(cost.maxParticles)}
                         : ParticleFit{std::numeric_limits<std::size_t>::max(), "no limit known"};
-  GLint64 maxBlock = 0;
-  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
+  const std::size_t maxBlock = gl::storageBlockBytes();
   if (cost.arrayBytes)
-    tighten(fit, std::size_t(maxBlock) / cost.arrayBytes,
-            "the storage-block limit, " + mib(std::size_t(maxBlock)) + " per array of " +
-                std::to_string(cost.arrayBytes) + " B per " + particle);
+    tighten(fit, maxBlock / cost.arrayBytes,
+            "the storage-block limit, " + mib(maxBlock) + " per array of " + std::to_string(cost.arrayBytes) +
+                " B per " + particle);
   if (const std::optional<std::size_t> gpu = freeGpuBytes(); gpu && cost.gpuBytes)
     tighten(fit, *gpu / cost.gpuBytes,
             "free GPU memory, " + mib(*gpu) + " at " + std::to_string(cost.gpuBytes) + " B per " + particle);

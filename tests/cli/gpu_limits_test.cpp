@@ -2,6 +2,10 @@
 // many particles it would make, how many fit, the limit that binds and the key to change.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
 #include "support/gl_test.h"
 #include "support/one_line_error.h"
 
@@ -46,4 +50,51 @@ TEST(GpuLimits, TapCountsTowardsTheLimit) {
   expectOneLineError(render(dir, "tap.json", R"({"model": "balls", "params": {"particles": {"fill": "none",
                                              "max_particles": 1000}, "tap": {"enabled": true, "max": 5000}}})"),
                      "would make about 5000 balls, but at most 1000 fit (max_particles = 1000)", 1);
+}
+
+// Issue 20: arrays past the storage-block limit run in windows (gl/window.h). With the limit lowered
+// to 256 KiB, 20,000 balls step, check their health, save a checkpoint and draw in water mode in
+// windows of 16,384; the checkpoint must be the one-block run's byte for byte and the frame its
+// picture pixel for pixel (the fragment raster in both: windowed balls are drawn as fragments).
+TEST(GpuLimits, BallsPastOneStorageBlockRunInWindowsAsInOne) {
+  test::TempDir dir;
+  dir.write("box.json", R"({"model": "balls", "params": {
+      "particles": {"radius": 0.005, "domain_min": [0, 0, 0], "domain_max": [0.4, 0.25, 0.5], "fill": "block",
+                    "fill_min": [0, 0, 0], "fill_max": [0.2, 0.25, 0.4]},
+      "engine": {"substeps": 10},
+      "view": {"mode": "water", "raster": "fragment",
+               "camera": {"target": [0.2, 0.12, 0.15], "distance": 1.0, "yaw": -1.15, "pitch": 0.35}}}})");
+  auto bytes = [](const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  std::string checkpoint[2], frame[2];
+  for (int windowed = 0; windowed < 2; ++windowed) {
+    const std::string out = (dir / ("out" + std::to_string(windowed))).string();
+    const auto r = test::runTidepool(
+        {"render", (dir / "box.json").string(), "--frames", "3", "--size", "96x64", "--out", out, "--checkpoint",
+         out + ".ckpt", "--quiet"},
+        windowed ? std::vector<std::string>{"TIDEPOOL_STORAGE_BLOCK_BYTES=262144"} : std::vector<std::string>{});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    checkpoint[windowed] = bytes(out + ".ckpt");
+    frame[windowed] = bytes(std::filesystem::path(out) / "frame_00002.png");
+  }
+  ASSERT_GT(checkpoint[0].size(), 20000u * 32u) << "positions and velocities of every ball";
+  EXPECT_TRUE(checkpoint[0] == checkpoint[1]) << "the windowed run's state differs";
+  ASSERT_FALSE(frame[0].empty());
+  EXPECT_TRUE(frame[0] == frame[1]) << "the windowed run's picture differs";
+}
+
+TEST(GpuLimits, StorageBlockOverrideIsChecked) {
+  test::TempDir dir;
+  const std::vector<std::string> args = render(
+      dir, "small.json", R"({"model": "balls", "params": {"particles": {"fill": "lattice", "lattice_count": 100}}})");
+  expectOneLineError(args, "TIDEPOOL_STORAGE_BLOCK_BYTES = 'abc' is not a byte count", 1,
+                     {"TIDEPOOL_STORAGE_BLOCK_BYTES=abc"});
+  expectOneLineError(args, "TIDEPOOL_STORAGE_BLOCK_BYTES = '-5' is not a byte count", 1,
+                     {"TIDEPOOL_STORAGE_BLOCK_BYTES=-5"});
+  expectOneLineError(args,
+                     "TIDEPOOL_STORAGE_BLOCK_BYTES = 1000 bytes is below the smallest storage-block limit tidepool "
+                     "runs with, 65536 bytes",
+                     1, {"TIDEPOOL_STORAGE_BLOCK_BYTES=1000"});
 }

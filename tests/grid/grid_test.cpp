@@ -14,6 +14,7 @@
 
 #include "base/error.h"
 #include "gl/buffer.h"
+#include "gl/window.h"
 #include "grid/grid.h"
 #include "support/gl_test.h"
 
@@ -429,4 +430,44 @@ TEST(GridBindings, HeaderHoldsOnlyDefinesSharedWithCpp) {
   for (std::string line; std::getline(in, line); ++lines) EXPECT_TRUE(std::regex_match(line, define)) << line;
   EXPECT_GT(lines, 0);
   EXPECT_LE(GRID_REORDER_DST + GRID_REORDER_MAX_ARRAYS, 8) << "GL 4.3 guarantees only 8 SSBO bindings";
+}
+
+// Arrays over one storage block (gl/window.h): with the smallest limit tidepool runs with, 64 KiB,
+// windows hold 4096 vec4s (8192 half pairs), so these counts move in two to four windows per array
+// and every pair of windows; the 4-byte words (16384 at most) stay whole. The results must be the
+// unwindowed ones: the same CPU checks, gather equal to scatter word for word.
+namespace {
+class WindowedGrid : public Grid {
+ protected:
+  void SetUp() override { gl::overrideStorageBlockBytes(gl::kMinStorageBlockBytes); }
+  void TearDown() override { gl::overrideStorageBlockBytes(0); }
+};
+}  // namespace
+
+TEST_F(WindowedGrid, ArraysMoveInWindows) {
+  ASSERT_EQ(gl::windows(15000, 16).size(), 4u);
+  for (ReorderMode mode : {ReorderMode::Scatter, ReorderMode::Gather})
+    for (bool stable : {true, false}) {
+      SCOPED_TRACE(std::string(kReorderModeNames[std::size_t(mode)]) + (stable ? ", stable" : ", atomic order"));
+      GridParams params{.domainMin = {-1, 0, 2}, .domainMax = {3, 2, 3.5f}, .cellSize = 0.25f, .reorder = mode};
+      params.stable = stable;
+      checkGrid(shaders(), params, makePositions(params, 15000, 0.5f, 31));
+    }
+}
+
+TEST_F(WindowedGrid, GatherEqualsScatterAcrossWindows) {
+  const GridParams wide{.domainMin = {-1, 0, 2}, .domainMax = {3, 2, 3.5f}, .cellSize = 0.25f};
+  for (std::size_t n : {4095, 4096, 4097, 8192, 12289, 16384})
+    for (int arrays : {1, 3})
+      for (bool withPermutation : {false, true})
+        expectGatherEqualsScatter(shaders(), wide, n, arrays, withPermutation, 40 + uint32_t(n));
+  const GridParams half{.domainMin = {-8, -4, 0}, .domainMax = {8, 4, 0}, .cellSize = 0.75f, .layout = Layout::Half2};
+  expectGatherEqualsScatter(shaders(), half, 16000, 2, true, 41);
+}
+
+TEST_F(WindowedGrid, WordsOverOneBlockAreRefused) {
+  const GridParams params{.domainMin = {0, 0, 0}, .domainMax = {1, 1, 1}, .cellSize = 0.25f};
+  UniformGrid grid(shaders(), params);
+  gl::Buffer pos(16385 * sizeof(glm::vec4));
+  EXPECT_THROW(grid.build(pos, 16385), Error) << "16385 cells or ranks of 4 bytes pass 64 KiB";
 }

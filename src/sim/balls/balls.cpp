@@ -16,15 +16,6 @@
 namespace tidepool::balls {
 namespace {
 constexpr std::size_t kMaxCheckpointBalls = std::size_t(4) << 20;  // larger runs keep no copy to go back to
-
-std::size_t maxBlockBytes() {
-  static const std::size_t bytes = [] {
-    GLint64 v = 0;
-    glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &v);
-    return std::size_t(v);
-  }();
-  return bytes;
-}
 }  // namespace
 
 Balls::Balls(gl::ShaderLibrary& shaders, const Params& params)
@@ -38,12 +29,13 @@ Balls::Balls(gl::ShaderLibrary& shaders, const Params& params)
 
 // GPU: positions and velocities twice, the accelerations (vec4 each), the permutation, the
 // grid's index in cell, stable members and gather permutation (a word each), with lists their
-// columns. Host: the initial water (vec4) and its lattice (vec3).
+// columns. Host: the initial water (vec4) and its lattice (vec3). The vec4 arrays may pass one
+// storage block (they are bound a window at a time: gl/window.h); the words are bound whole.
 sim::ParticleCost Balls::cost() const {
   const std::size_t listWords =
       m_params.neighbours == Neighbours::Lists ? BALLS_LIST_FIRST + std::size_t(m_params.listCapacity) : 0;
   return {.maxParticles = std::size_t(m_params.maxParticles),
-          .arrayBytes = sizeof(glm::vec4),
+          .arrayBytes = sizeof(GLuint),
           .gpuBytes = 5 * sizeof(glm::vec4) + (4 + listWords) * sizeof(GLuint),
           .hostBytes = sizeof(glm::vec4) + sizeof(glm::vec3)};
 }
@@ -146,9 +138,14 @@ gl::Program& Balls::healthKernel() {
   p.use();
   p.set("uWallMin", m_wallMin);
   p.set("uWallMax", m_wallMax);
-  positions().bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_POS_IN);
-  velocities().bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VEL_IN);
   return p;
+}
+
+std::vector<gl::Window> Balls::healthWindows(std::size_t count) const { return gl::windows(count, sizeof(glm::vec4)); }
+
+void Balls::bindHealthWindow(const gl::Window& w) {
+  gl::bindWindow(positions(), BALLS_POS_IN, w, sizeof(glm::vec4));
+  gl::bindWindow(velocities(), BALLS_VEL_IN, w, sizeof(glm::vec4));
 }
 
 std::optional<std::string> Balls::unhealthy(const sim::DivergenceWatch::Words& w) {
@@ -245,7 +242,7 @@ std::vector<GLuint> Balls::lastOrder() const {
 
 std::size_t Balls::listCapacity() const {
   if (m_params.neighbours != Neighbours::Lists || m_capacity == 0) return 0;
-  const std::size_t words = maxBlockBytes() / sizeof(GLuint);
+  const std::size_t words = gl::storageBlockBytes() / sizeof(GLuint);
   if (words <= BALLS_LIST_CONTROL_WORDS) return 0;
   const std::size_t columns = (words - BALLS_LIST_CONTROL_WORDS) / m_capacity;
   return columns > BALLS_LIST_FIRST ? std::min(std::size_t(m_params.listCapacity), columns - BALLS_LIST_FIRST) : 0;

@@ -26,6 +26,7 @@
 #include "gl/dispatch_gate.h"
 #include "gl/gpu_profiler.h"
 #include "gl/shader_library.h"
+#include "gl/window.h"
 #include "grid/grid.h"
 #include "io/obj.h"
 #include "sim/balls/balls_params.h"
@@ -92,6 +93,8 @@ class Balls final : public sim::Model, public sim::ParticleWater {
   std::vector<glm::vec4> downloadPositions() const { return positions().read<glm::vec4>(m_count); }
   std::vector<glm::vec4> downloadVelocities() const { return velocities().read<glm::vec4>(m_count); }
   void trackOrder(bool on) { m_trackOrder = on; }
+  // Windows the last collide ran in: 1 while the vec4 arrays fit one storage block (gl/window.h).
+  std::size_t collideWindows() const { return m_collideWindows; }
   // Bench and tests: the next step's grid count inside the collide (the default) or as its own pass.
   void countInCollide(bool on) { m_countInCollide = on; }
   // Tests: velocity Verlet's a(x), part of its state (it was evaluated with the half-step velocity).
@@ -110,6 +113,8 @@ class Balls final : public sim::Model, public sim::ParticleWater {
  private:
   // The divergence watch (sim::Model): NaN balls, balls outside the walls, speed above speedBound().
   gl::Program& healthKernel() override;
+  std::vector<gl::Window> healthWindows(std::size_t count) const override;
+  void bindHealthWindow(const gl::Window& w) override;
   std::optional<std::string> unhealthy(const sim::DivergenceWatch::Words& words) override;
   std::string method() const override;
   void resume(const sim::StateStamp& good) override;
@@ -134,6 +139,13 @@ class Balls final : public sim::Model, public sim::ParticleWater {
   void drift(gl::GpuProfiler* profiler);                        // Verlet: v½ = v + dt/2·a, x += dt·v½
   void sortByCell(gl::GpuProfiler* profiler);             // grid count + scan, positions and velocities to cell order
   void collide(gl::GpuProfiler* profiler, Collide what);  // contacts, walls, gravity on the sorted balls
+  // Balls whose vec4 arrays pass one storage block are stepped a window at a time (gl/window.h):
+  // each window of the cell-ordered balls with the window of balls in reach of its cells (read
+  // back: a few words per window). One window of all balls when they fit.
+  struct ReachWindow {
+    gl::Window balls, sources;
+  };
+  std::vector<ReachWindow> reachWindows(const gl::Buffer& sortedPositions) const;
   // Verlet lists: the grid's cells for the parameters (2r, or 2r + skin with lists), the lists'
   // buffer; the gate kernel, then (when it opens) count, scan, permutation and list build.
   void ensureGrid();
@@ -187,6 +199,7 @@ class Balls final : public sim::Model, public sim::ParticleWater {
   gl::BufferOps m_ops;
   bool m_listsStale = true;  // the next gate rebuilds (new balls, a reset, a step without lists)
   bool m_countInCollide = true;
+  std::size_t m_collideWindows = 0;
   CountKey m_countedAhead;
 };
 

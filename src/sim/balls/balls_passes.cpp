@@ -37,6 +37,8 @@ static_assert(offsetof(GroupStats, outside) == BALLS_STATS_OUTSIDE * sizeof(floa
 static_assert(offsetof(GroupStats, front) == BALLS_STATS_FRONT * sizeof(float));
 static_assert(offsetof(GroupStats, backHeight) == BALLS_STATS_BACK_HEIGHT * sizeof(float));
 
+constexpr std::size_t kVec4 = sizeof(glm::vec4);
+
 gl::GpuProfiler::Scope timed(gl::GpuProfiler* profiler, const char* name) {
   return profiler ? profiler->scope(name) : gl::GpuProfiler::Scope(nullptr);
 }
@@ -134,10 +136,14 @@ void Balls::drift(gl::GpuProfiler* profiler) {
   const bool lists = listsActive();
   gl::Program& p = useKernel("balls/drift.comp", false, lists);
   if (lists) bindLists(p);
-  m_pos[m_posIndex].bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_POS_OUT);
-  m_vel[m_velIndex].bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VEL_OUT);
-  m_acc.bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_ACC);
-  p.dispatchThreads(m_count);
+  for (const gl::Window& w : gl::windows(m_count, kVec4)) {
+    gl::bindWindow(m_pos[m_posIndex], BALLS_POS_OUT, w, kVec4);
+    gl::bindWindow(m_vel[m_velIndex], BALLS_VEL_OUT, w, kVec4);
+    gl::bindWindow(m_acc, BALLS_ACC, w, kVec4);
+    p.set("uFirst", GLuint(w.first));
+    p.set("uCount", GLuint(w.end()));
+    p.dispatchThreads(w.count);
+  }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
@@ -167,6 +173,9 @@ void Balls::collide(gl::GpuProfiler* profiler, Collide what) {
   const bool countCells = countsInCollide(what);
   m_countedAhead = {};                            // set again below when this pass counts
   if (countCells) m_grid->prepareCount(m_count);  // its fill binds and runs a kernel of its own: first
+  // Read back before the kernel's bindings: one window of all balls when they fit one block.
+  const std::vector<ReachWindow> windows = lists ? std::vector<ReachWindow>{} : reachWindows(m_pos[1 - p]);
+  m_collideWindows = lists ? 1 : windows.size();
   gl::Program& collide = useKernel("balls/collide.comp", verlet, lists, countCells);
   if (lists) {  // the balls in place: read the current buffers, write the others
     bindLists(collide);
@@ -181,26 +190,34 @@ void Balls::collide(gl::GpuProfiler* profiler, Collide what) {
       m_pos[1 - p].bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_POS_OUT);
       m_posIndex = 1 - p;
     }
+    collide.set("uFirst", 0u);  // lists fit one storage block (listCapacity())
+    collide.set("uSourceFirst", 0u);
     collide.dispatchThreads(m_count);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     return;
   }
-  m_pos[1 - p].bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_POS_IN);  // the cell-ordered copies
-  m_vel[1 - v].bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VEL_IN);
-  m_vel[v].bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VEL_OUT);
+  // The cell-ordered copies in, the others out; a window at a time when they pass one storage block.
+  const gl::Buffer &posIn = m_pos[1 - p], &velIn = m_vel[1 - v], &velOut = m_vel[v];
+  const gl::Buffer& stepOut = verlet ? m_acc : m_pos[p];
   if (verlet) {
     collide.set("uKick", what == Collide::VerletKick ? 0.5f : 0.0f);
-    m_acc.bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_ACC);
     m_posIndex = 1 - p;  // positions stay in cell order; velocities come back to v
-  } else {
-    m_pos[p].bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_POS_OUT);
   }
   if (countCells) {  // the counts for the next step's grid, at the positions written here
     m_grid->cellCount().bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_NEXT_CELL_COUNT);
     m_grid->indexInCell().bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_NEXT_INDEX_IN_CELL);
     m_grid->particleCell().bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_NEXT_PARTICLE_CELL);
   }
-  collide.dispatchThreads(m_count);
+  for (const ReachWindow& w : windows) {
+    gl::bindWindow(posIn, BALLS_POS_IN, w.sources, kVec4);
+    gl::bindWindow(velIn, BALLS_VEL_IN, w.sources, kVec4);
+    gl::bindWindow(velOut, BALLS_VEL_OUT, w.balls, kVec4);
+    gl::bindWindow(stepOut, verlet ? BALLS_ACC : BALLS_POS_OUT, w.balls, kVec4);
+    collide.set("uFirst", GLuint(w.balls.first));
+    collide.set("uCount", GLuint(w.balls.end()));
+    collide.set("uSourceFirst", GLuint(w.sources.first));
+    collide.dispatchThreads(w.balls.count);
+  }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   if (countCells) m_countedAhead = countKey();
 }
@@ -307,12 +324,21 @@ Stats Balls::stats() {
   m_countedAhead = {};  // the reorder below ranks over the slots
   m_grid->build(m_pos[p], m_count);
   m_grid->reorder(m_pos[p], {{&m_pos[p], &m_pos[1 - p]}, {&m_vel[v], &m_vel[1 - v]}});
+  const std::vector<ReachWindow> windows = reachWindows(m_pos[1 - p]);  // before the kernel's bindings
   gl::Program& prog = useKernel("balls/stats.comp", false);
   prog.set("uDomainMin", m_params.domainMin);
-  m_pos[1 - p].bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_POS_IN);
-  m_vel[1 - v].bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VEL_IN);
-  m_stats.bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_STATS);
-  prog.dispatchThreads(m_count);
+  constexpr std::size_t kGroupBytes = sizeof(GroupStats);
+  for (const ReachWindow& w : windows) {  // the partials of each window's groups from its first group on
+    gl::bindWindow(m_pos[1 - p], BALLS_POS_IN, w.sources, kVec4);
+    gl::bindWindow(m_vel[1 - v], BALLS_VEL_IN, w.sources, kVec4);
+    const std::size_t firstGroup = w.balls.first / BALLS_GROUP_SIZE;
+    const std::size_t groups = (w.balls.count + BALLS_GROUP_SIZE - 1) / BALLS_GROUP_SIZE;
+    m_stats.bindRange(GL_SHADER_STORAGE_BUFFER, BALLS_STATS, firstGroup * kGroupBytes, groups * kGroupBytes);
+    prog.set("uFirst", GLuint(w.balls.first));
+    prog.set("uCount", GLuint(w.balls.end()));
+    prog.set("uSourceFirst", GLuint(w.sources.first));
+    prog.dispatchThreads(w.balls.count);
+  }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   const std::size_t groups = (m_count + BALLS_GROUP_SIZE - 1) / BALLS_GROUP_SIZE;
   double front = -1e30, height = -1e30;
