@@ -112,13 +112,15 @@ StepWindow parseStepWindow(const std::string& text) {
   return {std::stoi(m[1]), std::stoi(m[2])};
 }
 
-PassTimes timePasses(int warmup, int timed, const std::function<void(gl::GpuProfiler&)>& frame) {
-  const bool software = softwareRenderer();  // its timer queries do not measure: time whole frames
+PassTimes timePasses(int warmup, int timed, const std::function<void(gl::GpuProfiler&)>& frame, bool wallClock) {
+  const bool software = wallClock || softwareRenderer();  // timer queries that do not measure: time whole frames
   gl::GpuProfiler profiler;
   PassTimes t;
+  std::chrono::steady_clock::time_point windowStart;
   for (int i = 0; i < warmup + timed; ++i) {
-    if (software) glFinish();
+    if (software || i == warmup) glFinish();
     const auto start = std::chrono::steady_clock::now();
+    if (i == warmup) windowStart = start;
     profiler.beginFrame();
     frame(profiler);
     profiler.endFrame();
@@ -132,6 +134,10 @@ PassTimes timePasses(int warmup, int timed, const std::function<void(gl::GpuProf
       profiler.takeCompleted();  // warm-up frames are not timed
     }
   }
+  glFinish();
+  if (timed > 0)
+    t.sustainedMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - windowStart).count() / timed;
   profiler.finish();
   for (const auto& f : profiler.takeCompleted()) {
     double total = 0;

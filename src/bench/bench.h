@@ -78,11 +78,15 @@ struct PassTimes {
   std::map<std::string, std::vector<double>> passes;  // GPU ms per timed frame, by scope name (summed within a frame)
   std::vector<double> totals;                         // the scopes' sum per timed frame
   std::vector<double> wall;                           // ms around glFinish per timed frame, on a software renderer only
+  double sustainedMs = 0;  // wall clock of all timed frames back to back (glFinish before and after) / frames
   bool has(const std::string& pass) const { return passes.count(pass) > 0; }
   double median(const std::string& pass) const;  // 0 when the pass never ran
   double frameMs() const;                        // median frame: wall clock on software, else GPU
 };
-PassTimes timePasses(int warmup, int timed, const std::function<void(gl::GpuProfiler&)>& frame);
+// wallClock: time whole frames around glFinish, as on a software renderer, for frames that wait
+// on the GPU part-way (a read-back): GL_TIME_ELAPSED across such a wait misses part of the frame
+// (docs/PERFORMANCE.md §16).
+PassTimes timePasses(int warmup, int timed, const std::function<void(gl::GpuProfiler&)>& frame, bool wallClock = false);
 
 // Keeps the GPU busy with buffer copies for about `ms` of wall-clock time. GPUs lower their clocks
 // when idle, and a few warm-up repeats of a sub-millisecond kernel do not bring them back: on the

@@ -140,12 +140,14 @@ class Balls final : public sim::Model, public sim::ParticleWater {
   void sortByCell(gl::GpuProfiler* profiler);             // grid count + scan, positions and velocities to cell order
   void collide(gl::GpuProfiler* profiler, Collide what);  // contacts, walls, gravity on the sorted balls
   // Balls whose vec4 arrays pass one storage block are stepped a window at a time (gl/window.h):
-  // each window of the cell-ordered balls with the window of balls in reach of its cells (read
-  // back: a few words per window). One window of all balls when they fit.
+  // each window of the cell-ordered balls with the window of balls in reach of its cells, which a
+  // kernel finds from the grid's cellStart right after the scan (planReachWindows) and the collide
+  // reads back (reachWindows: two words per window). One window of all balls when they fit.
   struct ReachWindow {
     gl::Window balls, sources;
   };
-  std::vector<ReachWindow> reachWindows(const gl::Buffer& sortedPositions) const;
+  void planReachWindows(std::size_t windowSize = 0);  // 0: half a storage block of balls
+  std::vector<ReachWindow> reachWindows();
   // Verlet lists: the grid's cells for the parameters (2r, or 2r + skin with lists), the lists'
   // buffer; the gate kernel, then (when it opens) count, scan, permutation and list build.
   void ensureGrid();
@@ -200,6 +202,9 @@ class Balls final : public sim::Model, public sim::ParticleWater {
   bool m_listsStale = true;  // the next gate rebuilds (new balls, a reset, a step without lists)
   bool m_countInCollide = true;
   std::size_t m_collideWindows = 0;
+  gl::Buffer m_reachBounds;      // uvec2 per window (balls/reach_windows.comp)
+  std::size_t m_reachSize = 0;   // balls per window of the plan in m_reachBounds; 0: none planned
+  std::size_t m_reachCount = 0;  // balls when it was planned
   CountKey m_countedAhead;
 };
 

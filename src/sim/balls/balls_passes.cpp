@@ -158,6 +158,7 @@ void Balls::sortByCell(gl::GpuProfiler* profiler) {
     auto scope = timed(profiler, "balls.scan");
     m_grid->scanCells();
   }
+  planReachWindows();  // balls over one storage block: the collide's windows, read back after the reorder
   auto scope = timed(profiler, "balls.reorder");
   m_grid->setReorderMode(m_params.gridReorder);  // may change while running
   m_grid->setStable(m_params.deterministic);
@@ -174,7 +175,7 @@ void Balls::collide(gl::GpuProfiler* profiler, Collide what) {
   m_countedAhead = {};                            // set again below when this pass counts
   if (countCells) m_grid->prepareCount(m_count);  // its fill binds and runs a kernel of its own: first
   // Read back before the kernel's bindings: one window of all balls when they fit one block.
-  const std::vector<ReachWindow> windows = lists ? std::vector<ReachWindow>{} : reachWindows(m_pos[1 - p]);
+  const std::vector<ReachWindow> windows = lists ? std::vector<ReachWindow>{} : reachWindows();
   m_collideWindows = lists ? 1 : windows.size();
   gl::Program& collide = useKernel("balls/collide.comp", verlet, lists, countCells);
   if (lists) {  // the balls in place: read the current buffers, write the others
@@ -323,8 +324,9 @@ Stats Balls::stats() {
   const int p = m_posIndex, v = m_velIndex;
   m_countedAhead = {};  // the reorder below ranks over the slots
   m_grid->build(m_pos[p], m_count);
+  planReachWindows();
   m_grid->reorder(m_pos[p], {{&m_pos[p], &m_pos[1 - p]}, {&m_vel[v], &m_vel[1 - v]}});
-  const std::vector<ReachWindow> windows = reachWindows(m_pos[1 - p]);  // before the kernel's bindings
+  const std::vector<ReachWindow> windows = reachWindows();  // before the kernel's bindings
   gl::Program& prog = useKernel("balls/stats.comp", false);
   prog.set("uDomainMin", m_params.domainMin);
   constexpr std::size_t kGroupBytes = sizeof(GroupStats);

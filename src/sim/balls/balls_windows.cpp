@@ -3,53 +3,75 @@
 // [c0, c1], and every ball they can touch lies in the cells from c0 - reach to c1 + reach, where
 // reach (a plane, a row and a cell) is the farthest of the 27 cells around a ball in the grid's
 // numbering: the window of inputs runs from cellStart[c0 - reach] to cellStart[c1 + reach + 1].
-// A window whose inputs would pass the limit is halved until they fit.
+// balls/reach_windows.comp finds those bounds on the GPU after the scan; the collide reads them
+// back, one read per step. When some window's inputs would pass the limit, all windows are halved
+// and planned again.
 #include <algorithm>
 
+#include "balls/bindings.glsl"
 #include "base/error.h"
 #include "sim/balls/balls.h"
 
 namespace tidepool::balls {
+namespace {
+constexpr std::size_t kVec4 = sizeof(glm::vec4);
 
-std::vector<Balls::ReachWindow> Balls::reachWindows(const gl::Buffer& sortedPositions) const {
-  constexpr std::size_t kVec4 = sizeof(glm::vec4);
-  if (!gl::needsWindows(m_count, kVec4)) return {{{0, m_count}, {0, m_count}}};
+// Half a storage block of balls per window leaves the other half to the cells around them.
+std::size_t firstWindowSize() {
+  return std::max(gl::kWindowGrain, gl::windowElements(kVec4) / 2 / gl::kWindowGrain * gl::kWindowGrain);
+}
+bool windowed(std::size_t count) { return gl::needsWindows(count, kVec4); }
+}  // namespace
+
+void Balls::planReachWindows(std::size_t windowSize) {
+  m_reachSize = 0;
+  if (!windowed(m_count)) return;
+  if (windowSize == 0) windowSize = firstWindowSize();
+  const std::size_t windows = (m_count + windowSize - 1) / windowSize;
+  if (m_reachBounds.size() < windows * sizeof(glm::uvec2)) m_reachBounds = gl::Buffer(windows * sizeof(glm::uvec2));
+  const glm::uvec3 dims = m_grid->dims();
+  gl::Program& plan = m_shaders.program({"balls/reach_windows.comp"});
+  plan.use();
+  plan.set("uWindows", GLuint(windows));
+  plan.set("uWindowSize", GLuint(windowSize));
+  plan.set("uCount", GLuint(m_count));
+  plan.set("uCells", GLuint(m_grid->cells()));
+  plan.set("uReach", GLuint(dims.x * dims.y + dims.x + 1));
+  m_grid->cellStart().bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_CELL_START);
+  m_reachBounds.bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_REACH_BOUNDS);
+  plan.dispatchThreads(windows);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  m_reachSize = windowSize;
+  m_reachCount = m_count;
+}
+
+std::vector<Balls::ReachWindow> Balls::reachWindows() {
+  if (!windowed(m_count)) return {{{0, m_count}, {0, m_count}}};
   const std::size_t limit = gl::windowElements(kVec4);
-  const grid::reference::GridShape& shape = m_grid->shape();
-  const std::size_t reach = std::size_t(shape.dims.x) * shape.dims.y + shape.dims.x + 1;
-  const std::size_t cells = m_grid->cells();
-  // Half a block of balls per window leaves the other half to the cells around them.
-  const std::size_t half = std::max(gl::kWindowGrain, limit / 2 / gl::kWindowGrain * gl::kWindowGrain);
-  std::vector<gl::Window> todo;
-  for (std::size_t first = 0; first < m_count; first += half) todo.push_back({first, std::min(half, m_count - first)});
-  std::reverse(todo.begin(), todo.end());
-  std::vector<ReachWindow> out;
-  while (!todo.empty()) {
-    const gl::Window w = todo.back();
-    todo.pop_back();
-    const glm::vec4 a = sortedPositions.read<glm::vec4>(1, w.first)[0];
-    const glm::vec4 b = sortedPositions.read<glm::vec4>(1, w.end() - 1)[0];
-    const std::size_t c0 = grid::reference::cellOf(shape, glm::vec3(a));
-    const std::size_t c1 = grid::reference::cellOf(shape, glm::vec3(b));
-    const std::size_t lo = c0 > reach ? c0 - reach : 0, hi = std::min(c1 + reach + 1, cells);
-    const std::size_t from = m_grid->cellStart().read<GLuint>(1, lo)[0];
-    const std::size_t to = m_grid->cellStart().read<GLuint>(1, hi)[0];
-    const gl::Window sources = gl::alignedWindow(std::min(from, w.first), std::max(to, w.end()), kVec4);
-    if (sources.count <= limit) {
-      out.push_back({w, sources});
-      continue;
+  if (m_reachSize == 0 || m_reachCount != m_count) planReachWindows();
+  for (;;) {
+    const std::size_t size = m_reachSize, windows = (m_count + size - 1) / size;
+    const std::vector<glm::uvec2> bounds = m_reachBounds.read<glm::uvec2>(windows);
+    std::vector<ReachWindow> out;
+    std::size_t widest = 0;
+    for (std::size_t k = 0; k < windows; ++k) {
+      const gl::Window balls{k * size, std::min(size, m_count - k * size)};
+      const gl::Window sources = gl::alignedWindow(std::min<std::size_t>(bounds[k].x, balls.first),
+                                                   std::max<std::size_t>(bounds[k].y, balls.end()), kVec4);
+      widest = std::max(widest, sources.count);
+      out.push_back({balls, sources});
     }
-    if (w.count <= gl::kWindowGrain)
-      throw Error("balls: the " + std::to_string(sources.count) + " balls within reach of balls " +
-                  std::to_string(w.first) + ".." + std::to_string(w.end() - 1) +
-                  " (two planes of the grid's cells) pass the storage-block limit of " + std::to_string(limit) +
-                  " balls (" + gl::sizeText(gl::storageBlockBytes()) +
+    if (widest <= limit) {
+      m_reachSize = 0;  // used: the next grid plans again
+      return out;
+    }
+    if (size <= gl::kWindowGrain)
+      throw Error("balls: " + std::to_string(widest) + " balls lie within reach of a window of " +
+                  std::to_string(size) + " (two planes of the grid's cells), over the storage-block limit of " +
+                  std::to_string(limit) + " balls (" + gl::sizeText(gl::storageBlockBytes()) +
                   " per array): raise particles.radius or narrow the domain in x and y");
-    const std::size_t split = (w.count / 2 + gl::kWindowGrain - 1) / gl::kWindowGrain * gl::kWindowGrain;
-    todo.push_back({w.first + split, w.count - split});
-    todo.push_back({w.first, split});
+    planReachWindows(std::max(gl::kWindowGrain, size / 2 / gl::kWindowGrain * gl::kWindowGrain));
   }
-  return out;
 }
 
 }  // namespace tidepool::balls

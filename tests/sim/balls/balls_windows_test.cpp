@@ -110,7 +110,7 @@ TEST_F(BallsWindows, NeighboursPastOneWindowAreRefused) {
     FAIL() << "expected an error";
   } catch (const Error& e) {
     const std::string what = e.what();
-    EXPECT_NE(what.find("pass the storage-block limit of 16384 balls"), std::string::npos) << what;
+    EXPECT_NE(what.find("over the storage-block limit of 16384 balls"), std::string::npos) << what;
     EXPECT_NE(what.find("raise particles.radius"), std::string::npos) << what;
   }
 }
