@@ -79,9 +79,11 @@ struct Params {
   int substeps = 8;                       // steps per frame
   glm::vec3 gravity{0.0f, 0.0f, -9.81f};  // m/s^2 in the unrotated domain
   float damping = 0.0f;                   // 1/s: v *= exp(-damping dt)
-  // How each step's grid moves the balls; gather is 4% faster per step at 4M-16M on the H100
-  // (docs/PERFORMANCE.md §4) and equal at 1M.
-  grid::ReorderMode gridReorder = grid::ReorderMode::Gather;
+  // How each step's grid moves the balls (the same result either way). By the wall clock of steps
+  // queued back to back the stable scatter (rank and move in one pass) is 1-4% faster than the
+  // gather on the H100 at 0.7M-16M balls (docs/PERFORMANCE.md §16); the GL timers, which over-count
+  // queued steps, had favoured the gather (§4).
+  grid::ReorderMode gridReorder = grid::ReorderMode::Scatter;
   // Reproducible runs: the grid orders each cell's balls by index (grid/grid.h, GridParams::stable),
   // so every step sums contacts in the same order and a run is bit-identical on the same GPU.
   bool deterministic = true;
