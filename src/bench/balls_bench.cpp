@@ -1,10 +1,12 @@
 // `tidepool bench balls <scene> --n 65536,... --steps 10:310`: median GPU ms per step over a
-// window of steps, split by pass, with steps per second and GPU bytes per ball. --n sets the
-// ball count of lattice scenes (bench-lattice); other scenes run as they are. --reorder
-// scatter,gather runs each size once per grid reorder mode (the scene's grid_reorder otherwise),
+// window of steps (GL_TIMESTAMP between steps, as CUDA events time the sample's; its mean beside
+// it, and the wall clock of the window), split by pass (GL_TIME_ELAPSED), with steps per second and GPU bytes per ball.
+// --n sets the ball count of lattice scenes (bench-lattice); other scenes run as they are. --reorder scatter,gather
+// runs each size once per grid reorder mode (the scene's grid_reorder otherwise),
 // --deterministic on,off once per grid order (stable: bit-identical runs; the scene's otherwise),
 // --neighbours grid,lists once per neighbour search, --skin 0.2,0.4 once per list skin (lists),
-// --count pass,collide once per place of the grid's count (its own pass, or in the collide).
+// --count pass,collide once per place of the grid's count (its own pass, or in the collide);
+// --timers queued,isolated,off once per way of clocking the passes (bench.h, Timers).
 #include <algorithm>
 #include <array>
 #include <cstdio>
@@ -31,7 +33,7 @@ std::vector<float> parseSkins(const std::string& text) {
 
 struct Options {
   std::string scene = "bench-lattice", sizes = "65536,1M,4M,16M", window = "10:310", reorder, deterministic, neighbours,
-              skin, count;
+              skin, count, timers;
   bool wall = false;  // every row timed by the wall clock around glFinish
 };
 
@@ -39,6 +41,7 @@ struct Options {
 struct Variant {
   balls::Params params;
   bool countInCollide = true;
+  Timers timers = Timers::Queued;
 };
 
 std::vector<Variant> variants(const Options& o, const balls::Params& base) {
@@ -54,21 +57,24 @@ std::vector<Variant> variants(const Options& o, const balls::Params& base) {
   static constexpr std::array<const char*, 2> kCountNames = {"pass", "collide"};
   const std::vector<int> countIn =
       o.count.empty() ? std::vector<int>{1} : parseChoices<int>(o.count, kCountNames, "--count");
+  const std::vector<Timers> clocks =
+      o.timers.empty() ? std::vector<Timers>{Timers::Queued} : parseChoices<Timers>(o.timers, kTimersNames, "--timers");
   std::vector<Variant> out;
   for (std::size_t n : lattice ? parseSizes(o.sizes) : std::vector<std::size_t>{0})
     for (grid::ReorderMode mode : modes)
       for (bool stable : orders)
         for (balls::Neighbours search : searches)
           for (float skin : search == balls::Neighbours::Lists ? skins : std::vector<float>{base.skin})
-            for (int fused : countIn) {
-              Variant v{base, fused == 1};
-              v.params.deterministic = stable;
-              if (lattice) v.params.latticeCount = int(n);
-              v.params.gridReorder = mode;
-              v.params.neighbours = search;
-              v.params.skin = skin;
-              out.push_back(v);
-            }
+            for (int fused : countIn)
+              for (Timers clock : clocks) {
+                Variant v{base, fused == 1, clock};
+                v.params.deterministic = stable;
+                if (lattice) v.params.latticeCount = int(n);
+                v.params.gridReorder = mode;
+                v.params.neighbours = search;
+                v.params.skin = skin;
+                out.push_back(v);
+              }
   return out;
 }
 
@@ -79,9 +85,10 @@ int run(Env& env, const Options& o) {
   const std::vector<Variant> rows = variants(o, base);
   std::printf("balls benchmark on %s: scene %s, steps %d..%d, medians per step\n", env.device.c_str(),
               scene.name.c_str(), w.first, w.last);
-  Table table({"balls",    "r",       "cells",       "reorder",    "determ.",  "search",     "count in",
-               "count ms", "scan ms", "reorder ms",  "lists ms",   "drift ms", "collide ms", "obstacles ms",
-               "ms/step",  "steps/s", "steps/build", "bytes/ball", "windows",  "clock",      "sustained ms"});
+  Table table({"balls",    "r",           "cells",       "reorder",    "determ.",  "search",     "count in",
+               "count ms", "scan ms",     "reorder ms",  "lists ms",   "drift ms", "collide ms", "obstacles ms",
+               "ms/step",  "steps/s",     "steps/build", "bytes/ball", "windows",  "clock",      "timers",
+               "mean ms",  "sustained ms"});
   for (const Variant& v : rows) {
     const balls::Params& p = v.params;
     balls::Balls model(env.shaders, p);
@@ -90,7 +97,7 @@ int run(Env& env, const Options& o) {
     // timed by the wall clock (as --wall times every row).
     const bool wall = o.wall || gl::needsWindows(model.count(), sizeof(glm::vec4));
     const PassTimes t = timePasses(
-        w.first, w.last - w.first, [&](gl::GpuProfiler& prof) { model.stepOnce(&prof); }, wall);
+        w.first, w.last - w.first, [&](gl::GpuProfiler& prof) { model.stepOnce(&prof); }, wall, v.timers);
     const double perStep = t.frameMs();
     // Lists: the gate's section (count, scan, permutation, build) is timed as "balls.lists";
     // steps per build over the whole run.
@@ -119,7 +126,11 @@ int run(Env& env, const Options& o) {
                perBuild,
                std::to_string(model.bytesPerBall()),
                std::to_string(model.collideWindows()),
-               wall ? "wall" : "gpu",
+               !t.wall.empty()    ? "wall"
+               : t.stream.empty() ? "gpu"
+                                  : "stream",
+               kTimersNames[std::size_t(v.timers)],
+               fixed(t.streamMeanMs(), 4),
                fixed(t.sustainedMs, 4)});
   }
   return finish(env, table, "; its per-pass timer queries read 0");
@@ -144,6 +155,10 @@ Benchmark addBallsBench(CLI::App& bench) {
   sub->add_option("--count", o->count,
                   "where the grid counts the balls, one row each: collide (in the collide's write, the default "
                   "without obstacles and lists) or pass (a count pass), e.g. pass,collide");
+  sub->add_option(
+      "--timers", o->timers,
+      "how the passes are clocked, one row each: queued (timer queries, steps back to back), isolated "
+      "(a glFinish before each pass: its own time) or off (no queries: ms/step is the sustained wall clock)");
   return {sub, [o](Env& env) { return run(env, *o); }};
 }
 

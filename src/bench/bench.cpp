@@ -102,7 +102,17 @@ double PassTimes::median(const std::string& pass) const {
   return it == passes.end() ? 0.0 : bench::median(it->second);
 }
 
-double PassTimes::frameMs() const { return bench::median(wall.empty() ? totals : wall); }
+double PassTimes::frameMs() const {
+  if (!wall.empty()) return bench::median(wall);
+  if (!stream.empty()) return bench::median(stream);
+  return totals.empty() ? sustainedMs : bench::median(totals);
+}
+
+double PassTimes::streamMeanMs() const {
+  double sum = 0;
+  for (double ms : stream) sum += ms;
+  return stream.empty() ? 0.0 : sum / double(stream.size());
+}
 
 StepWindow parseStepWindow(const std::string& text) {
   static const std::regex form(R"((\d+):(\d+))");
@@ -112,15 +122,26 @@ StepWindow parseStepWindow(const std::string& text) {
   return {std::stoi(m[1]), std::stoi(m[2])};
 }
 
-PassTimes timePasses(int warmup, int timed, const std::function<void(gl::GpuProfiler&)>& frame, bool wallClock) {
+PassTimes timePasses(int warmup, int timed, const std::function<void(gl::GpuProfiler&)>& frame, bool wallClock,
+                     Timers timers) {
   const bool software = wallClock || softwareRenderer();  // timer queries that do not measure: time whole frames
   gl::GpuProfiler profiler;
+  profiler.setEnabled(timers != Timers::Off);
+  profiler.setIsolated(timers == Timers::Isolated);
   PassTimes t;
   std::chrono::steady_clock::time_point windowStart;
+  // A timestamp before each timed frame and one after the last (not on software: it does not measure).
+  std::vector<gl::Query> marks;
+  auto mark = [&] {
+    if (softwareRenderer()) return;
+    marks.push_back(gl::Query::create());
+    glQueryCounter(marks.back().id(), GL_TIMESTAMP);
+  };
   for (int i = 0; i < warmup + timed; ++i) {
     if (software || i == warmup) glFinish();
     const auto start = std::chrono::steady_clock::now();
     if (i == warmup) windowStart = start;
+    if (i >= warmup) mark();
     profiler.beginFrame();
     frame(profiler);
     profiler.endFrame();
@@ -134,7 +155,14 @@ PassTimes timePasses(int warmup, int timed, const std::function<void(gl::GpuProf
       profiler.takeCompleted();  // warm-up frames are not timed
     }
   }
+  if (timed > 0) mark();
   glFinish();
+  for (std::size_t k = 1; k < marks.size(); ++k) {
+    GLuint64 before = 0, after = 0;
+    glGetQueryObjectui64v(marks[k - 1].id(), GL_QUERY_RESULT, &before);
+    glGetQueryObjectui64v(marks[k].id(), GL_QUERY_RESULT, &after);
+    t.stream.push_back(double(after - before) * 1e-6);
+  }
   if (timed > 0)
     t.sustainedMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - windowStart).count() / timed;

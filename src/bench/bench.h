@@ -74,19 +74,33 @@ double gpuMedianMs(const Common& common, const std::function<void()>& work);
 
 // Per-pass times of a run of profiled frames (balls steps, renderer frames): `frame` is called
 // warmup + timed times, each inside one GpuProfiler frame; the warm-up frames are not kept.
+// How the passes of a timed frame are clocked: GL_TIME_ELAPSED around each with the frames queued
+// back to back (what the UI shows; on the H100 a pass's time then includes its wait behind the
+// passes before it), the same with a glFinish before each pass (each pass's own time), or no
+// timer queries at all (the frame's time is then the wall clock of the window).
+enum class Timers { Queued, Isolated, Off };
+inline constexpr std::array<const char*, 3> kTimersNames = {"queued", "isolated", "off"};
+
 struct PassTimes {
   std::map<std::string, std::vector<double>> passes;  // GPU ms per timed frame, by scope name (summed within a frame)
   std::vector<double> totals;                         // the scopes' sum per timed frame
   std::vector<double> wall;                           // ms around glFinish per timed frame, on a software renderer only
+  // GPU time from one frame's start to the next's, by GL_TIMESTAMP queries between the frames (the
+  // GPU writes each when every command before it has completed): what CUDA events around each
+  // step measure. Empty on a software renderer. Its sum is the window's time on the GPU.
+  std::vector<double> stream;
   double sustainedMs = 0;  // wall clock of all timed frames back to back (glFinish before and after) / frames
   bool has(const std::string& pass) const { return passes.count(pass) > 0; }
   double median(const std::string& pass) const;  // 0 when the pass never ran
-  double frameMs() const;                        // median frame: wall clock on software, else GPU
+  // Median frame: the wall clock on software or with wallClock, else the stream clock.
+  double frameMs() const;
+  double streamMeanMs() const;  // 0 without the stream clock
 };
 // wallClock: time whole frames around glFinish, as on a software renderer, for frames that wait
 // on the GPU part-way (a read-back): GL_TIME_ELAPSED across such a wait misses part of the frame
 // (docs/PERFORMANCE.md §16).
-PassTimes timePasses(int warmup, int timed, const std::function<void(gl::GpuProfiler&)>& frame, bool wallClock = false);
+PassTimes timePasses(int warmup, int timed, const std::function<void(gl::GpuProfiler&)>& frame, bool wallClock = false,
+                     Timers timers = Timers::Queued);
 
 // Keeps the GPU busy with buffer copies for about `ms` of wall-clock time. GPUs lower their clocks
 // when idle, and a few warm-up repeats of a sub-millisecond kernel do not bring them back: on the

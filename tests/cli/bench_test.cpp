@@ -96,6 +96,19 @@ TEST(Bench, BallsRunsEachSizeInEachReorderMode) {
                      "--reorder 'scatterr' is not scatter or gather");
 }
 
+TEST(Bench, BallsClocksThePassesEachWay) {
+  test::TempDir dir;
+  auto r = runTidepool({"bench", "balls", "bench-lattice", "--n", "4096", "--steps", "1:3", "--timers",
+                        "queued,isolated,off", "--csv", (dir / "balls.csv").string()});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::string csv = io::readTextFile(dir / "balls.csv");
+  EXPECT_NE(csv.find("mean ms"), std::string::npos) << csv;
+  for (const char* row : {",queued,", ",isolated,", ",off,"})
+    EXPECT_NE(csv.find(row), std::string::npos) << row << "\n" << csv;
+  expectOneLineError({"bench", "balls", "bench-lattice", "--n", "4096", "--timers", "queued,never"},
+                     "--timers 'never' is not");
+}
+
 TEST(Bench, BallsRunsTheGridAndVerletListsAtEachSkin) {
   test::TempDir dir;
   auto r = runTidepool({"bench", "balls", "bench-lattice", "--n", "4096", "--steps", "1:4", "--neighbours",
