@@ -27,16 +27,18 @@ Balls::Balls(gl::ShaderLibrary& shaders, const Params& params)
   reset();
 }
 
-// GPU: positions and velocities twice, the accelerations (vec4 each), the permutation, the
-// grid's index in cell, stable members and gather permutation (a word each), with lists their
-// columns. Host: the initial water (vec4) and its lattice (vec3). The vec4 arrays may pass one
-// storage block (they are bound a window at a time: gl/window.h); the words are bound whole.
+// GPU: positions and velocities twice (vec4 each), with velocity Verlet the accelerations, the
+// grid's cell, index in cell, stable members and gather permutation (a word each), with lists
+// their columns and the balls' permutation. Host: the initial water (vec4) and its lattice (vec3). The vec4 arrays may
+// pass one storage block (they are bound a window at a time: gl/window.h); the words are bound whole.
 sim::ParticleCost Balls::cost() const {
   const std::size_t listWords =
       m_params.neighbours == Neighbours::Lists ? BALLS_LIST_FIRST + std::size_t(m_params.listCapacity) : 0;
+  const bool verlet = m_params.integrator == Integrator::VelocityVerlet;
+  const std::size_t permutationWords = m_params.neighbours == Neighbours::Lists ? 1 : 0;
   return {.maxParticles = std::size_t(m_params.maxParticles),
           .arrayBytes = sizeof(GLuint),
-          .gpuBytes = 5 * sizeof(glm::vec4) + (4 + listWords) * sizeof(GLuint),
+          .gpuBytes = (verlet ? 5 : 4) * sizeof(glm::vec4) + (4 + permutationWords + listWords) * sizeof(GLuint),
           .hostBytes = sizeof(glm::vec4) + sizeof(glm::vec3)};
 }
 
@@ -50,8 +52,9 @@ void Balls::allocate(std::size_t count, std::size_t capacity) {
     m_pos[k] = gl::Buffer(bytes);
     m_vel[k] = gl::Buffer(bytes);
   }
-  m_acc = gl::Buffer(bytes);
-  m_permutation = gl::Buffer(std::max<std::size_t>(capacity, 1) * sizeof(GLuint));
+  m_acc = gl::Buffer();  // accelerations(), permutation(): when needed
+  m_accValid = false;
+  m_permutation = gl::Buffer();
   m_stats = gl::Buffer(((capacity + BALLS_GROUP_SIZE - 1) / BALLS_GROUP_SIZE + 1) * BALLS_STATS_VALUES * sizeof(float));
   m_capacity = capacity;
 }
@@ -76,7 +79,7 @@ void Balls::reset() {
   restartWatch();
   m_pos[0].upload(water.data(), water.size() * sizeof(glm::vec4));
   m_vel[0].fillZero();
-  m_acc.fillZero();
+  if (m_acc.size()) m_acc.fillZero();
   m_posIndex = m_velIndex = 0;
   m_time = 0;
   m_accValid = false;
@@ -97,8 +100,10 @@ void Balls::emitFromTap() {
   const std::size_t at = m_count * sizeof(glm::vec4), bytes = layer.pos.size() * sizeof(glm::vec4);
   m_pos[m_posIndex].upload(layer.pos.data(), bytes, at);
   m_vel[m_velIndex].upload(layer.vel.data(), bytes, at);
-  const std::vector<glm::vec4> zeros(layer.pos.size(), glm::vec4(0.0f));
-  m_acc.upload(zeros.data(), bytes, at);
+  if (m_acc.size()) {  // Verlet: a = 0 until the next evaluation
+    const std::vector<glm::vec4> zeros(layer.pos.size(), glm::vec4(0.0f));
+    m_acc.upload(zeros.data(), bytes, at);
+  }
   m_count += layer.pos.size();
   m_tapEmitted += layer.pos.size();
   m_listsStale = true;
@@ -178,7 +183,6 @@ void Balls::visitOwnState(sim::StateVisitor& v) {
   v.value("model.capacity", capacity);
   if (v.loading() && capacity != m_capacity) try {
       allocate(0, capacity);
-      m_acc.fillZero();
     } catch (const Error& e) {
       v.fail(std::string("entry 'model.capacity': ") + e.what());
     }
@@ -186,7 +190,7 @@ void Balls::visitOwnState(sim::StateVisitor& v) {
   v.count("model.tap_emitted", m_tapEmitted, m_capacity);
   v.value("model.tap_next_layer", m_tapNextLayer);
   v.flag("model.acc_valid", m_accValid);
-  if (m_accValid) v.buffer("model.accelerations", m_acc, m_count * sizeof(glm::vec4));
+  if (m_accValid) v.buffer("model.accelerations", accelerations(), m_count * sizeof(glm::vec4));
   if (v.loading()) ensureGrid();
   // Verlet lists as they are (with their control words), so that the restored run rebuilds when
   // the straight one would and sums in the same order.
@@ -230,13 +234,35 @@ void Balls::upload(const std::vector<glm::vec4>& pos, const std::vector<glm::vec
 
 void Balls::uploadAccelerations(const std::vector<glm::vec4>& acc) {
   if (acc.size() != m_count) throw Error("balls: upload needs an acceleration per ball");
-  m_acc.upload(acc.data(), acc.size() * sizeof(glm::vec4));
+  accelerations().upload(acc.data(), acc.size() * sizeof(glm::vec4));
   m_accValid = true;
+}
+
+std::vector<glm::vec4> Balls::downloadAccelerations() const {
+  if (m_acc.size() < m_count * sizeof(glm::vec4)) return std::vector<glm::vec4>(m_count, glm::vec4(0.0f));
+  return m_acc.read<glm::vec4>(m_count);
+}
+
+gl::Buffer& Balls::accelerations() {
+  const std::size_t bytes = std::max<std::size_t>(m_capacity, 1) * sizeof(glm::vec4);
+  if (m_acc.size() != bytes) {
+    m_acc = gl::Buffer(bytes);
+    m_acc.fillZero();  // allocate() voided m_accValid; a restore loads the buffer next
+  }
+  return m_acc;
+}
+
+gl::Buffer& Balls::permutation() {
+  const std::size_t bytes = std::max<std::size_t>(m_capacity, 1) * sizeof(GLuint);
+  if (m_permutation.size() != bytes) m_permutation = gl::Buffer(bytes);
+  return m_permutation;
 }
 
 std::vector<GLuint> Balls::lastOrder() const {
   // With lists the balls move into the grid's order only at the steps the GPU chose to rebuild.
   if (listsActive()) throw Error("balls: the order of a step is not tracked with neighbours: lists");
+  if (m_permutation.size() < m_count * sizeof(GLuint))
+    throw Error("balls: the order of the last step is kept only with trackOrder(true) before the step");
   return m_permutation.read<GLuint>(m_count);
 }
 

@@ -55,6 +55,7 @@ void Balls::stepOnce(gl::GpuProfiler* profiler) {
   const bool verlet = m_params.integrator == Integrator::VelocityVerlet;
   const bool lists = listsActive();
   if (!lists) m_listsStale = true;  // balls reordered meanwhile: the lists' indices are void
+  if (verlet) accelerations();      // allocated on the first Verlet step (then a(x0) is evaluated)
   auto neighbours = [&](gl::GpuProfiler* prof) { lists ? gateLists(prof) : sortByCell(prof); };
   if (verlet && !m_accValid && m_count > 0) {  // a(x0) for the first drift
     placeObstacles(m_time, nullptr);
@@ -163,7 +164,7 @@ void Balls::sortByCell(gl::GpuProfiler* profiler) {
   m_grid->setReorderMode(m_params.gridReorder);  // may change while running
   m_grid->setStable(m_params.deterministic);
   m_grid->reorder(m_pos[p], {{&m_pos[p], &m_pos[1 - p]}, {&m_vel[v], &m_vel[1 - v]}},
-                  m_trackOrder ? &m_permutation : nullptr);
+                  m_trackOrder ? &permutation() : nullptr);
 }
 
 void Balls::collide(gl::GpuProfiler* profiler, Collide what) {
@@ -257,7 +258,8 @@ void Balls::gateLists(gl::GpuProfiler* profiler) {
     m_listsStale = true;
     m_gateKey = key;
   }
-  if (verlet && m_accScratch.size() < m_acc.size()) m_accScratch = gl::Buffer(m_acc.size());
+  if (verlet && m_accScratch.size() < accelerations().size()) m_accScratch = gl::Buffer(m_acc.size());
+  permutation();
   auto section = [&] {
     m_grid->countParticles(m_pos[p], m_count);
     m_grid->scanCells();
