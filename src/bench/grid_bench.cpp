@@ -27,6 +27,7 @@
 #include "bench/bench.h"
 #include "gl/buffer.h"
 #include "gl/buffer_ops.h"
+#include "gl/window.h"
 #include "grid/grid.h"
 #include "grid/prefix_scan.h"
 
@@ -129,7 +130,7 @@ struct WordScans {
 // Scan of N uint32 with each shape against the copy of the same bytes (only with several shapes).
 void addShapeRows(Env& env, Table& table, WordScans& words, bool wallClock, std::size_t n,
                   const std::vector<grid::ScanConfig>& shapes) {
-  if ((n + 1) * 4 > grid::maxStorageBlockBytes()) return;
+  if ((n + 1) * 4 > gl::storageBlockBytes()) return;
   std::vector<uint32_t> values(n);
   std::mt19937 rng{uint32_t(n)};
   uint64_t sum = 0;
@@ -194,7 +195,7 @@ std::vector<std::string> noteRow(std::size_t n, const std::string& ppc, const st
 std::vector<std::vector<std::string>> runRows(Env& env, const GridOptions& opt,
                                               const std::vector<grid::ReorderMode>& modes, WordScans& words,
                                               bool wallClock, std::size_t n, double perCell) {
-  const std::size_t limit = grid::maxStorageBlockBytes();
+  const std::size_t limit = gl::storageBlockBytes();
   const std::string nText = std::to_string(n);
   if (n * sizeof(glm::vec4) > limit)
     return {noteRow(n, "",
@@ -303,7 +304,7 @@ int runGridBench(Env& env, const GridOptions& opt) {
   std::size_t maxWords = 0;
   for (std::size_t n : sizes) {
     if (n == 0 || n > grid::PrefixScan::kMaxCount) throw Error("--n: sizes must be between 1 and 2^31");
-    if ((n + 1) * 4 <= grid::maxStorageBlockBytes()) maxWords = std::max(maxWords, n);
+    if ((n + 1) * 4 <= gl::storageBlockBytes()) maxWords = std::max(maxWords, n);
   }
   WordScans words(env, shapes, maxWords);
   Table table(std::vector<std::string>(std::begin(kColumns), std::end(kColumns)));

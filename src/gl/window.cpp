@@ -19,7 +19,7 @@ std::size_t checkedLimit(std::size_t bytes, const std::string& what) {
   return bytes;
 }
 
-std::size_t environmentLimit() {
+std::size_t parseEnvironmentLimit() {
   const char* text = std::getenv("TIDEPOOL_STORAGE_BLOCK_BYTES");
   if (!text || !*text) return 0;
   char* end = nullptr;
@@ -27,6 +27,23 @@ std::size_t environmentLimit() {
   if (*end != '\0' || text[0] == '-')
     throw Error(std::string("TIDEPOOL_STORAGE_BLOCK_BYTES = '") + text + "' is not a byte count");
   return checkedLimit(std::size_t(bytes), "TIDEPOOL_STORAGE_BLOCK_BYTES");
+}
+
+// Read once per process (the windows ask several times a step); a bad value fails every time.
+std::size_t environmentLimit() {
+  struct Parsed {
+    std::size_t bytes = 0;
+    std::string error;
+  };
+  static const Parsed parsed = [] {
+    try {
+      return Parsed{parseEnvironmentLimit(), ""};
+    } catch (const Error& e) {
+      return Parsed{0, e.what()};
+    }
+  }();
+  if (!parsed.error.empty()) throw Error(parsed.error);
+  return parsed.bytes;
 }
 }  // namespace
 

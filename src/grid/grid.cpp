@@ -54,7 +54,7 @@ UniformGrid::UniformGrid(gl::ShaderLibrary& shaders, const GridParams& params, s
     : m_params(params),
       m_shape(shapeOf(params)),
       m_shaders(&shaders),
-      m_maxBlockBytes(maxStorageBlockBytes()),
+      m_maxBlockBytes(gl::storageBlockBytes()),
       m_ops(shaders),
       m_countPass(&shaders.program({"grid/grid_count.comp"}, {{"HALF_POSITIONS", halfDefine(params)}})),
       m_scan(shaders) {

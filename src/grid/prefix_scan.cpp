@@ -41,11 +41,9 @@ void checkSizes(const char* what, const gl::Buffer& in, const gl::Buffer& out, s
 }
 }  // namespace
 
-std::size_t maxStorageBlockBytes() { return gl::storageBlockBytes(); }
-
 PrefixScan::PrefixScan(gl::ShaderLibrary& shaders, Config config)
     : m_config(config),
-      m_maxBlockBytes(maxStorageBlockBytes()),
+      m_maxBlockBytes(gl::storageBlockBytes()),
       m_reduce(&shaders.program({"grid/scan_reduce.comp"}, scanDefines(config))),
       m_block(&shaders.program({"grid/scan_block.comp"}, scanDefines(config))),
       m_add(&shaders.program({"grid/scan_add.comp"}, scanDefines(config))) {}
@@ -120,7 +118,7 @@ void PrefixScan::scanLevel(const gl::Buffer& in, gl::Buffer& out, std::size_t n,
 }
 
 NaiveScan::NaiveScan(gl::ShaderLibrary& shaders)
-    : m_maxBlockBytes(maxStorageBlockBytes()), m_pass(&shaders.program({"grid/scan_naive.comp"})) {}
+    : m_maxBlockBytes(gl::storageBlockBytes()), m_pass(&shaders.program({"grid/scan_naive.comp"})) {}
 
 std::size_t NaiveScan::passesFor(std::size_t n) {
   std::size_t passes = 0;

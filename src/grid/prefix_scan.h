@@ -107,7 +107,4 @@ class NaiveScan {
   gl::Buffer m_temp;
 };
 
-// GL_MAX_SHADER_STORAGE_BLOCK_SIZE in bytes (llvmpipe: 128 MiB): the largest array one kernel sees.
-std::size_t maxStorageBlockBytes();
-
 }  // namespace tidepool::grid

@@ -75,7 +75,7 @@ SurfaceMesher::SurfaceMesher(gl::ShaderLibrary& shaders)
       m_classify(&shaders.program({"surface/classify.comp"})),
       m_emitVertices(&shaders.program({"surface/emit_vertices.comp"})),
       m_emitTriangles(&shaders.program({"surface/emit_triangles.comp"})),
-      m_maxArrayBytes(grid::maxStorageBlockBytes()) {
+      m_maxArrayBytes(gl::storageBlockBytes()) {
   const std::vector<glm::uvec4> cases = mc::packedCaseTable();
   m_cases = gl::Buffer(std::span<const glm::uvec4>(cases), GL_STATIC_DRAW);
 }

@@ -12,8 +12,6 @@
 
 namespace tidepool::sim {
 namespace {
-std::string mib(std::size_t bytes) { return gl::sizeText(bytes); }
-
 // The tighter of the current fit and `count` under `limit`.
 void tighten(ParticleFit& fit, std::size_t count, const std::string& limit) {
   if (count < fit.count) fit = {count, limit};
@@ -52,14 +50,19 @@ ParticleFit particlesThatFit(const ParticleCost& cost, const char* particle) {
   const std::size_t maxBlock = gl::storageBlockBytes();
   if (cost.arrayBytes)
     tighten(fit, maxBlock / cost.arrayBytes,
-            "the storage-block limit, " + mib(maxBlock) + " per array of " + std::to_string(cost.arrayBytes) +
+            "the storage-block limit, " + gl::sizeText(maxBlock) + " per array of " + std::to_string(cost.arrayBytes) +
                 " B per " + particle);
+  if (cost.windowedBytes)
+    tighten(fit, gl::kMaxWindowedBufferBytes / cost.windowedBytes,
+            "the " + gl::sizeText(gl::kMaxWindowedBufferBytes) + " a windowed array may span, at " +
+                std::to_string(cost.windowedBytes) + " B per " + particle);
   if (const std::optional<std::size_t> gpu = freeGpuBytes(); gpu && cost.gpuBytes)
     tighten(fit, *gpu / cost.gpuBytes,
-            "free GPU memory, " + mib(*gpu) + " at " + std::to_string(cost.gpuBytes) + " B per " + particle);
+            "free GPU memory, " + gl::sizeText(*gpu) + " at " + std::to_string(cost.gpuBytes) + " B per " + particle);
   if (const std::optional<std::size_t> host = freeHostBytes(); host && cost.hostBytes)
-    tighten(fit, *host / cost.hostBytes,
-            "free host memory, " + mib(*host) + " at " + std::to_string(cost.hostBytes) + " B per " + particle);
+    tighten(
+        fit, *host / cost.hostBytes,
+        "free host memory, " + gl::sizeText(*host) + " at " + std::to_string(cost.hostBytes) + " B per " + particle);
   return fit;
 }
 

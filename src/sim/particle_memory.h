@@ -16,10 +16,11 @@ namespace tidepool::sim {
 
 // What one particle costs, and the key that caps the count.
 struct ParticleCost {
-  std::size_t maxParticles = 0;  // the model's max_particles key (0: none, the device's limits alone)
-  std::size_t arrayBytes = 16;   // of its largest GPU array bound whole (one storage block), per particle
-  std::size_t gpuBytes = 16;     // GPU bytes per particle in all
-  std::size_t hostBytes = 0;     // host bytes per particle while the initial state is built (0: none)
+  std::size_t maxParticles = 0;   // the model's max_particles key (0: none, the device's limits alone)
+  std::size_t arrayBytes = 16;    // of its largest GPU array bound whole (one storage block), per particle
+  std::size_t windowedBytes = 0;  // of its largest array bound in windows (gl/window.h), per particle (0: none)
+  std::size_t gpuBytes = 16;      // GPU bytes per particle in all
+  std::size_t hostBytes = 0;      // host bytes per particle while the initial state is built (0: none)
 };
 
 // How many particles fit, and the limit that binds ("max_particles = 16777216", "the storage-block

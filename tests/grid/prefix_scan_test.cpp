@@ -8,6 +8,7 @@
 
 #include "base/error.h"
 #include "gl/buffer.h"
+#include "gl/window.h"
 #include "grid/grid_reference.h"
 #include "grid/prefix_scan.h"
 #include "support/gl_test.h"
@@ -218,7 +219,7 @@ TEST_F(Scan, BadSizesThrowOneLineErrors) {
   EXPECT_THROW(scan.run(small, out, 5), Error);  // input holds 4
   EXPECT_THROW(scan.run(out, small, 4), Error);  // output needs 5
   EXPECT_THROW(naive.run(out, out, 4), Error);   // naive scan is not in place
-  const std::size_t tooBig = maxStorageBlockBytes() / 4;
+  const std::size_t tooBig = gl::storageBlockBytes() / 4;
   try {
     scan.run(out, out, tooBig);
     ADD_FAILURE() << "expected an error";

@@ -38,6 +38,7 @@ sim::ParticleCost Balls::cost() const {
   const std::size_t permutationWords = m_params.neighbours == Neighbours::Lists ? 1 : 0;
   return {.maxParticles = std::size_t(m_params.maxParticles),
           .arrayBytes = sizeof(GLuint),
+          .windowedBytes = sizeof(glm::vec4),
           .gpuBytes = (verlet ? 5 : 4) * sizeof(glm::vec4) + (4 + permutationWords + listWords) * sizeof(GLuint),
           .hostBytes = sizeof(glm::vec4) + sizeof(glm::vec3)};
 }
