@@ -28,10 +28,10 @@ namespace tidepool::gl {
 // or the environment variable TIDEPOOL_STORAGE_BLOCK_BYTES (to run a small GPU's windows on a big
 // one; at least kMinStorageBlockBytes). Throws Error for an override that is not a byte count in range.
 std::size_t storageBlockBytes();
-// The largest buffer tidepool splits into windows: on the H200 (driver 580.159.04) a 4.32 GB array
-// of balls read wrong past 4 GiB, while 4.16 GB ran right (docs/PERFORMANCE.md §17), so a windowed
-// array stays within 4 GiB on every driver.
-constexpr std::size_t kMaxWindowedBufferBytes = std::size_t(4) << 30;
+// The largest buffer tidepool splits into windows: on the H100 and H200 (driver 580.159.04) a
+// windowed array of balls ending at 4 GiB or past it read wrong, while one of 4.16 GB ran right
+// (docs/PERFORMANCE.md §17), so a windowed array ends a window grain of 16 B short of 4 GiB.
+constexpr std::size_t kMaxWindowedBufferBytes = (std::size_t(4) << 30) - 65536;
 constexpr std::size_t kWindowGrain = 4096;                        // elements
 constexpr std::size_t kMinStorageBlockBytes = 16 * kWindowGrain;  // one grain of 16-byte elements
 void overrideStorageBlockBytes(std::size_t bytes);                // 0: back to the driver's (and the environment's)

@@ -54,7 +54,7 @@ ParticleFit particlesThatFit(const ParticleCost& cost, const char* particle) {
                 " B per " + particle);
   if (cost.windowedBytes)
     tighten(fit, gl::kMaxWindowedBufferBytes / cost.windowedBytes,
-            "the " + gl::sizeText(gl::kMaxWindowedBufferBytes) + " a windowed array may span, at " +
+            "the windowed-array limit of " + std::to_string(gl::kMaxWindowedBufferBytes) + " bytes, at " +
                 std::to_string(cost.windowedBytes) + " B per " + particle);
   if (const std::optional<std::size_t> gpu = freeGpuBytes(); gpu && cost.gpuBytes)
     tighten(fit, *gpu / cost.gpuBytes,
