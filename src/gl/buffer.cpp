@@ -24,9 +24,14 @@ void setTransferChunkBytes(std::size_t bytes) { g_chunk = bytes ? (bytes + 15) /
 Buffer::Buffer(std::size_t bytes, const void* data, GLenum usage) : m_handle(Handle<Kind::Buffer>::generate()) {
   glBindBuffer(GL_COPY_WRITE_BUFFER, id());
   glBufferData(GL_COPY_WRITE_BUFFER, GLsizeiptr(bytes), data, usage);
+  GLint64 made = -1;  // what the driver says it made: a size it cut short would be read wrong later
+  glGetBufferParameteri64v(GL_COPY_WRITE_BUFFER, GL_BUFFER_SIZE, &made);
   glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
   if (glGetError() == GL_OUT_OF_MEMORY)
     throw GlError("out of GPU memory allocating a buffer of " + std::to_string(bytes) + " bytes");
+  if (made != GLint64(bytes))
+    throw GlError("the GL driver made a buffer of " + std::to_string(made) + " bytes when " + std::to_string(bytes) +
+                  " were asked");
   m_size = bytes;
 }
 
