@@ -22,15 +22,17 @@ uniform float uKick;  // fraction of dt·a added to the (half-step) velocity: 0.
 layout(std430, binding = STEP_OUT_BINDING) writeonly buffer StepOut { vec4 stepOut[]; };
 
 #include "balls/contact.glsl"
+// Bindings 6 and 7: the obstacles', the lists' or the next count's (included here, outside any #if:
+// the shader library inlines a file at its first #include only).
+#include "balls/shared_slots.glsl"
 
 #ifdef COUNT_CELLS
 // The next step's grid count (grid_count.comp) done here, at the positions this pass writes: no
-// count pass reading them again. Only without obstacles and lists (8 storage blocks).
-#if defined(LISTS) || defined(HAS_OBSTACLE) || defined(INTEGRATOR_VERLET)
-#error "COUNT_CELLS takes bindings 4, 6 and 7 (8 storage blocks in all): Balls::countsInCollide() keeps it from lists, obstacles and Verlet"
+// count pass reading them again. Only without obstacles and lists (8 storage blocks): the counts
+// and the slots take bindings 6 and 7 (balls/shared_slots.glsl), the cells Verlet's binding 4.
+#if defined(INTEGRATOR_VERLET)
+#error "COUNT_CELLS takes binding 4, Verlet's accelerations: Balls::countsInCollide() keeps it from Verlet"
 #endif
-layout(std430, binding = BALLS_NEXT_CELL_COUNT) buffer NextCellCount { uint nextCellCount[]; };
-layout(std430, binding = BALLS_NEXT_INDEX_IN_CELL) writeonly buffer NextIndexInCell { uint nextIndexInCell[]; };
 layout(std430, binding = BALLS_NEXT_PARTICLE_CELL) writeonly buffer NextParticleCell { uint nextParticleCell[]; };
 #endif
 

@@ -5,7 +5,11 @@
 
 #include "balls/list_layout.glsl"
 
-layout(std430, binding = BALLS_LISTS) coherent buffer Lists { uint lists[]; };
+// The kernels that include this file run in list mode (LISTS): binding 6 holds the lists.
+#ifndef LISTS
+#define LISTS
+#endif
+#include "balls/shared_slots.glsl"  // uint lists[], coherent
 uniform uint uListStride;    // words per column (the balls' capacity)
 uniform uint uListCapacity;  // neighbours a ball's list holds
 uniform uint uControl;       // word of the control words

@@ -10,17 +10,13 @@
 #include "common/grid.glsl"
 
 layout(std430, binding = BALLS_CELL_START) readonly buffer CellStart { uint cellStart[]; };
-#if defined(LISTS) && defined(HAS_OBSTACLE)
-#error "lists and obstacle particles share bindings 6 and 7: Balls::listsActive() keeps them apart"
-#endif
+#include "balls/shared_slots.glsl"  // obstaclePos[], obstacleCellStart[] (HAS_OBSTACLE)
 #ifdef LISTS
 // List mode: the balls lie in the grid's order of the last build, and the lists hold each ball's
 // neighbours within 2r + skin then (balls/lists.glsl).
 #include "balls/lists.glsl"
 #endif
 #ifdef HAS_OBSTACLE
-layout(std430, binding = BALLS_OBST_POS) readonly buffer ObstaclePos { vec4 obstaclePos[]; };
-layout(std430, binding = BALLS_OBST_CELL_START) readonly buffer ObstacleCellStart { uint obstacleCellStart[]; };
 uniform vec3 uObstacleOrigin;  // obstacle grid (world), cell 2r
 uniform float uObstacleInvCell;
 uniform uvec3 uObstacleDims;

@@ -14,16 +14,19 @@
 
 #if HALF_POSITIONS
 #define GridElement uvec2
+#define GRID_POSITION_TYPE uvec2
 vec3 elementPosition(uvec2 e) { return vec3(unpackHalf2x16(e.x), 0.0); }
-#ifndef GRID_NO_POSITIONS_BLOCK
-layout(std430, binding = GRID_POSITIONS) readonly buffer Positions { uvec2 positions[]; };
-vec3 particlePosition(uint i) { return elementPosition(positions[i]); }
-#endif
 #else
 #define GridElement uvec4
+#define GRID_POSITION_TYPE vec4
 vec3 elementPosition(uvec4 e) { return uintBitsToFloat(e.xyz); }
+#endif
+
 #ifndef GRID_NO_POSITIONS_BLOCK
-layout(std430, binding = GRID_POSITIONS) readonly buffer Positions { vec4 positions[]; };
+layout(std430, binding = GRID_POSITIONS) readonly buffer Positions { GRID_POSITION_TYPE positions[]; };
+#if HALF_POSITIONS
+vec3 particlePosition(uint i) { return elementPosition(positions[i]); }
+#else
 vec3 particlePosition(uint i) { return positions[i].xyz; }
 #endif
 #endif
