@@ -1,8 +1,9 @@
 // `tidepool bench balls <scene> --n 65536,... --steps 10:310`: median GPU ms per step over a
-// window of steps (GL_TIMESTAMP between steps, as CUDA events time the sample's; its mean beside
-// it, and the wall clock of the window), split by pass (GL_TIME_ELAPSED), with steps per second and GPU bytes per ball.
-// --n sets the ball count of lattice scenes (bench-lattice); other scenes run as they are. --reorder scatter,gather
-// runs each size once per grid reorder mode (the scene's grid_reorder otherwise),
+// window of steps (GL_TIMESTAMP between steps, as CUDA events time the sample's; their mean and
+// the wall clock of the window beside it), split by pass (GL_TIME_ELAPSED), with steps per second
+// and GPU bytes per ball. --n sets the ball count of lattice scenes (bench-lattice); other scenes
+// run as they are. --reorder scatter,gather runs each size once per grid reorder mode (the
+// scene's grid_reorder otherwise),
 // --deterministic on,off once per grid order (stable: bit-identical runs; the scene's otherwise),
 // --neighbours grid,lists once per neighbour search, --skin 0.2,0.4 once per list skin (lists),
 // --count pass,collide once per place of the grid's count (its own pass, or in the collide);
@@ -155,10 +156,9 @@ Benchmark addBallsBench(CLI::App& bench) {
   sub->add_option("--count", o->count,
                   "where the grid counts the balls, one row each: collide (in the collide's write, the default "
                   "without obstacles and lists) or pass (a count pass), e.g. pass,collide");
-  sub->add_option(
-      "--timers", o->timers,
-      "how the passes are clocked, one row each: queued (timer queries, steps back to back), isolated "
-      "(a glFinish before each pass: its own time) or off (no queries: ms/step is the sustained wall clock)");
+  sub->add_option("--timers", o->timers,
+                  "how the passes are clocked, one row each: queued (timer queries, steps back to back), isolated "
+                  "(a glFinish before each pass: its own time) or off (no per-pass queries; ms/step is still timed)");
   return {sub, [o](Env& env) { return run(env, *o); }};
 }
 

@@ -1,6 +1,5 @@
 #include "gl/buffer.h"
 
-#include <algorithm>
 #include <string>
 
 namespace tidepool::gl {
@@ -10,16 +9,7 @@ void checkRange(std::size_t offset, std::size_t bytes, std::size_t size, const c
     throw GlError(std::string("buffer ") + what + " of " + std::to_string(bytes) + " bytes at offset " +
                   std::to_string(offset) + " overruns a buffer of " + std::to_string(size) + " bytes");
 }
-std::size_t g_chunk = kTransferChunkBytes;
-
-// fn(offset, bytes) over [offset, offset + bytes) in pieces of at most g_chunk bytes.
-template <class Fn>
-void inChunks(std::size_t offset, std::size_t bytes, Fn fn) {
-  for (std::size_t done = 0; done < bytes; done += g_chunk) fn(offset + done, std::min(g_chunk, bytes - done));
-}
 }  // namespace
-
-void setTransferChunkBytes(std::size_t bytes) { g_chunk = bytes ? (bytes + 15) / 16 * 16 : kTransferChunkBytes; }
 
 Buffer::Buffer(std::size_t bytes, const void* data, GLenum usage) : m_handle(Handle<Kind::Buffer>::generate()) {
   glBindBuffer(GL_COPY_WRITE_BUFFER, id());
@@ -41,9 +31,7 @@ void Buffer::upload(const void* data, std::size_t bytes, std::size_t offset) {
   checkRange(offset, bytes, m_size, "upload");
   if (!bytes) return;
   glBindBuffer(GL_COPY_WRITE_BUFFER, id());
-  inChunks(offset, bytes, [&](std::size_t at, std::size_t n) {
-    glBufferSubData(GL_COPY_WRITE_BUFFER, GLintptr(at), GLsizeiptr(n), static_cast<const char*>(data) + (at - offset));
-  });
+  glBufferSubData(GL_COPY_WRITE_BUFFER, GLintptr(offset), GLsizeiptr(bytes), data);
   glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
 }
 
@@ -53,19 +41,14 @@ void Buffer::download(void* data, std::size_t bytes, std::size_t offset) const {
   // Writes by compute shaders must be visible to the read-back.
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   glBindBuffer(GL_COPY_READ_BUFFER, id());
-  inChunks(offset, bytes, [&](std::size_t at, std::size_t n) {
-    glGetBufferSubData(GL_COPY_READ_BUFFER, GLintptr(at), GLsizeiptr(n), static_cast<char*>(data) + (at - offset));
-  });
+  glGetBufferSubData(GL_COPY_READ_BUFFER, GLintptr(offset), GLsizeiptr(bytes), data);
   glBindBuffer(GL_COPY_READ_BUFFER, 0);
 }
 
 void Buffer::fillZero() {
   if (!m_size) return;
   glBindBuffer(GL_COPY_WRITE_BUFFER, id());
-  inChunks(0, m_size, [](std::size_t at, std::size_t n) {
-    glClearBufferSubData(GL_COPY_WRITE_BUFFER, GL_R32UI, GLintptr(at), GLsizeiptr(n), GL_RED_INTEGER, GL_UNSIGNED_INT,
-                         nullptr);
-  });
+  glClearBufferData(GL_COPY_WRITE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
   glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
 }
 
@@ -75,10 +58,8 @@ void Buffer::copyTo(Buffer& dst, std::size_t bytes, std::size_t srcOffset, std::
   if (!bytes) return;
   glBindBuffer(GL_COPY_READ_BUFFER, id());
   glBindBuffer(GL_COPY_WRITE_BUFFER, dst.id());
-  inChunks(0, bytes, [&](std::size_t at, std::size_t n) {
-    glCopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, GLintptr(srcOffset + at), GLintptr(dstOffset + at),
-                        GLsizeiptr(n));
-  });
+  glCopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, GLintptr(srcOffset), GLintptr(dstOffset),
+                      GLsizeiptr(bytes));
   glBindBuffer(GL_COPY_READ_BUFFER, 0);
   glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
 }

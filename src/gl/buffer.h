@@ -10,12 +10,6 @@
 
 namespace tidepool::gl {
 
-// Uploads, downloads, copies and clears go to the driver in pieces of at most this many bytes:
-// on the H100 and H200 (driver 580) one glBufferSubData of more than 4 GiB left the bytes past
-// 4 GiB unwritten (docs/PERFORMANCE.md §17).
-inline constexpr std::size_t kTransferChunkBytes = std::size_t(1) << 30;
-void setTransferChunkBytes(std::size_t bytes);  // tests: smaller pieces (multiples of 16); 0 restores
-
 class Buffer {
  public:
   Buffer() = default;

@@ -103,32 +103,6 @@ TEST_F(GlObjects, BufferCopyZeroAndRangeChecks) {
   EXPECT_THROW(a.copyTo(b, 8, 396, 0), GlError);
 }
 
-// Transfers go to the driver in pieces (one glBufferSubData of more than 4 GiB lost its bytes past
-// 4 GiB on the H100): with pieces of 48 bytes, every transfer at odd offsets still lands whole.
-TEST_F(GlObjects, TransfersInPiecesLandWhole) {
-  struct Restore {
-    ~Restore() { gl::setTransferChunkBytes(0); }
-  } restore;
-  gl::setTransferChunkBytes(48);
-  std::vector<uint32_t> values(1000);
-  std::iota(values.begin(), values.end(), 7u);
-  gl::Buffer a(values.size() * 4), b(values.size() * 4);
-  a.upload(values.data(), values.size() * 4);
-  EXPECT_EQ(a.read<uint32_t>(values.size()), values);
-  a.upload(values.data(), 4 * 101, 4 * 13);  // not a multiple of the piece, at an offset
-  std::vector<uint32_t> expect = values;
-  std::copy(values.begin(), values.begin() + 101, expect.begin() + 13);
-  EXPECT_EQ(a.read<uint32_t>(values.size()), expect);
-  EXPECT_EQ(a.read<uint32_t>(77, 500), std::vector<uint32_t>(expect.begin() + 500, expect.begin() + 577));
-  b.fillZero();
-  a.copyTo(b, 4 * 333, 4 * 3, 4 * 600);
-  std::vector<uint32_t> copied(values.size(), 0u);
-  std::copy(expect.begin() + 3, expect.begin() + 336, copied.begin() + 600);
-  EXPECT_EQ(b.read<uint32_t>(values.size()), copied);
-  a.fillZero();
-  EXPECT_EQ(a.read<uint32_t>(values.size()), std::vector<uint32_t>(values.size(), 0u));
-}
-
 TEST_F(GlObjects, TextureRoundTripAndBadSizes) {
   Texture2D t(3, 2, GL_RGBA8);
   std::vector<uint8_t> px(3 * 2 * 4);

@@ -29,8 +29,9 @@ Balls::Balls(gl::ShaderLibrary& shaders, const Params& params)
 
 // GPU: positions and velocities twice (vec4 each), with velocity Verlet the accelerations, the
 // grid's cell, index in cell, stable members and gather permutation (a word each), with lists
-// their columns and the balls' permutation. Host: the initial water (vec4) and its lattice (vec3). The vec4 arrays may
-// pass one storage block (they are bound a window at a time: gl/window.h); the words are bound whole.
+// their columns and the balls' permutation. Host: the initial water (vec4) and its lattice
+// (vec3). The vec4 arrays may pass one storage block (they are bound a window at a time:
+// gl/window.h) but not gl::kMaxWindowedBufferBytes; the words are bound whole.
 sim::ParticleCost Balls::cost() const {
   const std::size_t listWords =
       m_params.neighbours == Neighbours::Lists ? BALLS_LIST_FIRST + std::size_t(m_params.listCapacity) : 0;
