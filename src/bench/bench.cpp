@@ -102,11 +102,7 @@ double PassTimes::median(const std::string& pass) const {
   return it == passes.end() ? 0.0 : bench::median(it->second);
 }
 
-double PassTimes::frameMs() const {
-  if (!wall.empty()) return bench::median(wall);
-  if (!stream.empty()) return bench::median(stream);
-  return totals.empty() ? sustainedMs : bench::median(totals);
-}
+double PassTimes::frameMs() const { return bench::median(!wall.empty() ? wall : !stream.empty() ? stream : totals); }
 
 double PassTimes::streamMeanMs() const {
   double sum = 0;

@@ -77,7 +77,7 @@ double gpuMedianMs(const Common& common, const std::function<void()>& work);
 // How the passes of a timed frame are clocked: GL_TIME_ELAPSED around each with the frames queued
 // back to back (what the UI shows; on the H100 a pass's time then includes its wait behind the
 // passes before it), the same with a glFinish before each pass (each pass's own time), or no
-// timer queries at all (the frame's time is then the wall clock of the window).
+// per-pass queries at all (the frame's time still comes from PassTimes::stream).
 enum class Timers { Queued, Isolated, Off };
 inline constexpr std::array<const char*, 3> kTimersNames = {"queued", "isolated", "off"};
 
