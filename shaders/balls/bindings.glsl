@@ -8,8 +8,7 @@
 #define BALLS_CELL_START 5     // uint per grid cell + 1 (grid/bindings.glsl's layout)
 #define BALLS_OBST_POS 6       // vec4 obstacle particles (world, w = obstacle index), obstacle-grid cell order
 #define BALLS_OBST_CELL_START 7  // uint per obstacle-grid cell + 1
-#define BALLS_LISTS 6           // Verlet lists (balls/list_layout.glsl), list mode: no obstacle particles then
-#define BALLS_NEXT_CELL_COUNT 6      // collide with COUNT_CELLS (no obstacle, no lists): the grid's cellCount,
+#define BALLS_NEXT_CELL_COUNT 6      // collide with COUNT_CELLS (no obstacle): the grid's cellCount,
 #define BALLS_NEXT_INDEX_IN_CELL 7   // indexInCell
 #define BALLS_NEXT_PARTICLE_CELL 4   // and particleCell, counted at the new positions for the next step (Euler)
 #define BALLS_OBST_POSES 0     // uniform block (std140): each obstacle's pose and velocity (obstacle_poses.glsl)

@@ -1,8 +1,7 @@
 #version 430 core
 // One step of the balls (explicit or symplectic Euler), or the force-and-kick half of velocity
 // Verlet: contact accelerations from every body within 2r, the walls, gravity, then integration.
-// Reads the cell-ordered arrays (list mode: the arrays in place, and each ball's list), writes
-// the other buffers (no read/write hazard between balls).
+// Reads the cell-ordered arrays, writes the other buffers (no read/write hazard between balls).
 #include "balls/bindings.glsl"
 
 layout(local_size_x = BALLS_GROUP_SIZE) in;
@@ -12,7 +11,7 @@ layout(std430, binding = BALLS_POS_IN) readonly buffer PosIn { vec4 posIn[]; };
 layout(std430, binding = BALLS_VEL_IN) readonly buffer VelIn { vec4 velIn[]; };
 layout(std430, binding = BALLS_VEL_OUT) writeonly buffer VelOut { vec4 velOut[]; };
 // The step's other output: the acceleration (velocity Verlet) or the new position (Euler). One
-// declaration keeps the kernel at 8 storage blocks with lists or obstacles (GL 4.3's minimum).
+// declaration keeps the kernel at 8 storage blocks with obstacles (GL 4.3's minimum).
 #ifdef INTEGRATOR_VERLET
 #define STEP_OUT_BINDING BALLS_ACC
 uniform float uKick;  // fraction of dt·a added to the (half-step) velocity: 0.5, or 0 to only evaluate a
@@ -22,13 +21,13 @@ uniform float uKick;  // fraction of dt·a added to the (half-step) velocity: 0.
 layout(std430, binding = STEP_OUT_BINDING) writeonly buffer StepOut { vec4 stepOut[]; };
 
 #include "balls/contact.glsl"
-// Bindings 6 and 7: the obstacles', the lists' or the next count's (included here, outside any #if:
+// Bindings 6 and 7: the obstacles' or the next count's (included here, outside any #if:
 // the shader library inlines a file at its first #include only).
 #include "balls/shared_slots.glsl"
 
 #ifdef COUNT_CELLS
 // The next step's grid count (grid_count.comp) done here, at the positions this pass writes: no
-// count pass reading them again. Only without obstacles and lists (8 storage blocks): the counts
+// count pass reading them again. Only without obstacles (8 storage blocks): the counts
 // and the slots take bindings 6 and 7 (balls/shared_slots.glsl), the cells Verlet's binding 4.
 #if defined(INTEGRATOR_VERLET)
 #error "COUNT_CELLS takes binding 4, Verlet's accelerations: Balls::countsInCollide() keeps it from Verlet"
@@ -84,19 +83,10 @@ void stepBall(uint i) {
   nextParticleCell[i] = cell;
   nextIndexInCell[i] = atomicAdd(nextCellCount[cell], 1u);
 #endif
-#ifdef LISTS
-  displacementBoxAdd(i, x);  // where the next step's forces act
-#endif
 #endif
 }
 
 void main() {
   const uint i = uFirst + globalIndex();
-#if defined(LISTS) && !defined(INTEGRATOR_VERLET)
-  displacementBoxBegin();
   if (i < uCount) stepBall(i);
-  displacementBoxEnd(groupIndex());
-#else
-  if (i < uCount) stepBall(i);
-#endif
 }

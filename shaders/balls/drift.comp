@@ -10,7 +10,7 @@ layout(std430, binding = BALLS_POS_OUT) buffer Pos { vec4 pos[]; };
 layout(std430, binding = BALLS_VEL_OUT) buffer Vel { vec4 vel[]; };
 layout(std430, binding = BALLS_ACC) readonly buffer Acc { vec4 acc[]; };
 
-// Balls [uFirst, uCount), the arrays bound from ball uFirst on (src/gl/window.h; 0 with lists).
+// Balls [uFirst, uCount), the arrays bound from ball uFirst on (src/gl/window.h).
 uniform uint uFirst;
 uniform uint uCount;
 uniform float uDt;
@@ -18,9 +18,6 @@ uniform float uRadius;
 uniform float uFoamGain;
 uniform float uFoamDecay;
 #include "balls/walls.glsl"
-#ifdef LISTS
-#include "balls/lists.glsl"
-#endif
 
 void driftBall(uint i) {
   const uint k = i - uFirst;
@@ -30,18 +27,9 @@ void driftBall(uint i) {
   const float foam = min(1.0, (vel[k].w + uFoamGain * uDt * length(v)) * uFoamDecay);
   pos[k] = vec4(x, pos[k].w);
   vel[k] = vec4(v, foam);
-#ifdef LISTS
-  displacementBoxAdd(i, x);  // where this step's forces act
-#endif
 }
 
 void main() {
   const uint i = uFirst + globalIndex();
-#ifdef LISTS
-  displacementBoxBegin();
   if (i < uCount) driftBall(i);
-  displacementBoxEnd(groupIndex());
-#else
-  if (i < uCount) driftBall(i);
-#endif
 }

@@ -11,11 +11,6 @@
 
 layout(std430, binding = BALLS_CELL_START) readonly buffer CellStart { uint cellStart[]; };
 #include "balls/shared_slots.glsl"  // obstaclePos[], obstacleCellStart[] (HAS_OBSTACLE)
-#ifdef LISTS
-// List mode: the balls lie in the grid's order of the last build, and the lists hold each ball's
-// neighbours within 2r + skin then (balls/lists.glsl).
-#include "balls/lists.glsl"
-#endif
 #ifdef HAS_OBSTACLE
 uniform vec3 uObstacleOrigin;  // obstacle grid (world), cell 2r
 uniform float uObstacleInvCell;
@@ -25,7 +20,7 @@ uniform uvec3 uObstacleDims;
 
 uniform float uRadius;  // m
 // The first ball of the window posIn[] and velIn[] are bound from (src/gl/window.h): 0 when they
-// fit one storage block, as always with lists, whose indices are the balls' own.
+// fit one storage block.
 uniform uint uSourceFirst;
 
 // Candidate j at q: a contact when closer than reach. The ball itself (d = 0) is skipped by the
@@ -58,22 +53,7 @@ void forEachGridContact(vec3 p, float reach) {
 // Ball i at p: every ball within 2r, then every obstacle particle.
 void forEachContact(uint i, vec3 p) {
   const float reach = 2.0 * uRadius;
-#ifdef LISTS
-  // The list from the last build holds every ball now within 2r (the gate rebuilds it before it
-  // could miss one); a ball that had more neighbours than the list holds walks the grid, which
-  // the gate rebuilds (with the balls in its order) every step while any list overflows.
-  const uint n = lists[listEntry(3u, i)];
-  if (n <= uListCapacity) {
-    for (uint k = 0u; k < n; ++k) {
-      const uint j = lists[listEntry(uint(BALLS_LIST_FIRST) + k, i)];
-      candidate(j, p, posIn[j].xyz, reach);
-    }
-  } else {
-    forEachGridContact(p, reach);
-  }
-#else
   forEachGridContact(p, reach);
-#endif
 #ifdef HAS_OBSTACLE
   // The grid covers every obstacle particle a ball can reach; balls more than a cell outside it
   // touch none. Rows of three cells are contiguous, as above.

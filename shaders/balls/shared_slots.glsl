@@ -1,22 +1,17 @@
 // Bindings 6 and 7 of the balls' kernels. GL 4.3 guarantees 8 storage blocks per kernel, so each
-// of these two binding points holds one of three arrays, by what the kernel uses:
+// of these two binding points holds one of two arrays, by what the kernel uses:
 //   HAS_OBSTACLE   6: obstaclePos (vec4, the obstacles' particles)  7: obstacleCellStart (uint)
-//   LISTS          6: lists (uint, the Verlet lists: balls/lists.glsl)
 //   COUNT_CELLS    6: nextCellCount (uint, the next step's grid)     7: nextIndexInCell (uint)
 // Each binding point is declared once, and each use names its array by its own name (a #define
 // of the block's member), so no kernel's text declares more blocks than it may bind.
 #ifndef BALLS_SHARED_SLOTS_GLSL
 #define BALLS_SHARED_SLOTS_GLSL
 
-#if BALLS_OBST_POS != BALLS_LISTS || BALLS_OBST_POS != BALLS_NEXT_CELL_COUNT || \
-    BALLS_OBST_CELL_START != BALLS_NEXT_INDEX_IN_CELL
-#error "balls/bindings.glsl: the three uses of bindings 6 and 7 must share them"
+#if BALLS_OBST_POS != BALLS_NEXT_CELL_COUNT || BALLS_OBST_CELL_START != BALLS_NEXT_INDEX_IN_CELL
+#error "balls/bindings.glsl: the two uses of bindings 6 and 7 must share them"
 #endif
-#if defined(LISTS) && defined(HAS_OBSTACLE)
-#error "lists and obstacle particles share bindings 6 and 7: Balls::listsActive() keeps them apart"
-#endif
-#if defined(COUNT_CELLS) && (defined(LISTS) || defined(HAS_OBSTACLE))
-#error "COUNT_CELLS takes bindings 6 and 7: Balls::countsInCollide() keeps it from lists and obstacles"
+#if defined(COUNT_CELLS) && defined(HAS_OBSTACLE)
+#error "COUNT_CELLS takes bindings 6 and 7: Balls::countsInCollide() keeps it from obstacles"
 #endif
 
 #if defined(HAS_OBSTACLE)
@@ -25,10 +20,6 @@
 #define BALLS_SLOT7_ACCESS readonly
 #define obstaclePos slot6
 #define obstacleCellStart slot7
-#elif defined(LISTS)
-#define BALLS_SLOT6_ACCESS coherent
-#define BALLS_SLOT6_TYPE uint
-#define lists slot6
 #elif defined(COUNT_CELLS)
 #define BALLS_SLOT6_ACCESS
 #define BALLS_SLOT6_TYPE uint

@@ -7,9 +7,7 @@
 #define FLUID_PRED 2           // vec4 predicted positions p (m, w = foam until the velocity pass), cell order
 #define FLUID_OUT 3            // vec4, written: predicted positions, velocities, statistics
 #define FLUID_LAMBDA 4         // vec2 (lambda, rho/rho0) per particle; vec4 vorticity in the vorticity passes
-#define FLUID_CELL_START 5     // uint per grid cell + 1 (grid/bindings.glsl's layout), cell = h / reach
-#define FLUID_NEIGHBOURS 5     // with NEIGHBOUR_LIST instead: per particle a count and FLUID_MAX_NEIGHBOURS indices
-#define FLUID_MAX_NEIGHBOURS 63  // list entries per particle (64 words with the count)
+#define FLUID_CELL_START 5     // uint per grid cell + 1 (grid/bindings.glsl's layout), cell = h / 2
 #define FLUID_OBST_POS 6       // = BALLS_OBST_POS: obstacle particles (world, w = obstacle index)
 #define FLUID_OBST_CELL_START 7  // = BALLS_OBST_CELL_START
 #ifndef FLUID_GROUP_SIZE

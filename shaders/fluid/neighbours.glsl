@@ -4,29 +4,11 @@
 // particles are found through their own grid (fluid/boundary.glsl). The including kernel declares the cell-ordered array the positions come from as `neighbourPos[]` (a #define)
 // and, before including this file,
 //   void onFluid(uint j, vec3 r, float r2);      // r = p − p_j, r2 = |r|² < h²
-// With NEIGHBOUR_LIST the candidates are the step's list (fluid/neighbour_list.comp: every particle
-// within h·(1 + skin) when the step began), not the grid: fewer, and read once per step.
 #ifndef FLUID_NEIGHBOURS_GLSL
 #define FLUID_NEIGHBOURS_GLSL
 
 #include "common/grid.glsl"
 
-#ifdef NEIGHBOUR_LIST
-layout(std430, binding = FLUID_NEIGHBOURS) readonly buffer Neighbours { uint neighbours[]; };
-uniform uint uListStride;  // words between a particle's entries: entry k of particle i is [k·stride + i]
-                           // (neighbouring invocations read neighbouring words)
-
-void forEachFluid(uint i, vec3 p) {
-  const float h2 = uH * uH;
-  const uint n = neighbours[i];
-  for (uint k = 1u; k <= n; ++k) {
-    const uint j = neighbours[k * uListStride + i];
-    const vec3 r = p - neighbourPos[j].xyz;
-    const float r2 = dot(r, r);
-    if (r2 < h2) onFluid(j, r, r2);
-  }
-}
-#else
 layout(std430, binding = FLUID_CELL_START) readonly buffer CellStart { uint cellStart[]; };
 uniform int uReach;  // cells each way that cover h
 
@@ -66,6 +48,5 @@ void forEachGridNeighbour(vec3 p, float reach) {
 }
 
 void forEachFluid(uint i, vec3 p) { forEachGridNeighbour(p, uH); }
-#endif
 
 #endif

@@ -4,8 +4,7 @@
 // particle's slot in its cell becomes its rank by index among the cell's members, which no
 // scheduling can change. A cell of more than GRID_STABLE_MAX_CELL particles keeps its atomic
 // slots: ranking is O(count) per particle. What the pass does with the rank:
-//   ARRAYS = 0, WRITE_PERMUTATION = 0   indexInCell[i] = rank (a scatter pass reads it)
-//   ARRAYS = 0, WRITE_PERMUTATION = 1   permutation[slot] = i, the gather's permutation
+//   ARRAYS = 0                          indexInCell[i] = rank (a scatter pass reads it)
 //   ARRAYS > 0                          the stable scatter itself: dst[slot] = src[i] for ARRAYS
 //                                       arrays, permutation[slot] = i with WRITE_PERMUTATION, and
 //                                       with KEEP_RANK indexInCell[i] = rank for later batches
@@ -65,8 +64,6 @@ void main() {
 #if WRITE_PERMUTATION
   permutation[slot] = i;
 #endif
-#elif WRITE_PERMUTATION
-  permutation[slot] = i;
 #else
   indexInCell[i] = rank;
 #endif

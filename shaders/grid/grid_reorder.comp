@@ -2,8 +2,8 @@
 // Reorder pass of the uniform grid (src/grid/grid.h): particle i moves to slot
 // cellStart[cell] + indexInCell[i], for ARRAYS (0..GRID_REORDER_MAX_ARRAYS) arrays at once
 // (src -> dst, double-buffered: no copy back) of the layout's elements (grid/positions.glsl).
-// With WRITE_PERMUTATION, permutation[slot] = i; with ARRAYS = 0 that is the first pass of the
-// gather reorder (grid_gather.comp reads the permutation).
+// With WRITE_PERMUTATION, permutation[slot] = i; with ARRAYS = 0 that is the stable grid's
+// members pass (the permutation bound to its members).
 // The cell is the one the count pass stored (particleCell), not recomputed from the positions:
 // 4 bytes read per particle instead of 16 (the members and permutation passes move no array).
 layout(local_size_x = 256) in;

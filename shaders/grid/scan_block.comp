@@ -6,8 +6,6 @@
 //   uOffsets = 2 (fused reduce-then-scan): the sums are scan_reduce's, unscanned; the group adds
 //                up blockSums[0..block) itself (coalesced uvec4 loads and the shared-memory tree,
 //                while its own block's loads are in flight) and adds that while storing.
-//   uWriteSums = 1 (scan-then-propagate): writes the block's sum to blockSums[block] instead;
-//                scan_add.comp adds the offsets afterwards.
 // The last block also writes its total (plus its offset) to out[uCount].
 #include "grid/scan_group.glsl"
 #include "grid/scan_io.glsl"
@@ -15,7 +13,6 @@
 layout(std430, binding = SCAN_BLOCK_SUMS_VEC) readonly buffer BlockSumsVec { uvec4 blockSumsVec[]; };
 
 uniform uint uOffsets;  // 0: none, 1: blockSums[block] (scanned), 2: sum of blockSums[0..block)
-uniform uint uWriteSums;
 
 shared uint sChunk[SCAN_PAD(WG * VECS)];  // per-chunk sums, then per-chunk prefixes, element order
 
@@ -69,7 +66,6 @@ void main() {
   // 3. Add chunk prefix and block offset, store (coalesced, like the loads).
   for (uint k = 0u; k < VECS; ++k) storeChunk(block, k, partial, v[k] + (sChunk[SCAN_PAD(k * WG + t)] + offset));
   if (t == 0u) {
-    if (uWriteSums != 0u) blockSums[block] = total;
     if (block + 1u == blockCount()) outWord[uCount] = offset + total;
   }
 }

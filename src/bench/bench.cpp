@@ -118,12 +118,9 @@ StepWindow parseStepWindow(const std::string& text) {
   return {std::stoi(m[1]), std::stoi(m[2])};
 }
 
-PassTimes timePasses(int warmup, int timed, const std::function<void(gl::GpuProfiler&)>& frame, bool wallClock,
-                     Timers timers) {
+PassTimes timePasses(int warmup, int timed, const std::function<void(gl::GpuProfiler&)>& frame, bool wallClock) {
   const bool software = wallClock || softwareRenderer();  // timer queries that do not measure: time whole frames
   gl::GpuProfiler profiler;
-  profiler.setEnabled(timers != Timers::Off);
-  profiler.setIsolated(timers == Timers::Isolated);
   PassTimes t;
   std::chrono::steady_clock::time_point windowStart;
   // A timestamp before each timed frame and one after the last (not on software: it does not measure).
@@ -239,10 +236,6 @@ std::vector<std::size_t> parseSizes(const std::string& text) {
   }
   if (out.empty()) throw Error("no sizes given");
   return out;
-}
-
-std::vector<grid::ReorderMode> parseReorderModes(const std::string& text) {
-  return parseChoices<grid::ReorderMode>(text, grid::kReorderModeNames, "--reorder");
 }
 
 std::vector<bool> parseOnOff(const std::string& text, const std::string& option) {

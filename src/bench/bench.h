@@ -16,7 +16,6 @@
 #include "gl/context.h"
 #include "gl/gpu_profiler.h"
 #include "gl/shader_library.h"
-#include "grid/reorder_mode.h"
 
 namespace tidepool::bench {
 
@@ -73,13 +72,10 @@ double medianMs(const Common& common, bool wallClock, const std::function<void()
 double gpuMedianMs(const Common& common, const std::function<void()>& work);
 
 // Per-pass times of a run of profiled frames (balls steps, renderer frames): `frame` is called
-// warmup + timed times, each inside one GpuProfiler frame; the warm-up frames are not kept.
-// How the passes of a timed frame are clocked: GL_TIME_ELAPSED around each with the frames queued
-// back to back (what the UI shows; on the H100 a pass's time then includes its wait behind the
-// passes before it), the same with a glFinish before each pass (each pass's own time), or no
-// per-pass queries at all (the frame's time still comes from PassTimes::stream).
-enum class Timers { Queued, Isolated, Off };
-inline constexpr std::array<const char*, 3> kTimersNames = {"queued", "isolated", "off"};
+// warmup + timed times, each inside one GpuProfiler frame; the warm-up frames are not kept. The
+// passes are clocked by GL_TIME_ELAPSED around each with the frames queued back to back (what the
+// UI shows; on the H100 a pass's time then includes its wait behind the passes before it); the
+// frame's own time comes from PassTimes::stream.
 
 struct PassTimes {
   std::map<std::string, std::vector<double>> passes;  // GPU ms per timed frame, by scope name (summed within a frame)
@@ -97,10 +93,8 @@ struct PassTimes {
   double streamMeanMs() const;  // 0 without the stream clock
 };
 // wallClock: time whole frames around glFinish, as on a software renderer, for frames that wait
-// on the GPU part-way (a read-back): GL_TIME_ELAPSED across such a wait misses part of the frame
-// (docs/PERFORMANCE.md §16).
-PassTimes timePasses(int warmup, int timed, const std::function<void(gl::GpuProfiler&)>& frame, bool wallClock = false,
-                     Timers timers = Timers::Queued);
+// on the GPU part-way (a read-back): GL_TIME_ELAPSED across such a wait misses part of the frame.
+PassTimes timePasses(int warmup, int timed, const std::function<void(gl::GpuProfiler&)>& frame, bool wallClock = false);
 
 // Keeps the GPU busy with buffer copies for about `ms` of wall-clock time. GPUs lower their clocks
 // when idle, and a few warm-up repeats of a sub-millisecond kernel do not bring them back: on the
@@ -131,8 +125,8 @@ auto parseList(const std::string& text, One&& one, const std::string& none) {
   if (out.empty()) throw Error(none);
   return out;
 }
-// "a,b" of a choice's names -> its values in that order, for `option` (e.g. "--reorder");
-// throws Error naming the bad token and the names ("'x' is not scatter or gather").
+// "a,b" of a choice's names -> its values in that order, for `option` (e.g. "--format");
+// throws Error naming the bad token and the names ("'x' is not vtk or ply").
 template <class E, std::size_t N>
 std::vector<E> parseChoices(const std::string& text, const std::array<const char*, N>& names,
                             const std::string& option) {
@@ -147,8 +141,6 @@ std::vector<E> parseChoices(const std::string& text, const std::array<const char
 }
 // "65536,1M,16M", "2^16..2^24" or "512..4096" (doubling) -> sizes; throws Error naming the bad token.
 std::vector<std::size_t> parseSizes(const std::string& text);
-// "scatter,gather" -> grid reorder modes in that order; throws Error naming the bad token.
-std::vector<grid::ReorderMode> parseReorderModes(const std::string& text);
 // "on,off" -> flags in that order for `option` (e.g. "--deterministic"); throws Error naming the bad token.
 std::vector<bool> parseOnOff(const std::string& text, const std::string& option);
 

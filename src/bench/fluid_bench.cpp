@@ -36,63 +36,40 @@ float spacingFor(const fluid::Params& p, std::size_t n) {
   return float(std::cbrt(double(extent.x) * extent.y * extent.z / double(n)));
 }
 
-std::vector<float> parseCells(const std::string& text) {
-  std::vector<float> out;
-  std::stringstream ss(text);
-  for (std::string item; std::getline(ss, item, ',');) {
-    char* end = nullptr;
-    const float c = std::strtof(item.c_str(), &end);
-    if (item.empty() || *end != '\0' || !(c >= 0.25f && c <= 1.0f))
-      throw Error("--cell '" + item + "' is not a fraction of h in [0.25, 1]");
-    out.push_back(c);
-  }
-  return out;
-}
-
 int run(Env& env, const std::string& sceneName, const std::string& sizes, const std::string& iterations,
-        const std::string& cells, const std::string& lists, const std::string& deterministic,
-        const std::string& window) {
+        const std::string& deterministic, const std::string& window) {
   const Scene scene = loadScene(resolveScenePath(sceneName));
   const fluid::Params base = fluidScene(scene).model;
   const StepWindow w = parseStepWindow(window);
   const bool block = base.water.fill == balls::Fill::Block;
   std::printf("fluid benchmark on %s: scene %s, steps %d..%d, medians per step\n", env.device.c_str(),
               scene.name.c_str(), w.first, w.last);
-  const std::vector<float> cellFractions = cells.empty() ? std::vector<float>{base.gridCell} : parseCells(cells);
-  const std::vector<bool> listModes =
-      lists.empty() ? std::vector<bool>{base.neighbourList} : parseOnOff(lists, "--list");
   const std::vector<bool> orders = deterministic.empty() ? std::vector<bool>{base.water.deterministic}
                                                          : parseOnOff(deterministic, "--deterministic");
-  Table table({"particles", "spacing", "iters", "list", "determ.", "cell/h", "cells", "predict ms", "count ms",
-               "scan ms", "reorder ms", "list ms", "lambda ms", "delta ms", "velocity ms", "viscosity ms", "ms/step",
-               "steps/s", "bytes/particle"});
+  Table table({"particles", "spacing", "iters", "determ.", "cells", "predict ms", "count ms", "scan ms", "reorder ms",
+               "lambda ms", "delta ms", "velocity ms", "viscosity ms", "ms/step", "steps/s", "bytes/particle"});
   const std::vector<std::size_t> counts = block ? parseSizes(sizes) : std::vector<std::size_t>{0};
   for (std::size_t n : counts)
     for (int k : parseIterations(iterations))
-      for (bool list : listModes)
-        for (float cell : cellFractions)
-          for (bool stable : orders) {
-            fluid::Params p = base;
-            p.gridCell = cell;
-            p.water.deterministic = stable;
-            p.neighbourList = list;
-            if (block) {
-              p.spacing = spacingFor(base, n);
-              if (p.water.maxParticles > 0) p.water.maxParticles = std::max(p.water.maxParticles, int(n + n / 8));
-            }
-            p.iterations = k;
-            fluid::Fluid model(env.shaders, p);
-            const PassTimes t = timePasses(w.first, w.last - w.first, [&](gl::GpuProfiler& g) { model.stepOnce(&g); });
-            const double perStep = t.frameMs();
-            table.add({std::to_string(model.count()), fixed(p.spacing, 5), std::to_string(k), list ? "on" : "off",
-                       stable ? "on" : "off", fixed(cell, 2), std::to_string(model.cells()),
-                       fixed(t.median("fluid.predict"), 4), fixed(t.median("fluid.count"), 4),
-                       fixed(t.median("fluid.scan"), 4), fixed(t.median("fluid.reorder"), 4),
-                       fixed(t.median("fluid.neighbours"), 4), fixed(t.median("fluid.lambda"), 4),
-                       fixed(t.median("fluid.delta"), 4), fixed(t.median("fluid.velocity"), 4),
-                       fixed(t.median("fluid.viscosity"), 4), fixed(perStep, 4),
-                       fixed(perStep > 0 ? 1000.0 / perStep : 0.0, 0), std::to_string(model.bytesPerParticle())});
-          }
+      for (bool stable : orders) {
+        fluid::Params p = base;
+        p.water.deterministic = stable;
+        if (block) {
+          p.spacing = spacingFor(base, n);
+          if (p.water.maxParticles > 0) p.water.maxParticles = std::max(p.water.maxParticles, int(n + n / 8));
+        }
+        p.iterations = k;
+        fluid::Fluid model(env.shaders, p);
+        const PassTimes t = timePasses(w.first, w.last - w.first, [&](gl::GpuProfiler& g) { model.stepOnce(&g); });
+        const double perStep = t.frameMs();
+        table.add({std::to_string(model.count()), fixed(p.spacing, 5), std::to_string(k), stable ? "on" : "off",
+                   std::to_string(model.cells()), fixed(t.median("fluid.predict"), 4),
+                   fixed(t.median("fluid.count"), 4), fixed(t.median("fluid.scan"), 4),
+                   fixed(t.median("fluid.reorder"), 4), fixed(t.median("fluid.lambda"), 4),
+                   fixed(t.median("fluid.delta"), 4), fixed(t.median("fluid.velocity"), 4),
+                   fixed(t.median("fluid.viscosity"), 4), fixed(perStep, 4),
+                   fixed(perStep > 0 ? 1000.0 / perStep : 0.0, 0), std::to_string(model.bytesPerParticle())});
+      }
   return finish(env, table, "; its per-pass timer queries read 0");
 }
 
@@ -102,21 +79,16 @@ Benchmark addFluidBench(CLI::App& bench) {
   auto* sub =
       bench.add_subcommand("fluid", "fluid (PBF) step: ms per pass over a step window, steps/s, bytes per particle");
   struct Opts {
-    std::string scene = "bench-fluid", sizes = "65536,1M", iterations = "4", cells, lists, deterministic,
-                window = "10:110";
+    std::string scene = "bench-fluid", sizes = "65536,1M", iterations = "4", deterministic, window = "10:110";
   };
   auto o = std::make_shared<Opts>();
   sub->add_option("scene", o->scene, "scene (default bench-fluid)");
   sub->add_option("--n", o->sizes, "particle counts for block scenes, e.g. 65536,1M,4M");
   sub->add_option("--iterations", o->iterations, "solver iterations, one row each, e.g. 2,4,8");
-  sub->add_option("--cell", o->cells, "neighbour grid cells as fractions of h, one row each, e.g. 1,0.5");
-  sub->add_option("--list", o->lists, "neighbour list on or off, one row each, e.g. on,off");
   sub->add_option("--deterministic", o->deterministic,
                   "stable grid order (bit-identical runs) on or off, one row each, e.g. on,off");
   sub->add_option("--steps", o->window, "timed step window FIRST:LAST");
-  return {sub, [o](Env& env) {
-            return run(env, o->scene, o->sizes, o->iterations, o->cells, o->lists, o->deterministic, o->window);
-          }};
+  return {sub, [o](Env& env) { return run(env, o->scene, o->sizes, o->iterations, o->deterministic, o->window); }};
 }
 
 }  // namespace tidepool::bench

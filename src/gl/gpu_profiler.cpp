@@ -75,7 +75,6 @@ GpuProfiler::Scope GpuProfiler::scope(std::string_view name) {
   Slot& slot = m_slots[m_current];
   if (slot.queries.size() <= slot.names.size()) slot.queries.push_back(Query::create());
   slot.names.emplace_back(name);
-  if (m_isolated) glFinish();
   glBeginQuery(GL_TIME_ELAPSED, slot.queries[slot.names.size() - 1].id());
   m_inScope = true;
   return Scope(this);

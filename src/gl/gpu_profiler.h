@@ -42,9 +42,6 @@ class GpuProfiler {
 
   void setEnabled(bool enabled) { m_enabled = enabled; }
   bool enabled() const { return m_enabled; }
-  // Isolated: a glFinish before each scope, so that a pass's GL_TIME_ELAPSED holds only its own
-  // work, not the wait behind the passes queued before it (benchmarks only: it stalls the CPU).
-  void setIsolated(bool isolated) { m_isolated = isolated; }
 
   void beginFrame();  // harvests finished frames without waiting
   [[nodiscard]] Scope scope(std::string_view name);
@@ -69,7 +66,7 @@ class GpuProfiler {
 
   std::array<Slot, 3> m_slots;
   int m_current = 0;
-  bool m_inFrame = false, m_inScope = false, m_enabled = true, m_isolated = false;
+  bool m_inFrame = false, m_inScope = false, m_enabled = true;
   int m_dropped = 0;
   std::vector<Pass> m_passes;
   std::deque<FrameTimes> m_completed;

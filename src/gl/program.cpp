@@ -1,7 +1,5 @@
 #include "gl/program.h"
 
-#include "gl/dispatch_gate.h"
-
 #include <glm/gtc/type_ptr.hpp>
 
 namespace tidepool::gl {
@@ -62,9 +60,9 @@ void Program::dispatchThreads(std::size_t threads) const {
   }();
   const std::size_t x = std::min<std::size_t>(groups, std::size_t(maxX));
   const std::size_t y = (groups + x - 1) / x;
-  DispatchGate::dispatch({GLuint(x), GLuint(y), 1u});
+  glDispatchCompute(GLuint(x), GLuint(y), 1u);
 }
 
-void Program::dispatch(glm::uvec3 groups) const { DispatchGate::dispatch(groups); }
+void Program::dispatch(glm::uvec3 groups) const { glDispatchCompute(groups.x, groups.y, groups.z); }
 
 }  // namespace tidepool::gl

@@ -68,7 +68,6 @@ UniformGrid::UniformGrid(gl::ShaderLibrary& shaders, const GridParams& params, s
   m_scan.reserve(cells());
   if (particleCapacity) m_indexInCell = gl::Buffer(particleCapacity * kWord);
   if (particleCapacity) m_particleCell = gl::Buffer(particleCapacity * kWord);
-  if (particleCapacity && params.reorder == ReorderMode::Gather) m_permutation = gl::Buffer(particleCapacity * kWord);
   if (particleCapacity && params.stable) m_members = gl::Buffer(particleCapacity * kWord);
 }
 
@@ -133,14 +132,12 @@ void UniformGrid::reorder(const gl::Buffer& positions, std::span<const ReorderAr
                           GRID_PARTICLE_CELL);  // the passes read the cells, not the positions
   m_indexInCell.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_INDEX_IN_CELL);
   m_cellStart.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_CELL_START);
-  if (m_params.reorder == ReorderMode::Gather && !arrays.empty()) {
-    gather(arrays, permutation);
-  } else if (m_params.stable && !arrays.empty() && arrays[0].src->id() == positions.id() &&
-             !gl::needsWindows(n, elementBytes())) {  // its positions and members share a binding
+  if (m_params.stable && !arrays.empty() && arrays[0].src->id() == positions.id() &&
+      !gl::needsWindows(n, elementBytes())) {  // its positions and members share a binding
     rankAndScatter(arrays, permutation);
   } else {
-    if (m_params.stable) rankWithinCells(nullptr);
-    scatter(arrays, permutation);  // a permutation alone is the gather's first pass anyway
+    if (m_params.stable) rankWithinCells();
+    scatter(arrays, permutation);
   }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
@@ -195,50 +192,15 @@ void UniformGrid::scatter(std::span<const ReorderArray> arrays, gl::Buffer* perm
   } while (first < arrays.size());
 }
 
-// The permutation pass (the scatter without arrays), then batches of GRID_REORDER_MAX_ARRAYS
-// arrays gathered in slot order.
-void UniformGrid::gather(std::span<const ReorderArray> arrays, gl::Buffer* permutation) {
-  if (!permutation) {
-    if (m_permutation.size() < m_count * kWord) m_permutation = gl::Buffer(m_count * kWord);
-    permutation = &m_permutation;
-  }
-  if (m_params.stable) {
-    rankWithinCells(permutation);
-  } else {
-    permutation->bindBase(GL_SHADER_STORAGE_BUFFER, GRID_PERMUTATION);
-    reorderPass(0, true).dispatchThreads(m_count);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  }
-  const std::vector<gl::Window> windows = gl::windows(m_count, elementBytes());
-  for (std::size_t first = 0; first < arrays.size(); first += GRID_REORDER_MAX_ARRAYS)
-    for (const gl::Window& dst : windows)  // each particle lies in one source window
-      for (const gl::Window& src : windows) {
-        const std::size_t batch = bindBatch(arrays, first, src, dst);
-        gl::Program*& program = m_gatherPass[batch];
-        if (!program)
-          program = &m_shaders->program({"grid/grid_gather.comp"},
-                                        {{"ARRAYS", std::to_string(batch)}, {"HALF_POSITIONS", halfDefine(m_params)}});
-        program->use();
-        program->set("uFirst", uint32_t(dst.first));
-        program->set("uCount", uint32_t(dst.end()));
-        program->set("uSrcFirst", uint32_t(src.first));
-        program->set("uSrcCount", uint32_t(src.count));
-        program->dispatchThreads(dst.count);
-      }
-}
-
-// The members pass is the scatter of the particle index (the gather's permutation pass) into
-// m_members; the rank pass then gives each particle its rank among them: into indexInCell for
-// the scatter, or straight into the gather's permutation (saving the gather its own pass).
-void UniformGrid::rankWithinCells(gl::Buffer* permutation) {
+// The members pass is the scatter of the particle index into m_members; the rank pass then gives
+// each particle its rank among them, into indexInCell for the scatter.
+void UniformGrid::rankWithinCells() {
   writeMembers();
-  gl::Program& program = rankPass(0, permutation != nullptr, false);
+  gl::Program& program = rankPass(0, false, false);
   m_members.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_MEMBERS);
-  if (permutation) permutation->bindBase(GL_SHADER_STORAGE_BUFFER, GRID_PERMUTATION);
   program.dispatchThreads(m_count);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
-
 // The members pass: the scatter of each particle's index into its cell, in atomic order.
 void UniformGrid::writeMembers() {
   if (m_members.size() < m_count * kWord) m_members = gl::Buffer(m_count * kWord);
@@ -279,8 +241,8 @@ void UniformGrid::rankAndScatter(std::span<const ReorderArray> arrays, gl::Buffe
 }
 
 std::size_t UniformGrid::memoryBytes() const {
-  return m_cellCount.size() + m_cellStart.size() + m_indexInCell.size() + m_particleCell.size() + m_permutation.size() +
-         m_members.size() + m_scan.memoryBytes();
+  return m_cellCount.size() + m_cellStart.size() + m_indexInCell.size() + m_particleCell.size() + m_members.size() +
+         m_scan.memoryBytes();
 }
 
 }  // namespace tidepool::grid

@@ -11,29 +11,22 @@
 //            dst         = {p1, p5, p0, p2, p4, p3}   cell c is dst[cellStart[c] .. cellStart[c + 1])
 //            permutation = {1, 5, 0, 2, 4, 3}        permutation[slot] = original index (optional)
 //
-// The reorder runs one of two ways (GridParams::reorder, setReorderMode(); grid/reorder_mode.h):
-//   scatter  one pass, particle i writes dst[slot] = src[i]: coalesced reads, random writes
-//   gather   permutation pass (the scatter of a 4-byte word per particle), then one pass per
-//            batch of arrays in slot order, dst[slot] = src[permutation[slot]]: random reads,
-//            coalesced writes. Without a caller's permutation buffer the grid keeps its own.
-// Both place particle i at the same slot, so they give identical arrays and permutations.
+// The reorder is a scatter: particle i writes dst[slot] = src[i] (coalesced reads, random writes).
 //
 // Determinism (GridParams::stable, on by default): cellCount and cellStart are the same on every
 // run, but the count pass's atomicAdd hands out the slots within a cell in scheduling order. A
 // stable grid ranks each cell's particles by their index before the reorder, in two more passes:
 //   members  members[cellStart[cell] + atomic slot] = i      (the cell's particles, any order)
-//   rank     indexInCell[i] = #{ members of i's cell < i }   (the same on every run); the gather
-//            writes permutation[cellStart[cell] + rank] = i instead, in place of its own pass;
-//            when the positions are the first array, the scatter moves the arrays from the rank
-//            pass itself (one pass less)
+//   rank     indexInCell[i] = #{ members of i's cell < i }   (the same on every run); when the
+//            positions are the first array, the rank pass moves the arrays itself (one pass less)
 //   cell 2 holds particles {0, 2, 4}; atomicAdd gave them slots {2, 0, 1} -> ranks {0, 1, 2}
 // so the reordered arrays and the permutation are a stable counting sort: bit-identical runs for
 // the models that sum over neighbours in grid order. A cell of more than GRID_STABLE_MAX_CELL
 // particles (a blow-up piling into a border cell) keeps its atomic order rather than spend
 // O(count^2) there. With stable = false the grid skips both passes (atomicAdd order).
 // Arrays larger than one storage block (GL_MAX_SHADER_STORAGE_BLOCK_SIZE) move a window at a time
-// (gl/window.h): the count pass one dispatch per window of positions, the scatter and the gather
-// one per pair of source and destination windows (each kernel skips the particles whose other end
+// (gl/window.h): the count pass one dispatch per window of positions, the scatter one per pair of
+// source and destination windows (each kernel skips the particles whose other end
 // lies outside its pair). The per-particle words (cells, ranks, members, permutation) and the cell
 // arrays stay whole: they bound the particle count at the limit / 4 bytes.
 // Positions are vec4 (xyz + w) std430 SSBOs, or for a 2D grid with Layout::Half2 uvec2 (x =
@@ -63,7 +56,6 @@
 #include "grid/bindings.glsl"
 #include "grid/grid_reference.h"
 #include "grid/prefix_scan.h"
-#include "grid/reorder_mode.h"
 
 namespace tidepool::grid {
 
@@ -78,8 +70,7 @@ struct GridParams {
   glm::vec3 domainMax{1.0f};  // world units; z equal to domainMin.z makes a 2D grid (one layer)
   float cellSize = 0.1f;      // world units; at least the model's interaction radius
   Layout layout = Layout::Vec4;
-  ReorderMode reorder = ReorderMode::Scatter;  // how reorder() moves the arrays (see above)
-  bool stable = true;                          // order within a cell by particle index (see above)
+  bool stable = true;  // order within a cell by particle index (see above)
 };
 
 // One array to move by reorder(): src is read in particle order, dst written in cell order.
@@ -112,10 +103,8 @@ class UniformGrid {
     reorder(positions, std::span<const ReorderArray>(arrays.begin(), arrays.size()), permutation);
   }
 
-  void setUniforms(const gl::Program& program) const;                 // uGridOrigin, uGridInvCellSize, uGridDims
-  void setReorderMode(ReorderMode mode) { m_params.reorder = mode; }  // for the next reorder()
-  void setStable(bool stable) { m_params.stable = stable; }           // for the next reorder()
-  ReorderMode reorderMode() const { return m_params.reorder; }
+  void setUniforms(const gl::Program& program) const;        // uGridOrigin, uGridInvCellSize, uGridDims
+  void setStable(bool stable) { m_params.stable = stable; }  // for the next reorder()
 
   const GridParams& params() const { return m_params; }
   const reference::GridShape& shape() const { return m_shape; }
@@ -129,7 +118,7 @@ class UniformGrid {
     return m_indexInCell;
   }  // uint per particle (stable: the rank, after reorder)
   const gl::Buffer& particleCell() const { return m_particleCell; }  // uint per particle, its cell (count pass)
-  std::size_t memoryBytes() const;  // all GPU buffers the grid owns, scan levels and gather permutation included
+  std::size_t memoryBytes() const;  // all GPU buffers the grid owns, scan levels included
   std::size_t elementBytes() const { return m_params.layout == Layout::Half2 ? 8 : 16; }  // of positions and arrays
 
  private:
@@ -142,19 +131,16 @@ class UniformGrid {
   // Stable grid (grid_rank.comp) [arrays it moves][writes permutation][keeps the rank], made on use.
   gl::Program* m_rankPass[GRID_REORDER_MAX_ARRAYS + 1][2][2] = {};
   gl::Program* m_reorderPass[GRID_REORDER_MAX_ARRAYS + 1][2] = {};  // [arrays][writes permutation], made on use
-  gl::Program* m_gatherPass[GRID_REORDER_MAX_ARRAYS + 1] = {};      // [arrays], made on use
   PrefixScan m_scan;
   gl::Buffer m_cellCount, m_cellStart, m_indexInCell, m_particleCell;
-  gl::Buffer m_permutation;  // gather mode without a caller's permutation: uint per particle
-  gl::Buffer m_members;      // stable grid: each cell's particles in atomic order, uint per particle
+  gl::Buffer m_members;  // stable grid: each cell's particles in atomic order, uint per particle
 
   gl::Program& reorderPass(std::size_t arrays, bool writePermutation);
   std::size_t bindBatch(std::span<const ReorderArray> arrays, std::size_t first, const gl::Window& src,
                         const gl::Window& dst) const;
   void scatter(std::span<const ReorderArray> arrays, gl::Buffer* permutation, std::size_t first = 0);
-  void gather(std::span<const ReorderArray> arrays, gl::Buffer* permutation);
-  // Stable grid: the rank by index (see above) into indexInCell, or as the gather's permutation.
-  void rankWithinCells(gl::Buffer* permutation);
+  // Stable grid: the rank by index (see above) into indexInCell.
+  void rankWithinCells();
   void writeMembers();
   gl::Program& rankPass(std::size_t arrays, bool writePermutation, bool keepRank);  // in use, uniforms set
   // Stable scatter with the positions as arrays[0]: the rank pass moves the first batch itself.

@@ -45,8 +45,7 @@ PrefixScan::PrefixScan(gl::ShaderLibrary& shaders, Config config)
     : m_config(config),
       m_maxBlockBytes(gl::storageBlockBytes()),
       m_reduce(&shaders.program({"grid/scan_reduce.comp"}, scanDefines(config))),
-      m_block(&shaders.program({"grid/scan_block.comp"}, scanDefines(config))),
-      m_add(&shaders.program({"grid/scan_add.comp"}, scanDefines(config))) {}
+      m_block(&shaders.program({"grid/scan_block.comp"}, scanDefines(config))) {}
 
 std::size_t PrefixScan::blocksOf(std::size_t n) const {
   return std::max<std::size_t>(1, (n + m_config.block() - 1) / m_config.block());
@@ -69,7 +68,7 @@ std::size_t PrefixScan::memoryBytes() const {
 std::size_t PrefixScan::dispatchesFor(std::size_t n) const {
   std::size_t dispatches = 0;
   for (; n > m_config.block(); n = blocksOf(n)) {
-    dispatches += 2;  // scan_reduce + scan_block (propagate: scan_block + scan_add)
+    dispatches += 2;  // scan_reduce + scan_block
     if (m_config.fuses(blocksOf(n))) return dispatches;
   }
   return dispatches + 1;  // the top: one work group
@@ -84,9 +83,7 @@ void PrefixScan::run(const gl::Buffer& in, gl::Buffer& out, std::size_t n) {
 void PrefixScan::scanLevel(const gl::Buffer& in, gl::Buffer& out, std::size_t n, std::size_t level) {
   const std::size_t blocks = blocksOf(n);
   gl::Buffer* sums = blocks > 1 ? &m_sums[level] : nullptr;
-  const bool reduceFirst = sums && !m_config.propagate;
   const bool fused = m_config.fuses(blocks);  // scan_block sums blockSums[0..b) itself: no level above
-  const bool propagateAfter = sums && m_config.propagate;
   auto bind = [&](const gl::Buffer& src, const gl::Buffer& dst) {
     src.bindBase(GL_SHADER_STORAGE_BUFFER, SCAN_IN_VEC);
     src.bindBase(GL_SHADER_STORAGE_BUFFER, SCAN_IN_WORD);
@@ -101,20 +98,14 @@ void PrefixScan::scanLevel(const gl::Buffer& in, gl::Buffer& out, std::size_t n,
     program.dispatchThreads(blocks * m_config.groupSize);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   };
-  if (reduceFirst) {
+  if (sums) {
     bind(in, out);
     dispatch(*m_reduce);
     if (!fused) scanLevel(*sums, *sums, blocks, level + 1);  // block sums -> block offsets, in place
   }
   bind(in, out);  // again: the recursion rebinds the same points
-  m_block->set("uOffsets", fused ? 2u : reduceFirst ? 1u : 0u);
-  m_block->set("uWriteSums", propagateAfter ? 1u : 0u);
+  m_block->set("uOffsets", fused ? 2u : sums ? 1u : 0u);
   dispatch(*m_block);
-  if (propagateAfter) {
-    scanLevel(*sums, *sums, blocks, level + 1);
-    bind(out, out);
-    dispatch(*m_add);
-  }
 }
 
 NaiveScan::NaiveScan(gl::ShaderLibrary& shaders)

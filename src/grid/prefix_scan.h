@@ -4,10 +4,8 @@
 //   in  = {2, 0, 3, 1}          (n = 4 uints)
 //   out = {0, 2, 2, 5, 6}       (n + 1 uints)
 //
-// PrefixScan works on blocks of 4096 elements by default, one work group each, in one of two orders
-// (reduce-then-scan: Merrill & Grimshaw 2009; scan-then-propagate: Harris, Sengupta & Owens,
-// GPU Gems 3 ch. 39, 2007):
-//   reduce-then-scan (default), level L of n_L elements in B_L blocks:
+// PrefixScan works on blocks of 4096 elements, one work group each, in the reduce-then-scan order
+// (Merrill & Grimshaw 2009), level L of n_L elements in B_L blocks:
 //     scan_reduce   blockSums[b] = sum of block b                         reads n_L
 //     (scan blockSums in place: level L + 1, recursively)
 //     scan_block    scan each block in shared memory, + blockSums[b]     reads n_L, writes n_L
@@ -15,25 +13,20 @@
 //     scan_reduce   blockSums[b] = sum of block b                         reads n_L
 //     scan_block    offset = blockSums[0] + ... + blockSums[b - 1], summed by the work group itself
 //                   (no dispatch scans the sums), + scan each block      reads n_L + B_L^2 / 2, writes n_L
-//   scan-then-propagate (ScanConfig::propagate, the textbook order, kept to measure against):
-//     scan_block    scan each block, write blockSums[b]                  reads n_L, writes n_L
-//     (scan blockSums in place, recursively)
-//     scan_add      out[i] += blockSums[b]  (the uniform add)             reads n_L, writes n_L
 //   A level of at most one block is a single work group with no offsets: the top.
-// Reduce-then-scan moves 3 N words at level 0 against 4 N, which is what lets the scan approach
-// copy bandwidth; its uniform add is fused into scan_block's store. Unfused, 16M elements take
+// Reduce-then-scan moves 3 N words at level 0 against the textbook scan-then-propagate's 4 N (docs/
+// ARCHITECTURE.md, "Rejected designs"), which is what lets the scan approach copy bandwidth; its
+// uniform add is fused into scan_block's store. Unfused, 16M elements take
 // three dispatches: reduce (4096 groups), one group over the 4096 sums, scan (4096 groups). Fused
 // (the default fuseMaxBlocks of 4096 fuses every level up to 16M), 1M elements (256 blocks) take
 // two: reduce, then scan, each of the 256 groups summing the block sums before its own (at most
 // 255 words, from L2). A dispatch costs microseconds of launch and drain, the middle one more than
 // its tiny work; the fused sums grow as B^2 / 2 words, 32 MB of L2 reads at 4096 blocks, hence the
-// threshold. Measured on the H100 (`tidepool bench grid --scan-shapes 256x4f0,256x4f4096`,
-// docs/PERFORMANCE.md §3), fusing wins at every size up to 16M: 1M 0.024 -> 0.018 ms, 16M
-// 53.5% -> 57.1% of a copy. Any level may fuse: past 16M, level 1 (the sums, in a few blocks)
-// does, so 16M + 1 elements take four dispatches, not five.
-// Inside a block (default shape): 16 elements per invocation as 4 coalesced uvec4 loads, a scan
-// of the 1024 chunk sums, and a Blelloch up-sweep/down-sweep of the 256 invocation totals in
-// padded shared memory (shaders/grid/scan_group.glsl). No warp or subgroup size is assumed.
+// threshold. Measured on the H100 (docs/PERFORMANCE.md, "Grid"), fusing wins at every size up to 16M: 1M 0.024 -> 0.018
+// ms, 16M 53.5% -> 57.1% of a copy. Any level may fuse: past 16M, level 1 (the sums, in a few blocks) does, so 16M + 1
+// elements take four dispatches, not five. Inside a block (default shape): 16 elements per invocation as 4 coalesced
+// uvec4 loads, a scan of the 1024 chunk sums, and a Blelloch up-sweep/down-sweep of the 256 invocation totals in padded
+// shared memory (shaders/grid/scan_group.glsl). No warp or subgroup size is assumed.
 //
 // NaiveScan is the log2(N)-pass Hillis-Steele scan (as in the particle-life article), kept as
 // the reference for tests and the benchmark.
@@ -51,16 +44,16 @@
 
 namespace tidepool::grid {
 
-// Work-group shape of PrefixScan (compile-time defines of its kernels, one program per shape) and
-// when a level sums its own offsets (a uniform: the same programs serve every fuseMaxBlocks).
+// Work-group shape of PrefixScan (compile-time defines of its kernels) and when a level sums its
+// own offsets. The program uses the defaults; the tests take small blocks to reach the deeper
+// levels of the recursion with few elements.
 struct ScanConfig {
   std::size_t groupSize = 256;       // invocations per work group: a power of two, 32..1024
   std::size_t vecsPerThread = 4;     // uvec4 loads per invocation: 1..16
-  bool propagate = false;            // scan-then-propagate (4 N words moved) instead of reduce-then-scan (3 N)
   std::size_t fuseMaxBlocks = 4096;  // levels of 2..min(this, block()) blocks: 2 dispatches, not 3 (0: never)
   std::size_t block() const { return groupSize * vecsPerThread * 4; }  // elements per work group
   bool fuses(std::size_t blocks) const {  // does a level of `blocks` blocks sum its own offsets?
-    return !propagate && blocks > 1 && blocks <= fuseMaxBlocks && blocks <= block();
+    return blocks > 1 && blocks <= fuseMaxBlocks && blocks <= block();
   }
 };
 
@@ -87,7 +80,6 @@ class PrefixScan {
   std::size_t m_maxBlockBytes;  // queried once: glGet may sync a threaded driver
   gl::Program* m_reduce;
   gl::Program* m_block;
-  gl::Program* m_add;
   std::vector<gl::Buffer> m_sums;  // m_sums[L]: block sums of level L (+1 entry for their total)
 };
 

@@ -8,8 +8,6 @@ namespace tidepool {
 
 void visit(ParamVisitor& v, BallsViewParams& p) {
   v.choice({"mode", "Mode", "balls: shaded spheres; water: screen-space water surface"}, p.mode, kBallsModeNames);
-  v.choice({"raster", "Raster", "sphere impostors drawn by compute kernels (atomics) or by the raster units"}, p.raster,
-           kBallsRasterNames);
   v.choice({"debug", "Debug view", "a G-buffer channel instead of the final picture"}, p.debug, kBallsDebugNames);
   v.flag({"debug_unblurred", "Debug before blur",
           "water: the debug views show the G-buffer before the blur (off: the blurred one the water uses)"},

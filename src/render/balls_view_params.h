@@ -24,7 +24,9 @@ enum class BallsDebug { Final, Local, Normals, Thickness, Depth, ScreenNormals }
 inline constexpr std::array<const char*, 6> kBallsDebugNames = {"final",     "local", "normals",
                                                                 "thickness", "depth", "screen_normals"};
 
-// Who draws the sphere impostors: the shader cores (src/render/balls_splat.h) or the raster units.
+// Who draws the sphere impostors: the shader cores (src/render/balls_splat.h), or the raster units
+// where the balls' arrays pass one storage block (they are drawn a window at a time) and for the
+// tests and `bench render`, which hold the two against each other. Not a scene parameter.
 enum class BallsRaster { Compute, Fragment };
 inline constexpr std::array<const char*, 2> kBallsRasterNames = {"compute", "fragment"};
 
@@ -35,7 +37,7 @@ inline constexpr std::array<const char*, 3> kGridCellsModeNames = {"hidden", "po
 
 struct BallsViewParams {
   BallsMode mode = BallsMode::Balls;
-  BallsRaster raster = BallsRaster::Compute;
+  BallsRaster raster = BallsRaster::Compute;  // not read from scenes (see BallsRaster)
   BallsDebug debug = BallsDebug::Final;
   bool debugUnblurred = false;                      // water: the debug views show the G-buffer before the blur
   GridCellsMode gridCells = GridCellsMode::Hidden;  // the neighbour grid's non-empty cells as wire cubes

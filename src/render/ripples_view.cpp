@@ -14,8 +14,6 @@ void visit(ParamVisitor& v, RipplesViewParams& p) {
   v.real({"view_distance", "View distance", "grid widths of water that look opaque"}, p.viewDistance, 0.01f, 10.0f);
   v.vector({"light_dir", "Light direction", "towards the surface"}, p.lightDir, -10.0f, 10.0f);
   v.real({"tile_repeat", "Tile repeat", "floor tiles across the grid"}, p.tileRepeat, 0.25f, 64.0f);
-  v.choice({"renderer", "Renderer", "compute: a compute pass (fast); raster: a full-screen triangle (reference)"},
-           p.renderer, kRipplesRendererNames);
 }
 
 RipplesView::RipplesView(gl::ShaderLibrary& shaders) : m_shaders(shaders), m_floor(loadRepeatingTexture("tiles.png")) {}

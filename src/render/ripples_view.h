@@ -16,20 +16,21 @@
 
 namespace tidepool {
 
-// How the ripples views draw: compute passes (default; raster units are scarce on compute-first
-// GPUs such as the H100) or the raster pipeline (the original shaders, kept as the reference).
+// How the ripples views draw: compute passes (raster units are scarce on compute-first GPUs such
+// as the H100), or the raster pipeline (the original shaders), which the tests and `bench ripples`
+// hold the compute passes against. Not a scene parameter.
 enum class RipplesRenderer { Compute, Raster };
 inline constexpr std::array<const char*, 2> kRipplesRendererNames = {"compute", "raster"};
 
 struct RipplesViewParams {
-  float slopeScale = 10.0f;                   // exaggerates slopes (1 = physical)
-  float floorDepth = 0.25f;                   // grid widths below the surface
-  float eta = 0.9f;                           // refraction ratio (seed: 0.9)
-  glm::vec3 waterColor{0.10f, 0.16f, 0.45f};  // linear RGB
-  float viewDistance = 0.6f;                  // grid widths of water that look opaque
-  glm::vec3 lightDir{-1.0f, -1.0f, -4.0f};    // seed's light
-  float tileRepeat = 4.0f;                    // floor texture repeats across the grid
-  RipplesRenderer renderer = RipplesRenderer::Compute;
+  float slopeScale = 10.0f;                             // exaggerates slopes (1 = physical)
+  float floorDepth = 0.25f;                             // grid widths below the surface
+  float eta = 0.9f;                                     // refraction ratio (seed: 0.9)
+  glm::vec3 waterColor{0.10f, 0.16f, 0.45f};            // linear RGB
+  float viewDistance = 0.6f;                            // grid widths of water that look opaque
+  glm::vec3 lightDir{-1.0f, -1.0f, -4.0f};              // seed's light
+  float tileRepeat = 4.0f;                              // floor texture repeats across the grid
+  RipplesRenderer renderer = RipplesRenderer::Compute;  // not read from scenes (see RipplesRenderer)
 };
 void visit(ParamVisitor& v, RipplesViewParams& p);
 

@@ -20,9 +20,6 @@ void visit(ParamVisitor& v, RipplesView3DParams& p) {
   v.real({"view_distance", "View distance", "tank widths of water that absorb 63%"}, p.viewDistance, 0.01f, 10.0f);
   v.real({"tile_repeat", "Tile repeat", "floor tiles across the tank"}, p.tileRepeat, 0.25f, 64.0f);
   v.flag({"caustics", "Caustics", "refracted sunlight on the floor"}, p.caustics);
-  v.choice(
-      {"renderer", "Renderer", "compute: caustics splat and ray caster (fast); raster: points and meshes (reference)"},
-      p.renderer, kRipplesRendererNames);
 }
 
 RipplesView3D::RipplesView3D(gl::ShaderLibrary& shaders)

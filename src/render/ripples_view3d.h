@@ -37,7 +37,7 @@ struct RipplesView3DParams {
   float viewDistance = 0.5f;                  // tank widths of water that absorb ~63%
   float tileRepeat = 4.0f;                    // floor tiles across the tank
   bool caustics = true;
-  RipplesRenderer renderer = RipplesRenderer::Compute;
+  RipplesRenderer renderer = RipplesRenderer::Compute;  // not read from scenes (see RipplesRenderer)
 };
 void visit(ParamVisitor& v, RipplesView3DParams& p);
 

@@ -44,86 +44,35 @@ TEST(Bench, RenderPrintsMsPerPassInBothModes) {
   expectOneLineError({"bench", "render", "--raster", "rops"}, "--raster 'rops' is not compute, fragment or both");
 }
 
-TEST(Bench, GridGivesOneCheckedRowPerReorderMode) {
+TEST(Bench, GridGivesACheckedRowPerSizeAndLoad) {
   test::TempDir dir;
-  auto r = runTidepool({"bench", "grid", "--n", "4096", "--ppc", "4", "--reorder", "scatter,gather", "--repeats", "2",
-                        "--warmup", "0", "--csv", (dir / "grid.csv").string()});
+  auto r = runTidepool({"bench", "grid", "--n", "4096,5000", "--ppc", "4", "--repeats", "2", "--warmup", "0", "--csv",
+                        (dir / "grid.csv").string()});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const std::string csv = io::readTextFile(dir / "grid.csv");
-  EXPECT_EQ(csv.rfind("N,cells,ppc,reorder,count_ms,", 0), 0u) << csv;
-  for (const char* mode : {",scatter,", ",gather,"}) {
-    const std::size_t at = csv.find(mode);
-    ASSERT_NE(at, std::string::npos) << mode << "\n" << csv;
-    EXPECT_NE(csv.substr(at, csv.find('\n', at) - at).find(",checked"), std::string::npos) << csv;
+  EXPECT_EQ(csv.rfind("N,cells,ppc,count_ms,", 0), 0u) << csv;
+  for (const char* n : {"\n4096,", "\n5000,"}) {
+    const std::size_t at = csv.find(n);
+    ASSERT_NE(at, std::string::npos) << n << "\n" << csv;
+    EXPECT_NE(csv.substr(at + 1, csv.find('\n', at + 1) - at - 1).find(",checked"), std::string::npos) << csv;
   }
-  expectOneLineError({"bench", "grid", "--n", "4096", "--reorder", "scatter,sideways"},
-                     "--reorder 'sideways' is not scatter or gather");
+  expectOneLineError({"bench", "grid", "--n", "4096", "--ppc", "-1"}, "--ppc '-1' is not a positive number");
 }
 
-// The by-shape scan table names each shape with its fuse suffix and its dispatch count.
-TEST(Bench, GridScanShapesCompareFusedAndScannedOffsets) {
-  auto r = runTidepool({"bench", "grid", "--n", "65536", "--ppc", "4", "--scan-shapes", "256x4f0,256x4f8,256x4,256x4p",
-                        "--repeats", "2", "--warmup", "0"});
-  ASSERT_EQ(r.exitCode, 0) << r.err;
-  EXPECT_EQ(r.out.find("WRONG"), std::string::npos) << r.out;
-  auto dispatchesOf = [&](const std::string& shape) {  // row "N shape dispatches ..." of the by-shape table
-    std::istringstream lines(r.out);
-    for (std::string line; std::getline(lines, line);) {
-      std::istringstream words(line);
-      std::string n, name, dispatches;
-      if (words >> n >> name >> dispatches && n == "65536" && name == shape) return dispatches;
-    }
-    return std::string("no row");
-  };
-  EXPECT_EQ(dispatchesOf("256x4f0"), "3") << r.out;  // 16 blocks: reduce, top, scan
-  EXPECT_EQ(dispatchesOf("256x4f8"), "3") << r.out;  // 16 blocks: more than it fuses
-  EXPECT_EQ(dispatchesOf("256x4"), "2") << r.out;    // the default fuses them
-  EXPECT_EQ(dispatchesOf("256x4p"), "3") << r.out;
-  for (const char* shape : {"256x4q", "256x4f", "256x4f1x", "x4"})
-    expectOneLineError({"bench", "grid", "--n", "4096", "--scan-shapes", shape},
-                       "--scan-shapes '" + std::string(shape) + "' is not like");
-}
-
-TEST(Bench, BallsRunsEachSizeInEachReorderMode) {
+TEST(Bench, BallsRunsEachSizeInEachGridOrder) {
   test::TempDir dir;
-  auto r = runTidepool({"bench", "balls", "bench-lattice", "--n", "4096", "--steps", "1:3", "--reorder",
-                        "scatter,gather", "--csv", (dir / "balls.csv").string()});
-  ASSERT_EQ(r.exitCode, 0) << r.err;
-  const std::string csv = io::readTextFile(dir / "balls.csv");
-  for (const char* mode : {",scatter,", ",gather,"})
-    EXPECT_NE(csv.find(mode), std::string::npos) << mode << "\n" << csv;
-  expectOneLineError({"bench", "balls", "bench-lattice", "--n", "4096", "--reorder", "scatterr"},
-                     "--reorder 'scatterr' is not scatter or gather");
-}
-
-TEST(Bench, BallsClocksThePassesEachWay) {
-  test::TempDir dir;
-  auto r = runTidepool({"bench", "balls", "bench-lattice", "--n", "4096", "--steps", "1:3", "--timers",
-                        "queued,isolated,off", "--csv", (dir / "balls.csv").string()});
+  auto r = runTidepool({"bench", "balls", "bench-lattice", "--n", "4096,8192", "--steps", "1:3", "--deterministic",
+                        "on,off", "--csv", (dir / "balls.csv").string()});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const std::string csv = io::readTextFile(dir / "balls.csv");
   EXPECT_NE(csv.find("mean ms"), std::string::npos) << csv;
-  for (const char* row : {",queued,", ",isolated,", ",off,"})
-    EXPECT_NE(csv.find(row), std::string::npos) << row << "\n" << csv;
-  expectOneLineError({"bench", "balls", "bench-lattice", "--n", "4096", "--timers", "queued,never"},
-                     "--timers 'never' is not");
-}
-
-TEST(Bench, BallsRunsTheGridAndVerletListsAtEachSkin) {
-  test::TempDir dir;
-  auto r = runTidepool({"bench", "balls", "bench-lattice", "--n", "4096", "--steps", "1:4", "--neighbours",
-                        "grid,lists", "--skin", "0.2,0.5", "--csv", (dir / "balls.csv").string()});
-  ASSERT_EQ(r.exitCode, 0) << r.err;
-  const std::string csv = io::readTextFile(dir / "balls.csv");
-  for (const char* row : {",grid,", ",lists 0.20,", ",lists 0.50,"})
+  for (const char* row : {"4096,", "8192,", ",on,", ",off,"})
     EXPECT_NE(csv.find(row), std::string::npos) << row << "\n" << csv;
   std::size_t rows = 0;
   for (char c : csv) rows += c == '\n';
-  EXPECT_EQ(rows, 4u) << csv;  // the header, the grid once, lists once per skin
-  expectOneLineError({"bench", "balls", "bench-lattice", "--n", "4096", "--neighbours", "grid,cells"},
-                     "--neighbours 'cells' is not grid or lists");
-  expectOneLineError({"bench", "balls", "bench-lattice", "--n", "4096", "--neighbours", "lists", "--skin", "9"},
-                     "--skin '9' is not a fraction of r in [0.01, 4]");
+  EXPECT_EQ(rows, 5u) << csv;  // the header, each size in each order
+  expectOneLineError({"bench", "balls", "bench-lattice", "--n", "4096", "--deterministic", "maybe"},
+                     "--deterministic 'maybe' is not");
 }
 
 TEST(Bench, FluidRunsEachSizeAndIterationCount) {

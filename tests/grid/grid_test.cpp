@@ -1,8 +1,7 @@
 // The uniform grid against plain CPU loops: counts are a histogram, cellStart its exclusive scan,
 // the reorder a permutation that makes cells contiguous and in order; 2D and 3D, particles on
-// cell borders and outside the domain; counts and starts are the same on every run. The reorder
-// tests run for both reorder modes (scatter and gather), and the gather must give exactly the
-// scatter's arrays and permutation for the same build.
+// cell borders and outside the domain; counts and starts are the same on every run. Every batch
+// of arrays and every window moves each element bit for bit to the slot the permutation names.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -23,14 +22,6 @@ using namespace tidepool::grid;
 
 namespace {
 class Grid : public test::GlTest {};
-// Tests of the reorder, once per ReorderMode.
-class GridModes : public Grid, public ::testing::WithParamInterface<ReorderMode> {
- protected:
-  GridParams withMode(GridParams p) const {
-    p.reorder = GetParam();
-    return p;
-  }
-};
 
 gl::Buffer vec4Buffer(const std::vector<glm::vec4>& v) {
   return gl::Buffer(std::max<std::size_t>(v.size(), 1) * sizeof(glm::vec4), v.data());
@@ -127,83 +118,69 @@ void checkGrid(gl::ShaderLibrary& shaders, const GridParams& params, const std::
     ASSERT_LT(slots[i], counts[reference::cellOf(shape, glm::vec3(pos[i]))]) << "particle " << i;
 }
 
-// Builds once, reorders with the scatter, then with the gather from the same build, and compares
-// the arrays and the permutations word for word. The two modes' destinations start with
-// different fill words, so a slot one mode leaves unwritten cannot compare equal.
-void expectGatherEqualsScatter(gl::ShaderLibrary& shaders, GridParams params, std::size_t n, int arrays,
-                               bool withPermutation, uint32_t seed) {
+// Builds once, reorders `arrays` arrays (with or without the permutation), then the permutation
+// alone from the same build, and checks that every element of every array landed bit for bit in
+// the slot the permutation names, and that nothing past n was written.
+void expectArraysFollowThePermutation(gl::ShaderLibrary& shaders, GridParams params, std::size_t n, int arrays,
+                                      bool withPermutation, uint32_t seed) {
   SCOPED_TRACE("n " + std::to_string(n) + ", arrays " + std::to_string(arrays) +
                (withPermutation ? ", with permutation" : ", no permutation"));
-  params.reorder = ReorderMode::Scatter;
   UniformGrid grid(shaders, params);
-  const std::size_t words = grid.elementBytes() / 4, size = std::max<std::size_t>(n, 1);
+  const std::size_t words = grid.elementBytes() / 4, size = std::max<std::size_t>(n, 1) + 1;
   const std::vector<glm::vec4> wide = makePositions(params, n, 0.2f, seed);
-  std::vector<uint32_t> pos(size * words, 0u);
-  for (std::size_t i = 0; i < n; ++i) {
+  std::vector<std::vector<uint32_t>> values(std::max(arrays, 1), std::vector<uint32_t>(size * words, 0u));
+  for (std::size_t i = 0; i < n; ++i) {  // array 0 (when there is one) is the positions
     if (params.layout == Layout::Half2) {
-      pos[2 * i] = glm::packHalf2x16(glm::vec2(wide[i]));
-      pos[2 * i + 1] = uint32_t(i);
+      values[0][2 * i] = glm::packHalf2x16(glm::vec2(wide[i]));
+      values[0][2 * i + 1] = uint32_t(i);
     } else {
-      std::memcpy(&pos[4 * i], &wide[i], 16);
+      std::memcpy(&values[0][4 * i], &wide[i], 16);
     }
   }
   std::mt19937 rng(seed);
-  std::vector<gl::Buffer> src, scattered, gathered;
-  src.emplace_back(pos.size() * 4, pos.data());  // array 0 (when there is one) is the positions
-  for (int a = 1; a < arrays; ++a) {
-    std::vector<uint32_t> values(size * words);
-    for (uint32_t& v : values) v = rng();  // any bit pattern, NaNs included
-    src.emplace_back(values.size() * 4, values.data());
-  }
-  const std::vector<uint32_t> fillA(size * words, 0xaaaaaaaau), fillB(size * words, 0x55555555u);
-  std::vector<ReorderArray> viaScatter, viaGather;
-  for (int a = 0; a < arrays; ++a) {
-    scattered.emplace_back(fillA.size() * 4, fillA.data());
-    gathered.emplace_back(fillB.size() * 4, fillB.data());
-  }
-  for (int a = 0; a < arrays; ++a) {
-    viaScatter.push_back({&src[a], &scattered[a]});
-    viaGather.push_back({&src[a], &gathered[a]});
-  }
-  gl::Buffer permA(size * 4, fillA.data()), permB(size * 4, fillB.data());
+  for (int a = 1; a < arrays; ++a)
+    for (uint32_t& v : values[std::size_t(a)]) v = rng();  // any bit pattern, NaNs included
+  const std::vector<uint32_t> fill(size * words, 0xaaaaaaaau);
+  std::vector<gl::Buffer> src, dst;
+  std::vector<ReorderArray> batch;
+  for (int a = 0; a < std::max(arrays, 1); ++a)
+    src.emplace_back(values[std::size_t(a)].size() * 4, values[std::size_t(a)].data());
+  for (int a = 0; a < arrays; ++a) dst.emplace_back(fill.size() * 4, fill.data());
+  for (int a = 0; a < arrays; ++a) batch.push_back({&src[std::size_t(a)], &dst[std::size_t(a)]});
+  gl::Buffer given(size * 4, fill.data()), alone(size * 4, fill.data());
   grid.build(src[0], n);
-  grid.reorder(src[0], viaScatter, withPermutation ? &permA : nullptr);
-  grid.setReorderMode(ReorderMode::Gather);
-  grid.reorder(src[0], viaGather, withPermutation ? &permB : nullptr);
-
-  if (n == 0) {  // nothing moves
-    for (int a = 0; a < arrays; ++a) {
-      EXPECT_EQ(scattered[a].read<uint32_t>(words), std::vector<uint32_t>(words, 0xaaaaaaaau));
-      EXPECT_EQ(gathered[a].read<uint32_t>(words), std::vector<uint32_t>(words, 0x55555555u));
-    }
-    return;
-  }
-  for (int a = 0; a < arrays; ++a)
-    ASSERT_EQ(scattered[a].read<uint32_t>(n * words), gathered[a].read<uint32_t>(n * words)) << "array " << a;
-  if (withPermutation) {
-    const std::vector<uint32_t> perm = permA.read<uint32_t>(n);
-    ASSERT_EQ(perm, permB.read<uint32_t>(n));
-    std::vector<uint32_t> ids = perm;
-    std::sort(ids.begin(), ids.end());
-    for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(ids[i], i) << "not a permutation";
+  grid.reorder(src[0], batch, withPermutation ? &given : nullptr);
+  grid.reorder(src[0], std::span<const ReorderArray>(), &alone);
+  const std::vector<uint32_t> perm = alone.read<uint32_t>(n);
+  if (withPermutation) ASSERT_EQ(given.read<uint32_t>(n), perm) << "the permutation depends on the arrays moved";
+  std::vector<uint32_t> ids = perm;
+  std::sort(ids.begin(), ids.end());
+  for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(ids[i], i) << "not a permutation";
+  for (int a = 0; a < arrays; ++a) {
+    const std::vector<uint32_t> got = dst[std::size_t(a)].read<uint32_t>(size * words);
+    const std::vector<uint32_t>& from = values[std::size_t(a)];
+    for (std::size_t j = 0; j < n; ++j)
+      for (std::size_t w = 0; w < words; ++w)
+        ASSERT_EQ(got[j * words + w], from[perm[j] * words + w]) << "array " << a << ", slot " << j;
+    for (std::size_t k = n * words; k < got.size(); ++k) ASSERT_EQ(got[k], 0xaaaaaaaau) << "written past n";
   }
 }
 
 // Sizes 0, 1, 2, one and two work groups (256) +-1 and random ones; 0..5 arrays (up to three
 // dispatch batches), with and without the permutation.
-void gatherEqualsScatterSweep(gl::ShaderLibrary& shaders, const GridParams& params, uint32_t seed) {
+void reorderSweep(gl::ShaderLibrary& shaders, const GridParams& params, uint32_t seed) {
   std::vector<std::size_t> sizes = {0, 1, 2, 255, 256, 257, 511, 512, 513};
   std::mt19937 rng(seed);
   for (int k = 0; k < 3; ++k) sizes.push_back(1 + rng() % 6000);
   for (std::size_t n : sizes)
     for (int arrays : {0, 1, 2, 3, 5})
       for (bool withPermutation : {false, true})
-        expectGatherEqualsScatter(shaders, params, n, arrays, withPermutation, seed + uint32_t(n));
+        expectArraysFollowThePermutation(shaders, params, n, arrays, withPermutation, seed + uint32_t(n));
 }
 }  // namespace
 
-TEST_P(GridModes, ExampleFromTheHeader) {
-  UniformGrid grid(shaders(), withMode({.domainMin = {0, 0, 0}, .domainMax = {4, 1, 0}, .cellSize = 1.0f}));
+TEST_F(Grid, ExampleFromTheHeader) {
+  UniformGrid grid(shaders(), {.domainMin = {0, 0, 0}, .domainMax = {4, 1, 0}, .cellSize = 1.0f});
   ASSERT_EQ(grid.dims(), glm::uvec3(4, 1, 1));
   EXPECT_TRUE(grid.is2D());
   const std::vector<glm::vec4> pos = {{2.5f, 0.5f, 0, 0}, {0.5f, 0.5f, 0, 1}, {2.5f, 0.5f, 0, 2},
@@ -216,35 +193,35 @@ TEST_P(GridModes, ExampleFromTheHeader) {
   EXPECT_EQ(perm.readAll<uint32_t>(), (std::vector<uint32_t>{1, 5, 0, 2, 4, 3})) << "stable: by index in a cell";
 }
 
-TEST_P(GridModes, Random3DWithBordersAndOutsiders) {
-  const GridParams params = withMode({.domainMin = {-1, 0, 2}, .domainMax = {3, 2, 3.5f}, .cellSize = 0.25f});
+TEST_F(Grid, Random3DWithBordersAndOutsiders) {
+  const GridParams params{.domainMin = {-1, 0, 2}, .domainMax = {3, 2, 3.5f}, .cellSize = 0.25f};
   checkGrid(shaders(), params, makePositions(params, 20000, 0.5f, 1));
 }
 
-TEST_P(GridModes, Random2DWithBordersAndOutsiders) {
-  const GridParams params = withMode({.domainMin = {0, 0, 0}, .domainMax = {8, 4, 0}, .cellSize = 0.5f});
+TEST_F(Grid, Random2DWithBordersAndOutsiders) {
+  const GridParams params{.domainMin = {0, 0, 0}, .domainMax = {8, 4, 0}, .cellSize = 0.5f};
   checkGrid(shaders(), params, makePositions(params, 30001, 1.0f, 2));
 }
 
-TEST_P(GridModes, ManyParticlesPerCellAndManyCells) {
+TEST_F(Grid, ManyParticlesPerCellAndManyCells) {
   // ~8 per cell over more cells than one scan block (two-level scan), and a crowded tiny grid.
-  const GridParams wide = withMode({.domainMin = {0, 0, 0}, .domainMax = {24, 24, 24}, .cellSize = 1.0f});
+  const GridParams wide{.domainMin = {0, 0, 0}, .domainMax = {24, 24, 24}, .cellSize = 1.0f};
   checkGrid(shaders(), wide, makePositions(wide, 8 * 24 * 24 * 24, 0.0f, 3));
-  const GridParams tiny = withMode({.domainMin = {0, 0, 0}, .domainMax = {1, 1, 1}, .cellSize = 0.5f});
+  const GridParams tiny{.domainMin = {0, 0, 0}, .domainMax = {1, 1, 1}, .cellSize = 0.5f};
   checkGrid(shaders(), tiny, makePositions(tiny, 5000, 0.1f, 4));
 }
 
 // Without the stable order the cells are the same and any order within a cell is allowed.
-TEST_P(GridModes, AtomicOrderWhenNotStable) {
-  GridParams params = withMode({.domainMin = {-1, 0, 2}, .domainMax = {3, 2, 3.5f}, .cellSize = 0.25f});
+TEST_F(Grid, AtomicOrderWhenNotStable) {
+  GridParams params{.domainMin = {-1, 0, 2}, .domainMax = {3, 2, 3.5f}, .cellSize = 0.25f};
   params.stable = false;
   checkGrid(shaders(), params, makePositions(params, 20000, 0.5f, 21));
 }
 
 // A cell of more than GRID_STABLE_MAX_CELL particles keeps its atomic order (still a valid
 // reorder); the cells beside it are ranked as usual.
-TEST_P(GridModes, CrowdedCellKeepsAValidOrder) {
-  const GridParams params = withMode({.domainMin = {0, 0, 0}, .domainMax = {4, 4, 4}, .cellSize = 1.0f});
+TEST_F(Grid, CrowdedCellKeepsAValidOrder) {
+  const GridParams params{.domainMin = {0, 0, 0}, .domainMax = {4, 4, 4}, .cellSize = 1.0f};
   std::vector<glm::vec4> pos = makePositions(params, 6000, 0.0f, 22);
   for (std::size_t i = 0; i < 3000; i += 2) pos[i] = glm::vec4(0.5f, 0.5f, 0.5f, float(i));
   ASSERT_GT(reference::histogram(UniformGrid(shaders(), params).shape(), pos)[0], uint32_t(GRID_STABLE_MAX_CELL))
@@ -252,8 +229,8 @@ TEST_P(GridModes, CrowdedCellKeepsAValidOrder) {
   checkGrid(shaders(), params, pos);
 }
 
-TEST_P(GridModes, NonMultipleCellSizeRoundsDimsUp) {
-  UniformGrid grid(shaders(), withMode({.domainMin = {0, 0, 0}, .domainMax = {1, 1, 1}, .cellSize = 0.3f}));
+TEST_F(Grid, NonMultipleCellSizeRoundsDimsUp) {
+  UniformGrid grid(shaders(), {.domainMin = {0, 0, 0}, .domainMax = {1, 1, 1}, .cellSize = 0.3f});
   EXPECT_EQ(grid.dims(), glm::uvec3(4, 4, 4));
   EXPECT_FALSE(grid.is2D());
   const GridParams params = grid.params();
@@ -262,9 +239,9 @@ TEST_P(GridModes, NonMultipleCellSizeRoundsDimsUp) {
 
 // Layout::Half2 (particle life's fp16 state): positions are uvec2 (packHalf2x16(xy), a word) and
 // the reordered arrays have 8-byte elements, moved bit for bit (NaN patterns included).
-TEST_P(GridModes, HalfFloatPositionsAndEightByteArrays) {
-  const GridParams params =
-      withMode({.domainMin = {-8, -4, 0}, .domainMax = {8, 4, 0}, .cellSize = 0.75f, .layout = Layout::Half2});
+TEST_F(Grid, HalfFloatPositionsAndEightByteArrays) {
+  const GridParams params = {
+      .domainMin = {-8, -4, 0}, .domainMax = {8, 4, 0}, .cellSize = 0.75f, .layout = Layout::Half2};
   const std::vector<glm::vec4> wide = makePositions(params, 20001, 1.0f, 7);
   const std::size_t n = wide.size();
   std::vector<glm::uvec2> pos(n), other(n);
@@ -303,8 +280,8 @@ TEST_P(GridModes, HalfFloatPositionsAndEightByteArrays) {
   EXPECT_THROW(grid.build(posOut, n + 1), Error) << "n + 1 positions need 8 more bytes";
 }
 
-TEST_P(GridModes, ZeroParticles) {
-  UniformGrid grid(shaders(), withMode({.domainMin = {0, 0, 0}, .domainMax = {2, 2, 2}, .cellSize = 1.0f}));
+TEST_F(Grid, ZeroParticles) {
+  UniformGrid grid(shaders(), {.domainMin = {0, 0, 0}, .domainMax = {2, 2, 2}, .cellSize = 1.0f});
   const glm::vec4 untouched(7.0f);
   gl::Buffer pos(16), out(16, &untouched), perm(4);
   grid.build(pos, 0);
@@ -314,29 +291,23 @@ TEST_P(GridModes, ZeroParticles) {
   EXPECT_EQ(out.read<glm::vec4>(1)[0], untouched) << "nothing to move";
 }
 
-INSTANTIATE_TEST_SUITE_P(Modes, GridModes, ::testing::Values(ReorderMode::Scatter, ReorderMode::Gather),
-                         [](const ::testing::TestParamInfo<ReorderMode>& info) {
-                           return std::string(kReorderModeNames[std::size_t(info.param)]);
-                         });
-
-TEST_F(Grid, GatherEqualsScatter3D) {
-  gatherEqualsScatterSweep(shaders(), {.domainMin = {-1, 0, 2}, .domainMax = {3, 2, 3.5f}, .cellSize = 0.25f}, 11);
+TEST_F(Grid, ArraysFollowThePermutation3D) {
+  reorderSweep(shaders(), {.domainMin = {-1, 0, 2}, .domainMax = {3, 2, 3.5f}, .cellSize = 0.25f}, 11);
 }
 
-TEST_F(Grid, GatherEqualsScatter2D) {
-  gatherEqualsScatterSweep(shaders(), {.domainMin = {0, 0, 0}, .domainMax = {8, 4, 0}, .cellSize = 0.5f}, 12);
+TEST_F(Grid, ArraysFollowThePermutation2D) {
+  reorderSweep(shaders(), {.domainMin = {0, 0, 0}, .domainMax = {8, 4, 0}, .cellSize = 0.5f}, 12);
 }
 
-TEST_F(Grid, GatherEqualsScatterHalfFloat) {
-  gatherEqualsScatterSweep(
-      shaders(), {.domainMin = {-8, -4, 0}, .domainMax = {8, 4, 0}, .cellSize = 0.75f, .layout = Layout::Half2}, 13);
+TEST_F(Grid, ArraysFollowThePermutationHalfFloat) {
+  reorderSweep(shaders(),
+               {.domainMin = {-8, -4, 0}, .domainMax = {8, 4, 0}, .cellSize = 0.75f, .layout = Layout::Half2}, 13);
 }
 
-// Switching modes between reorders of one build, and a gather reorder of the balls' kind (positions
-// and velocities, no permutation) repeated from its own output (last step's cell order).
-TEST_F(Grid, GatherFromCellOrderKeepsTheOrder) {
-  const GridParams params{
-      .domainMin = {0, 0, 0}, .domainMax = {6, 6, 6}, .cellSize = 0.5f, .reorder = ReorderMode::Gather};
+// A reorder of the balls' kind (positions alone, no permutation) repeated from its own output (the
+// last step's cell order).
+TEST_F(Grid, ReorderFromCellOrderKeepsTheCells) {
+  const GridParams params{.domainMin = {0, 0, 0}, .domainMax = {6, 6, 6}, .cellSize = 0.5f};
   const std::vector<glm::vec4> pos = makePositions(params, 7000, 0.1f, 14);
   UniformGrid grid(shaders(), params);
   gl::Buffer a = vec4Buffer(pos), b(a.size()), c(a.size());
@@ -388,14 +359,9 @@ TEST_F(Grid, MemoryIsReported) {
   UniformGrid atomic(shaders(), {.domainMin = {0, 0, 0}, .domainMax = {64, 64, 64}, .cellSize = 1.0f, .stable = false},
                      1000);
   EXPECT_EQ(atomic.memoryBytes(), grid.memoryBytes() - 1000 * 4);
-  // The gather keeps its own permutation (uint per particle) when the caller gives none.
-  UniformGrid gather(
-      shaders(), {.domainMin = {0, 0, 0}, .domainMax = {64, 64, 64}, .cellSize = 1.0f, .reorder = ReorderMode::Gather},
-      1000);
-  EXPECT_EQ(gather.memoryBytes(), grid.memoryBytes() + 1000 * 4);
 }
 
-TEST_P(GridModes, BadInputThrowsOneLineErrors) {
+TEST_F(Grid, BadInputThrowsOneLineErrors) {
   auto make = [&](GridParams p) { UniformGrid grid(shaders(), p); };
   const glm::vec3 zero(0.0f), one(1.0f);
   for (float cell : {0.0f, -1.0f, std::nanf("")})
@@ -410,7 +376,7 @@ TEST_P(GridModes, BadInputThrowsOneLineErrors) {
     EXPECT_NE(std::string(e.what()).find("larger cell size"), std::string::npos) << e.what();
     EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos);
   }
-  UniformGrid grid(shaders(), withMode({.domainMin = zero, .domainMax = one, .cellSize = 0.5f}));
+  UniformGrid grid(shaders(), {.domainMin = zero, .domainMax = one, .cellSize = 0.5f});
   gl::Buffer small(16);
   EXPECT_THROW(grid.build(small, 2), Error);  // 2 positions need 32 bytes
   gl::Buffer pos(32), out(32);
@@ -435,7 +401,7 @@ TEST(GridBindings, HeaderHoldsOnlyDefinesSharedWithCpp) {
 // Arrays over one storage block (gl/window.h): with the smallest limit tidepool runs with, 64 KiB,
 // windows hold 4096 vec4s (8192 half pairs), so these counts move in two to four windows per array
 // and every pair of windows; the 4-byte words (16384 at most) stay whole. The results must be the
-// unwindowed ones: the same CPU checks, gather equal to scatter word for word.
+// unwindowed ones: the same CPU checks, every element where the permutation says.
 namespace {
 class WindowedGrid : public Grid {
  protected:
@@ -446,23 +412,22 @@ class WindowedGrid : public Grid {
 
 TEST_F(WindowedGrid, ArraysMoveInWindows) {
   ASSERT_EQ(gl::windows(15000, 16).size(), 4u);
-  for (ReorderMode mode : {ReorderMode::Scatter, ReorderMode::Gather})
-    for (bool stable : {true, false}) {
-      SCOPED_TRACE(std::string(kReorderModeNames[std::size_t(mode)]) + (stable ? ", stable" : ", atomic order"));
-      GridParams params{.domainMin = {-1, 0, 2}, .domainMax = {3, 2, 3.5f}, .cellSize = 0.25f, .reorder = mode};
-      params.stable = stable;
-      checkGrid(shaders(), params, makePositions(params, 15000, 0.5f, 31));
-    }
+  for (bool stable : {true, false}) {
+    SCOPED_TRACE(stable ? "stable" : "atomic order");
+    GridParams params{.domainMin = {-1, 0, 2}, .domainMax = {3, 2, 3.5f}, .cellSize = 0.25f};
+    params.stable = stable;
+    checkGrid(shaders(), params, makePositions(params, 15000, 0.5f, 31));
+  }
 }
 
-TEST_F(WindowedGrid, GatherEqualsScatterAcrossWindows) {
+TEST_F(WindowedGrid, ArraysFollowThePermutationAcrossWindows) {
   const GridParams wide{.domainMin = {-1, 0, 2}, .domainMax = {3, 2, 3.5f}, .cellSize = 0.25f};
   for (std::size_t n : {4095, 4096, 4097, 8192, 12289, 16384})
     for (int arrays : {1, 3})
       for (bool withPermutation : {false, true})
-        expectGatherEqualsScatter(shaders(), wide, n, arrays, withPermutation, 40 + uint32_t(n));
+        expectArraysFollowThePermutation(shaders(), wide, n, arrays, withPermutation, 40 + uint32_t(n));
   const GridParams half{.domainMin = {-8, -4, 0}, .domainMax = {8, 4, 0}, .cellSize = 0.75f, .layout = Layout::Half2};
-  expectGatherEqualsScatter(shaders(), half, 16000, 2, true, 41);
+  expectArraysFollowThePermutation(shaders(), half, 16000, 2, true, 41);
 }
 
 TEST_F(WindowedGrid, WordsOverOneBlockAreRefused) {

@@ -111,11 +111,10 @@ TEST_P(ScanPaths, ThreeLevelsBeyondBlockSquared) {
   expectScanMatches(scan, n, 42);
 }
 
-TEST_P(ScanPaths, OtherWorkGroupShapesAndScanThenPropagate) {
+TEST_P(ScanPaths, OtherWorkGroupShapes) {
   // Shapes smaller and larger than any subgroup: the scan must not depend on the warp size.
-  for (PrefixScan::Config config :
-       {PrefixScan::Config{32, 1}, PrefixScan::Config{64, 3}, PrefixScan::Config{512, 2}, PrefixScan::Config{1024, 4},
-        PrefixScan::Config{64, 1, true}, PrefixScan::Config{256, 4, true}}) {
+  for (PrefixScan::Config config : {PrefixScan::Config{32, 1}, PrefixScan::Config{64, 3}, PrefixScan::Config{512, 2},
+                                    PrefixScan::Config{1024, 4}}) {
     PrefixScan scan(shaders(), withPath(config));
     uint32_t seed = 900;
     for (std::size_t n : edgeSizes(12, config)) {
@@ -132,18 +131,15 @@ TEST_P(ScanPaths, OtherWorkGroupShapesAndScanThenPropagate) {
 }
 
 TEST_P(ScanPaths, InPlaceAndZeroSize) {
-  PrefixScan scan(shaders(), withPath({})), propagate(shaders(), {.propagate = true});
-  for (PrefixScan* s : {&scan, &propagate}) {
-    for (std::size_t n : {std::size_t(0), std::size_t(1), std::size_t(5000), std::size_t(70000)}) {
-      const std::vector<uint32_t> in = randomCounts(n, uint32_t(n));
-      gl::Buffer buf((n + 1) * 4);
-      const uint32_t junk = 0xFFFFFFFFu;
-      buf.upload(&junk, 4, n * 4);  // out[n] must be written even for n = 0
-      buf.upload(std::span<const uint32_t>(in));
-      s->run(buf, buf, n);
-      EXPECT_EQ(firstDifference(buf.readAll<uint32_t>(), reference::exclusiveScan(in)), "")
-          << "n = " << n << (s->config().propagate ? " (scan-then-propagate)" : "");
-    }
+  PrefixScan scan(shaders(), withPath({}));
+  for (std::size_t n : {std::size_t(0), std::size_t(1), std::size_t(5000), std::size_t(70000)}) {
+    const std::vector<uint32_t> in = randomCounts(n, uint32_t(n));
+    gl::Buffer buf((n + 1) * 4);
+    const uint32_t junk = 0xFFFFFFFFu;
+    buf.upload(&junk, 4, n * 4);  // out[n] must be written even for n = 0
+    buf.upload(std::span<const uint32_t>(in));
+    scan.run(buf, buf, n);
+    EXPECT_EQ(firstDifference(buf.readAll<uint32_t>(), reference::exclusiveScan(in)), "") << "n = " << n;
   }
 }
 
@@ -170,20 +166,17 @@ TEST_F(Scan, DispatchesForEachPath) {
   const PrefixScan::Config defaults;
   const std::size_t block = defaults.block(), limit = defaults.fuseMaxBlocks;
   ASSERT_GT(limit, 1u);
-  PrefixScan scan(shaders()), never(shaders(), {.fuseMaxBlocks = 0}), always(shaders(), {.fuseMaxBlocks = block}),
-      propagate(shaders(), {.propagate = true});
+  PrefixScan scan(shaders()), never(shaders(), {.fuseMaxBlocks = 0}), always(shaders(), {.fuseMaxBlocks = block});
   for (std::size_t n : {std::size_t(0), std::size_t(1), block})
-    for (PrefixScan* s : {&scan, &never, &always, &propagate}) EXPECT_EQ(s->dispatchesFor(n), 1u) << "n = " << n;
+    for (PrefixScan* s : {&scan, &never, &always}) EXPECT_EQ(s->dispatchesFor(n), 1u) << "n = " << n;
   for (std::size_t n : {block + 1, 2 * block, limit * block - 1, limit * block}) {  // (block, limit * block]
     EXPECT_EQ(scan.dispatchesFor(n), 2u) << "n = " << n;
     EXPECT_EQ(never.dispatchesFor(n), 3u) << "n = " << n;
-    EXPECT_EQ(propagate.dispatchesFor(n), 3u) << "n = " << n;
   }
   EXPECT_EQ(scan.dispatchesFor(limit * block + 1), limit < block ? 3u : 4u);  // past it: unfused, or level 1 fuses
   EXPECT_EQ(always.dispatchesFor(block * block), 2u);
   EXPECT_EQ(always.dispatchesFor(block * block + 1), 4u);  // level 0 of 4097 blocks, level 1 of 2 fused
   EXPECT_EQ(never.dispatchesFor(block * block + 1), 5u);
-  EXPECT_EQ(propagate.dispatchesFor(block * block + 1), 5u);
 }
 
 // Fused offsets over every tail of the block sums (blocks % 4 words after the uvec4 loads) and

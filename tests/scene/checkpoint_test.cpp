@@ -135,16 +135,6 @@ const char* kFluid = R"({"model": "fluid", "params": {
 
 TEST_F(Checkpoints, BallsRestoreExactly) { expectExactRestore(shaders(), kBalls); }
 
-TEST_F(Checkpoints, BallsWithVerletListsRestoreExactly) {
-  // The lists, their control words and the balls' order at the last build travel with the file:
-  // the restored run rebuilds when the straight one does and sums in the same order.
-  expectExactRestore(shaders(), R"({"model": "balls", "params": {
-    "particles": {"radius": 0.02, "domain_max": [0.4, 0.2, 0.4], "fill": "block", "fill_max": [0.2, 0.2, 0.16]},
-    "engine": {"substeps": 3, "dt": 0.0008, "neighbours": "lists", "skin": 0.2},
-    "tap": {"enabled": true, "position": [0.3, 0.1, 0.3], "direction": [0, 0, -1], "speed": 1, "radius": 0.04,
-            "max": 200}}})");
-}
-
 TEST_F(Checkpoints, FluidRestoresExactly) { expectExactRestore(shaders(), kFluid); }
 
 TEST_F(Checkpoints, WaterSwitchedToTheOtherModelRestoresExactly) {

@@ -6,7 +6,6 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "balls/bindings.glsl"
-#include "balls/list_layout.glsl"
 #include "balls/stats_layout.glsl"
 #include "base/error.h"
 #include "sim/balls/balls_init.h"
@@ -19,28 +18,20 @@ constexpr std::size_t kMaxCheckpointBalls = std::size_t(4) << 20;  // larger run
 }  // namespace
 
 Balls::Balls(gl::ShaderLibrary& shaders, const Params& params)
-    : Model(shaders, "balls", kMaxCheckpointBalls),
-      m_shaders(shaders),
-      m_params(params),
-      m_obstacles(shaders),
-      m_ops(shaders) {
+    : Model(shaders, "balls", kMaxCheckpointBalls), m_shaders(shaders), m_params(params), m_obstacles(shaders) {
   reset();
 }
 
 // GPU: positions and velocities twice (vec4 each), with velocity Verlet the accelerations, the
-// grid's cell, index in cell, stable members and gather permutation (a word each), with lists
-// their columns and the balls' permutation. Host: the initial water (vec4) and its lattice
+// grid's cell, index in cell and stable members (a word each). Host: the initial water (vec4) and its lattice
 // (vec3). The vec4 arrays may pass one storage block (they are bound a window at a time:
 // gl/window.h) but not gl::kMaxWindowedBufferBytes; the words are bound whole.
 sim::ParticleCost Balls::cost() const {
-  const std::size_t listWords =
-      m_params.neighbours == Neighbours::Lists ? BALLS_LIST_FIRST + std::size_t(m_params.listCapacity) : 0;
   const bool verlet = m_params.integrator == Integrator::VelocityVerlet;
-  const std::size_t permutationWords = m_params.neighbours == Neighbours::Lists ? 1 : 0;
   return {.maxParticles = std::size_t(m_params.maxParticles),
           .arrayBytes = sizeof(GLuint),
           .windowedBytes = sizeof(glm::vec4),
-          .gpuBytes = (verlet ? 5 : 4) * sizeof(glm::vec4) + (4 + permutationWords + listWords) * sizeof(GLuint),
+          .gpuBytes = (verlet ? 5 : 4) * sizeof(glm::vec4) + 3 * sizeof(GLuint),
           .hostBytes = sizeof(glm::vec4) + sizeof(glm::vec3)};
 }
 
@@ -108,7 +99,6 @@ void Balls::emitFromTap() {
   }
   m_count += layer.pos.size();
   m_tapEmitted += layer.pos.size();
-  m_listsStale = true;
   m_countedAhead = {};
   m_tapNextLayer = m_time + layer.interval;
 }
@@ -170,7 +160,6 @@ void Balls::resume(const sim::StateStamp& good) {
   m_count = good.count;
   m_time = good.time;
   m_accValid = false;  // Verlet re-evaluates a(x) for the restored state
-  m_listsStale = true;
   m_countedAhead = {};
   m_params.dt *= 0.5f;
   m_params.substeps = std::min(m_params.substeps * 2, 1000);  // same simulated time per frame
@@ -193,22 +182,8 @@ void Balls::visitOwnState(sim::StateVisitor& v) {
   v.value("model.tap_next_layer", m_tapNextLayer);
   v.flag("model.acc_valid", m_accValid);
   if (m_accValid) v.buffer("model.accelerations", accelerations(), m_count * sizeof(glm::vec4));
-  if (v.loading()) ensureGrid();
-  // Verlet lists as they are (with their control words), so that the restored run rebuilds when
-  // the straight one would and sums in the same order.
-  bool lists = m_lists.size() > 0, stale = m_listsStale;
-  v.flag("model.lists", lists);
-  if (lists != (m_lists.size() > 0)) v.fail("entry 'model.lists' does not match the parameters' neighbour search");
-  if (lists) {
-    v.flag("model.lists_stale", stale);
-    v.buffer("model.neighbour_lists", m_lists, m_lists.size());
-    if (v.loading()) {
-      m_listsStale = stale;
-      m_gate.forget();  // noted again, without running, at the next step
-      m_gateKey = gateKey();
-    }
-  }
   if (v.loading()) {
+    ensureGrid();
     updateWalls();
     m_countedAhead = {};
   }
@@ -216,8 +191,7 @@ void Balls::visitOwnState(sim::StateVisitor& v) {
 
 std::size_t Balls::bytesPerBall() const {
   if (m_count == 0) return 0;
-  const std::size_t own =
-      m_pos[0].size() * 2 + m_vel[0].size() * 2 + m_acc.size() + m_permutation.size() + m_lists.size();
+  const std::size_t own = m_pos[0].size() * 2 + m_vel[0].size() * 2 + m_acc.size() + m_permutation.size();
   return (own + m_grid->memoryBytes()) / m_count;
 }
 
@@ -228,9 +202,8 @@ void Balls::upload(const std::vector<glm::vec4>& pos, const std::vector<glm::vec
   m_pos[0].upload(pos.data(), pos.size() * sizeof(glm::vec4));
   m_vel[0].upload(vel.data(), vel.size() * sizeof(glm::vec4));
   m_accValid = false;
-  m_listsStale = true;
   m_countedAhead = {};
-  ensureGrid();    // lists for the new capacity
+  ensureGrid();
   restartWatch();  // a new state: nothing judged yet
 }
 
@@ -261,56 +234,19 @@ gl::Buffer& Balls::permutation() {
 }
 
 std::vector<GLuint> Balls::lastOrder() const {
-  // With lists the balls move into the grid's order only at the steps the GPU chose to rebuild.
-  if (listsActive()) throw Error("balls: the order of a step is not tracked with neighbours: lists");
   if (m_permutation.size() < m_count * sizeof(GLuint))
     throw Error("balls: the order of the last step is kept only with trackOrder(true) before the step");
   return m_permutation.read<GLuint>(m_count);
 }
 
-std::size_t Balls::listCapacity() const {
-  if (m_params.neighbours != Neighbours::Lists || m_capacity == 0) return 0;
-  const std::size_t words = gl::storageBlockBytes() / sizeof(GLuint);
-  if (words <= BALLS_LIST_CONTROL_WORDS) return 0;
-  const std::size_t columns = (words - BALLS_LIST_CONTROL_WORDS) / m_capacity;
-  return columns > BALLS_LIST_FIRST ? std::min(std::size_t(m_params.listCapacity), columns - BALLS_LIST_FIRST) : 0;
-}
-
-bool Balls::listsActive() const { return m_lists.size() > 0 && !m_obstacles.active(); }
-
-Balls::ListCounts Balls::listCounts() const {
-  if (m_lists.size() == 0) return {};
-  GLuint words[3] = {};
-  m_lists.download(words, sizeof words, (m_listColumns * m_capacity + BALLS_LIST_OVERFLOW) * sizeof(GLuint));
-  return {.rebuilds = words[1], .steps = words[2], .overflow = words[0]};
-}
-
-// The grid's cells reach every pair the neighbour search needs (2r; with lists 2r + skin), and
-// with lists the lists' buffer holds the capacity: both made again when the parameters change.
+// The grid's cells of 2r reach every pair of balls in contact: made again when the radius changes.
 void Balls::ensureGrid() {
-  const bool lists = m_params.neighbours == Neighbours::Lists;
-  const std::size_t capacity = listCapacity();
-  const std::size_t columns = capacity > 0 ? BALLS_LIST_FIRST + capacity : 0;
-  const std::size_t bytes = columns > 0 ? (columns * m_capacity + BALLS_LIST_CONTROL_WORDS) * sizeof(GLuint) : 0;
-  if (m_lists.size() != bytes || m_listColumns != columns) {
-    m_lists = bytes > 0 ? gl::Buffer(bytes) : gl::Buffer();
-    if (bytes > 0) m_lists.fillZero();
-    m_listColumns = columns;
-    m_listsStale = true;
-    m_gate.forget();
-  }
-  const float cell = (lists && capacity > 0 ? 2.0f + m_params.skin : 2.0f) * m_radius;
+  const float cell = 2.0f * m_radius;
   if (m_grid && m_grid->params().cellSize == cell) return;
   const Params p = resolved(m_params);
-  grid::GridParams gp{.domainMin = p.domainMin,
-                      .domainMax = p.domainMax,
-                      .cellSize = cell,
-                      .reorder = p.gridReorder,
-                      .stable = p.deterministic};
+  grid::GridParams gp{.domainMin = p.domainMin, .domainMax = p.domainMax, .cellSize = cell, .stable = p.deterministic};
   m_grid = std::make_unique<grid::UniformGrid>(m_shaders, gp, m_capacity);
-  m_listsStale = true;
   m_countedAhead = {};
-  m_gate.forget();
 }
 
 }  // namespace tidepool::balls

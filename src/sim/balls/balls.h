@@ -8,13 +8,8 @@
 // One step (stepOnce), a list of passes (balls_passes.cpp):
 //   symplectic / explicit Euler:  placeObstacles(t)      -> sortByCell -> collide (forces, integrate)
 //   velocity Verlet:              placeObstacles(t + dt) -> drift -> sortByCell -> collide (forces, kick)
-// Euler's collide, without obstacles and lists, also counts each ball into the next step's grid
-// as it writes it (COUNT_CELLS), so the next sortByCell starts at the scan.
-// With Verlet lists (Params::neighbours = lists, no obstacle) sortByCell gives way to gateLists:
-// the grid (cells of 2r + skin), the balls' order and the lists are rebuilt only when the gate
-// kernel finds the displacements since the last build too large (GPU-side, through
-// gl::DispatchGate: no read-back); between builds the balls stay in place and collide reads each
-// ball's list.
+// Euler's collide, without obstacles, also counts each ball into the next step's grid as it
+// writes it (COUNT_CELLS), so the next sortByCell starts at the scan.
 #pragma once
 
 #include <memory>
@@ -22,8 +17,6 @@
 #include <string>
 
 #include "gl/buffer.h"
-#include "gl/buffer_ops.h"
-#include "gl/dispatch_gate.h"
 #include "gl/gpu_profiler.h"
 #include "gl/shader_library.h"
 #include "gl/window.h"
@@ -95,20 +88,10 @@ class Balls final : public sim::Model, public sim::ParticleWater {
   void trackOrder(bool on) { m_trackOrder = on; }
   // Windows the last collide ran in: 1 while the vec4 arrays fit one storage block (gl/window.h).
   std::size_t collideWindows() const { return m_collideWindows; }
-  // Bench and tests: the next step's grid count inside the collide (the default) or as its own pass.
-  void countInCollide(bool on) { m_countInCollide = on; }
   // Tests: velocity Verlet's a(x), part of its state (it was evaluated with the half-step velocity).
   // Zeros where none were kept (Euler keeps none).
   std::vector<glm::vec4> downloadAccelerations() const;
   void uploadAccelerations(const std::vector<glm::vec4>& acc);
-  // Verlet lists (tests, bench; blocking): builds and gated steps since the lists were made, and
-  // the balls whose neighbours overflowed their list at the last build.
-  struct ListCounts {
-    std::uint32_t rebuilds = 0, steps = 0, overflow = 0;
-  };
-  ListCounts listCounts() const;
-  bool listsActive() const;               // lists chosen, no obstacle, a capacity that fits
-  std::size_t listCapacity() const;       // neighbours per list, as the device's storage-block limit allows
   std::vector<GLuint> lastOrder() const;  // lastOrder()[k] = index before the step of ball k after it
 
  private:
@@ -149,15 +132,10 @@ class Balls final : public sim::Model, public sim::ParticleWater {
   };
   void planReachWindows(std::size_t windowSize = 0);  // 0: half a storage block of balls
   std::vector<ReachWindow> reachWindows();
-  // Verlet lists: the grid's cells for the parameters (2r, or 2r + skin with lists), the lists'
-  // buffer; the gate kernel, then (when it opens) count, scan, permutation and list build.
-  void ensureGrid();
-  void gateLists(gl::GpuProfiler* profiler);
-  void buildLists();
-  void bindLists(gl::Program& program) const;
-  std::vector<gl::ShaderDefine> defines(bool verlet, bool lists = false, bool countCells = false) const;
+  void ensureGrid();  // the grid of cells 2r for the current radius
+  std::vector<gl::ShaderDefine> defines(bool verlet, bool countCells = false) const;
   // In use, common uniforms set.
-  gl::Program& useKernel(const char* file, bool verlet, bool lists = false, bool countCells = false);
+  gl::Program& useKernel(const char* file, bool verlet, bool countCells = false);
   // The grid's counts taken by the last collide (COUNT_CELLS) hold for the state it wrote: the
   // next sortByCell skips its count pass while the key still matches (anything else that writes
   // the balls clears it).
@@ -179,7 +157,7 @@ class Balls final : public sim::Model, public sim::ParticleWater {
   double m_tapNextLayer = 0;  // simulated time of the next layer
   // State: the current pos/vel are m_pos[m_posIndex] / m_vel[m_velIndex]; sortByCell writes the
   // cell-ordered copies to the other ones, which collide reads.
-  // The accelerations (velocity Verlet) and the order of the last step (lists, trackOrder()) are
+  // The accelerations (velocity Verlet) and the order of the last step (trackOrder()) are
   // allocated when first needed, for the capacity: Euler without them saves 20 bytes per ball.
   gl::Buffer& accelerations();
   gl::Buffer& permutation();
@@ -191,21 +169,6 @@ class Balls final : public sim::Model, public sim::ParticleWater {
   glm::vec3 m_wallMin{0.0f}, m_wallMax{1.0f}, m_wallMinVel{0.0f}, m_wallMaxVel{0.0f};
   double m_time = 0;
   bool m_trackOrder = false, m_accValid = false;
-  // Verlet lists (balls/list_layout.glsl): columns of m_capacity words, then the control words.
-  gl::Buffer m_lists;
-  std::size_t m_listColumns = 0;
-  gl::DispatchGate m_gate;
-  struct GateKey {  // what decides the gated section's dispatches
-    std::size_t count = 0;
-    bool verlet = false, stable = false;
-    grid::ReorderMode reorder = grid::ReorderMode::Gather;
-    bool operator==(const GateKey&) const = default;
-  } m_gateKey;
-  GateKey gateKey() const;  // now
-  gl::Buffer m_accScratch;  // Verlet with lists: a(x) in the grid's order at a rebuild
-  gl::BufferOps m_ops;
-  bool m_listsStale = true;  // the next gate rebuilds (new balls, a reset, a step without lists)
-  bool m_countInCollide = true;
   std::size_t m_collideWindows = 0;
   gl::Buffer m_reachBounds;      // uvec2 per window (balls/reach_windows.comp)
   std::size_t m_reachSize = 0;   // balls per window of the plan in m_reachBounds; 0: none planned

@@ -26,16 +26,8 @@ void visit(ParamVisitor& v, Params& p) {
     v.integer({"substeps", "Substeps", "steps per frame"}, p.substeps, 1, 1000);
     v.vector({"gravity", "Gravity", "m/s^2"}, p.gravity, -1000.0f, 1000.0f);
     v.real({"damping", "Damping", "1/s, frame-rate independent"}, p.damping, 0.0f, 1000.0f);
-    v.choice({"grid_reorder", "Grid reorder",
-              "scatter (one pass, random writes) or gather (permutation, then coalesced writes): same result"},
-             p.gridReorder, grid::kReorderModeNames);
     v.flag({"deterministic", "Deterministic", "bit-identical runs: the grid orders each cell's balls by index"},
            p.deterministic);
-    v.choice({"neighbours", "Neighbours",
-              "grid (27 cells every step) or lists (Verlet lists within 2r + skin, rebuilt when needed)"},
-             p.neighbours, kNeighboursNames);
-    v.real({"skin", "List skin", "lists: extra reach, fraction of r"}, p.skin, 0.01f, 4.0f);
-    v.integer({"list_capacity", "List capacity", "lists: neighbours per ball"}, p.listCapacity, 4, 256);
     v.real({"contact_time", "Contact time", "t_c of spring-dashpot, s"}, p.contactTime, 1e-6f, 10.0f);
     v.real({"restitution", "Restitution", "e of spring-dashpot"}, p.restitution, 0.01f, 1.0f);
     v.real({"friction", "Friction", "tangential Coulomb coefficient (spring-dashpot)"}, p.friction, 0.0f, 2.0f);

@@ -11,7 +11,6 @@
 
 #include "balls/bindings.glsl"
 #include "base/param.h"
-#include "grid/reorder_mode.h"
 
 namespace tidepool::balls {
 
@@ -19,10 +18,6 @@ enum class Contact { Penalty, SpringDashpot, CudaSample };
 constexpr std::array<const char*, 3> kContactNames = {"penalty", "spring-dashpot", "cuda-sample"};
 enum class Integrator { ExplicitEuler, SymplecticEuler, VelocityVerlet };
 constexpr std::array<const char*, 3> kIntegratorNames = {"explicit-euler", "symplectic-euler", "verlet"};
-// How each step finds the pairs within 2r: the grid's 27 cells every step, or Verlet lists of the
-// balls within 2r + skin, rebuilt from the grid only when the balls may have moved past the skin.
-enum class Neighbours { Grid, Lists };
-constexpr std::array<const char*, 2> kNeighboursNames = {"grid", "lists"};
 enum class Fill { Block, Slab, Random, Lattice, None };
 constexpr std::array<const char*, 5> kFillNames = {"block", "slab", "random", "lattice", "none"};
 enum class Shape { None, Sphere, Box, Capsule, Cup, Helix, Mesh };
@@ -79,20 +74,9 @@ struct Params {
   int substeps = 8;                       // steps per frame
   glm::vec3 gravity{0.0f, 0.0f, -9.81f};  // m/s^2 in the unrotated domain
   float damping = 0.0f;                   // 1/s: v *= exp(-damping dt)
-  // How each step's grid moves the balls (the same result either way). By the wall clock of steps
-  // queued back to back the stable scatter (rank and move in one pass) is 1-4% faster than the
-  // gather on the H100 at 0.7M-16M balls (docs/PERFORMANCE.md §16); the GL timers, which over-count
-  // queued steps, had favoured the gather (§4).
-  grid::ReorderMode gridReorder = grid::ReorderMode::Scatter;
   // Reproducible runs: the grid orders each cell's balls by index (grid/grid.h, GridParams::stable),
   // so every step sums contacts in the same order and a run is bit-identical on the same GPU.
   bool deterministic = true;
-  // Neighbour search (see Neighbours): lists find the same contacts as the grid (the forces agree to
-  // float rounding: the sums run in another order). skin: fraction of r; list_capacity: neighbours
-  // per ball (a ball with more walks the grid). Obstacles use the grid's cells either way.
-  Neighbours neighbours = Neighbours::Grid;
-  float skin = 0.4f;
-  int listCapacity = 28;
   // spring-dashpot: k and gamma from the contact duration and restitution (per unit effective mass)
   float contactTime = 0.01f;  // t_c, s
   float restitution = 0.5f;   // e

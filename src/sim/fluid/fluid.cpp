@@ -66,14 +66,13 @@ void Fluid::calibrate() {
   m_obstacles.refreshVolumes();
 }
 
-// GPU: x, v, p, two scratch arrays (vec4 each), λ (two floats), the permutation, the grid's index
-// in cell, stable members and gather permutation (a word each), the neighbour list when on.
-// Host: the initial water (vec4) and the lattice it is cut from (vec4).
+// GPU: x, v, p, two scratch arrays (vec4 each), λ (two floats), the permutation, the grid's cell,
+// index in cell and stable members (a word each). Host: the initial water (vec4) and the lattice
+// it is cut from (vec4).
 sim::ParticleCost Fluid::cost() const {
-  const std::size_t list = m_params.neighbourList ? (FLUID_MAX_NEIGHBOURS + 1) * sizeof(GLuint) : 0;
   return {.maxParticles = std::size_t(m_water.maxParticles),
-          .arrayBytes = std::max(sizeof(glm::vec4), list),
-          .gpuBytes = 5 * sizeof(glm::vec4) + 2 * sizeof(float) + 4 * sizeof(GLuint) + list,
+          .arrayBytes = sizeof(glm::vec4),
+          .gpuBytes = 5 * sizeof(glm::vec4) + 2 * sizeof(float) + 4 * sizeof(GLuint),
           .hostBytes = 2 * sizeof(glm::vec4)};
 }
 
@@ -89,7 +88,6 @@ void Fluid::allocate(std::size_t count, std::size_t capacity) {
   for (gl::Buffer& s : m_scratch) s = gl::Buffer(bytes);
   m_lambda = gl::Buffer(n * 2 * sizeof(float));
   m_permutation = gl::Buffer(n * sizeof(GLuint));
-  m_neighbours = gl::Buffer();  // made on first use (listNeighbours)
   m_capacity = capacity;
 }
 
@@ -118,11 +116,8 @@ void Fluid::reset() {
   m_time = 0;
   m_steps = 0;
   m_densitiesValid = false;
-  grid::GridParams gp{.domainMin = w.domainMin,
-                      .domainMax = w.domainMax,
-                      .cellSize = cellSize(),
-                      .reorder = w.gridReorder,
-                      .stable = w.deterministic};
+  grid::GridParams gp{
+      .domainMin = w.domainMin, .domainMax = w.domainMax, .cellSize = cellSize(), .stable = w.deterministic};
   m_grid = std::make_unique<grid::UniformGrid>(m_shaders, gp, m_capacity);
   m_obstacleError.clear();
   m_walls = balls::wallsAt(w, 0.0);
@@ -222,7 +217,7 @@ void Fluid::visitOwnState(sim::StateVisitor& v) {
 std::size_t Fluid::bytesPerParticle() const {
   if (m_count == 0) return 0;
   const std::size_t own = m_x.size() + m_v.size() + m_pred.size() + m_scratch[0].size() + m_scratch[1].size() +
-                          m_lambda.size() + m_permutation.size() + m_neighbours.size();
+                          m_lambda.size() + m_permutation.size();
   return (own + m_grid->memoryBytes()) / m_count;
 }
 

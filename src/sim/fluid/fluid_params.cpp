@@ -36,14 +36,6 @@ void visit(ParamVisitor& v, Params& p) {
     v.integer({"substeps", "Substeps", "steps per frame"}, w.substeps, 1, 1000);
     v.vector({"gravity", "Gravity", "m/s^2"}, w.gravity, -1000.0f, 1000.0f);
     v.real({"damping", "Damping", "1/s, frame-rate independent"}, w.damping, 0.0f, 1000.0f);
-    v.choice({"grid_reorder", "Grid reorder", "scatter or gather: same result"}, w.gridReorder,
-             grid::kReorderModeNames);
-    v.flag({"neighbour_list", "Neighbour list",
-            "list each particle's neighbours once per step (256 more bytes per particle; slower on the H100, "
-            "docs/PERFORMANCE.md)"},
-           p.neighbourList);
-    v.real({"grid_cell", "Grid cell", "neighbour grid cell, fraction of h (1: 27 cells; 0.5: 125 smaller ones)"},
-           p.gridCell, 0.25f, 1.0f);
     v.real({"foam_gain", "Foam gain", "per m of travel"}, w.foamGain, 0.0f, 1000.0f);
     v.real({"foam_decay", "Foam decay", "factor per 0.5 ms"}, w.foamDecay, 0.5f, 1.0f);
     v.endGroup();

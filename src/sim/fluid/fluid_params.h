@@ -23,15 +23,12 @@ struct Params {
   float relaxation = 0.01f;     // ε as a fraction of a resting particle's Σ|∇C|² (Macklin's CFM)
   float scorrK = 0.01f;         // tensile correction s_corr = −k (W(r)/W(Δq))^n, k as a compression (λ units)
   float scorrN = 4.0f;
-  float scorrDq = 0.2f;        // Δq as a fraction of h
-  float viscosity = 0.01f;     // XSPH c: the fraction of the neighbourhood's mean velocity blended in per step
-  float vorticity = 0.0f;      // vorticity confinement ε_v (m/s); 0: off
-  bool neighbourList = false;  // a list of neighbours per step for the iterations (256 more bytes per particle)
-  float gridCell = 0.5f;       // neighbour grid cell as a fraction of h: 1 searches 27 cells of h, 0.5 125 of h/2
+  float scorrDq = 0.2f;     // Δq as a fraction of h
+  float viscosity = 0.01f;  // XSPH c: the fraction of the neighbourhood's mean velocity blended in per step
+  float vorticity = 0.0f;   // vorticity confinement ε_v (m/s); 0: off
 
   static balls::Params defaultWater();  // the balls defaults with a fluid's time step
   float h() const { return smoothing * spacing; }
-  int reach() const { return int(std::ceil(1.0f / gridCell - 1e-4f)); }  // grid cells each way that cover h
 };
 
 void visit(ParamVisitor& v, Params& p);

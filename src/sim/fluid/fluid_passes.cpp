@@ -17,10 +17,6 @@ gl::GpuProfiler::Scope timed(gl::GpuProfiler* profiler, const char* name) {
   return profiler ? profiler->scope(name) : gl::GpuProfiler::Scope(nullptr);
 }
 
-// The list holds neighbours within h·(1 + kSkin) at the step's start, so that pairs closing in
-// during the iterations are still found.
-constexpr float kSkin = 0.1f;
-
 }  // namespace
 
 void Fluid::stepOnce(gl::GpuProfiler* profiler) {
@@ -42,7 +38,6 @@ void Fluid::stepOnce(gl::GpuProfiler* profiler) {
   if (m_count > 0) {
     predict(profiler);
     sortByCell(profiler);
-    if (m_params.neighbourList) listNeighbours(profiler);
     solve(profiler);
     updateVelocities(profiler);
   }
@@ -56,9 +51,7 @@ void Fluid::step(double, gl::GpuProfiler& profiler) {
   watch();
 }
 
-gl::Program& Fluid::useKernel(const char* file, std::vector<gl::ShaderDefine> defines, bool listed) {
-  listed = listed && m_params.neighbourList;
-  if (listed) defines.push_back({"NEIGHBOUR_LIST", ""});
+gl::Program& Fluid::useKernel(const char* file, std::vector<gl::ShaderDefine> defines) {
   for (const gl::ShaderDefine& d : kernelDefines(m_obstacles)) defines.push_back(d);
   gl::Program& p = m_shaders.program({file}, defines);
   p.use();
@@ -70,27 +63,9 @@ gl::Program& Fluid::useKernel(const char* file, std::vector<gl::ShaderDefine> de
   setKernelUniforms(p, m_params.h(), m_rest);
   bindBoundary(p, m_obstacles, m_params.h());
   m_grid->setUniforms(p);
-  p.set("uReach", m_params.reach());
-  p.set("uListStride", GLuint(std::max<std::size_t>(m_capacity, 1)));
-  if (listed)
-    m_neighbours.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_NEIGHBOURS);
-  else
-    m_grid->cellStart().bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_CELL_START);
+  p.set("uReach", kGridReach);
+  m_grid->cellStart().bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_CELL_START);
   return p;
-}
-
-void Fluid::listNeighbours(gl::GpuProfiler* profiler) {
-  auto scope = timed(profiler, "fluid.neighbours");
-  const std::size_t words = std::max<std::size_t>(m_capacity, 1) * (FLUID_MAX_NEIGHBOURS + 1);
-  if (m_neighbours.size() != words * sizeof(GLuint)) m_neighbours = gl::Buffer(words * sizeof(GLuint));
-  gl::Program& p = useKernel("fluid/neighbour_list.comp");
-  const float reach = float(m_params.h()) * (1.0f + kSkin);
-  p.set("uListReach", reach);
-  p.set("uReach", int(std::ceil(reach / cellSize() - 1e-4f)));
-  m_pred.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_PRED);
-  m_neighbours.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_OUT);
-  p.dispatchThreads(m_count);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
 void Fluid::predict(gl::GpuProfiler* profiler) {
@@ -115,7 +90,6 @@ void Fluid::sortByCell(gl::GpuProfiler* profiler) {
     m_grid->scanCells();
   }
   auto scope = timed(profiler, "fluid.reorder");
-  m_grid->setReorderMode(m_water.gridReorder);
   m_grid->setStable(m_water.deterministic);
   m_grid->reorder(m_pred, {{&m_pred, &m_scratch[0]}, {&m_x, &m_scratch[1]}}, m_trackOrder ? &m_permutation : nullptr);
   std::swap(m_pred, m_scratch[0]);
@@ -128,7 +102,7 @@ void Fluid::solve(gl::GpuProfiler* profiler) {
   for (int k = 0; k < q.iterations; ++k) {
     {
       auto scope = timed(profiler, "fluid.lambda");
-      gl::Program& p = useKernel("fluid/lambda.comp", {}, true);
+      gl::Program& p = useKernel("fluid/lambda.comp");
       p.set("uEpsilon", float(q.relaxation * m_rest.gradients));
       m_pred.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_PRED);
       m_lambda.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_LAMBDA);
@@ -138,7 +112,7 @@ void Fluid::solve(gl::GpuProfiler* profiler) {
     auto scope = timed(profiler, "fluid.delta");
     std::vector<gl::ShaderDefine> defines;
     if (q.scorrN == 4.0f) defines.push_back({"SCORR_N4", ""});
-    gl::Program& p = useKernel("fluid/delta.comp", defines, true);
+    gl::Program& p = useKernel("fluid/delta.comp", defines);
     // s_corr in the units of λ (m²): k times the λ a unit compression gives a resting particle, so k
     // is the compression one close pair pushes with (Macklin's k = 0.1 is dimensionless only in the
     // paper's units, where the mass is 1 and ρ0 sets the scale).
@@ -173,7 +147,7 @@ void Fluid::updateVelocities(gl::GpuProfiler* profiler) {
     auto scope = timed(profiler, "fluid.viscosity");
     std::vector<gl::ShaderDefine> defines;
     if (vorticity) defines.push_back({"VORTICITY", ""});
-    gl::Program& p = useKernel("fluid/viscosity.comp", defines, true);
+    gl::Program& p = useKernel("fluid/viscosity.comp", defines);
     p.set("uViscosity", m_params.viscosity);
     m_x.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_PRED);
     m_v.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_VEL_IN);
@@ -185,7 +159,7 @@ void Fluid::updateVelocities(gl::GpuProfiler* profiler) {
   }
   if (vorticity) {
     auto scope = timed(profiler, "fluid.vorticity");
-    gl::Program& p = useKernel("fluid/vorticity.comp", {}, true);
+    gl::Program& p = useKernel("fluid/vorticity.comp");
     p.set("uVorticity", m_params.vorticity);
     m_x.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_PRED);
     m_v.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_VEL_IN);

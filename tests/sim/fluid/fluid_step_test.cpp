@@ -86,8 +86,7 @@ double compare(const std::vector<glm::vec4>& before, const std::vector<glm::vec4
   return worst / largest;
 }
 
-double run(gl::ShaderLibrary& shaders, Params p, bool obstacle, grid::ReorderMode reorder, double* velocityError) {
-  p.water.gridReorder = reorder;
+double run(gl::ShaderLibrary& shaders, Params p, bool obstacle, double* velocityError) {
   if (obstacle) {
     balls::ObstacleParams o;
     o.shape = balls::Shape::Sphere;
@@ -124,22 +123,13 @@ double run(gl::ShaderLibrary& shaders, Params p, bool obstacle, grid::ReorderMod
 }  // namespace
 
 TEST_F(FluidStep, OneSolverIterationEqualsTheCpuReference) {
-  // Grid cells of h, h/2 and h/3, the neighbours from the grid or from the step's list: the same.
-  for (bool list : {false, true})
-    for (float cell : {1.0f, 0.5f, 0.34f})
-      for (grid::ReorderMode reorder : {grid::ReorderMode::Scatter, grid::ReorderMode::Gather}) {
-        SCOPED_TRACE(grid::kReorderModeNames[int(reorder)]);
-        Params p = box();
-        p.iterations = 1;
-        p.gridCell = cell;
-        p.neighbourList = list;
-        double velocityError = 0;
-        const double error = run(shaders(), p, false, reorder, &velocityError);
-        std::printf("one iteration (%s, cell %.2f h, %s): displacement error %.3g, velocity error %.3g (relative)\n",
-                    list ? "list" : "grid", double(cell), grid::kReorderModeNames[int(reorder)], error, velocityError);
-        EXPECT_LT(error, 1e-5);
-        EXPECT_LT(velocityError, 1e-5);
-      }
+  Params p = box();
+  p.iterations = 1;
+  double velocityError = 0;
+  const double error = run(shaders(), p, false, &velocityError);
+  std::printf("one iteration: displacement error %.3g, velocity error %.3g (relative)\n", error, velocityError);
+  EXPECT_LT(error, 1e-5);
+  EXPECT_LT(velocityError, 1e-5);
 }
 
 TEST_F(FluidStep, IterationsViscosityVorticityAndObstacleEqualTheCpuReference) {
@@ -148,13 +138,10 @@ TEST_F(FluidStep, IterationsViscosityVorticityAndObstacleEqualTheCpuReference) {
   p.viscosity = 0.05f;
   p.vorticity = 0.5f;
   p.water.damping = 0.3f;
-  for (bool list : {false, true}) {
-    p.neighbourList = list;
-    double velocityError = 0;
-    const double error = run(shaders(), p, true, grid::ReorderMode::Gather, &velocityError);
-    std::printf("3 iterations, XSPH, vorticity, sphere shell (%s): displacement error %.3g, velocity error %.3g\n",
-                list ? "list" : "grid", error, velocityError);
-    EXPECT_LT(error, 1e-5);
-    EXPECT_LT(velocityError, 1e-5);
-  }
+  double velocityError = 0;
+  const double error = run(shaders(), p, true, &velocityError);
+  std::printf("3 iterations, XSPH, vorticity, sphere shell: displacement error %.3g, velocity error %.3g\n", error,
+              velocityError);
+  EXPECT_LT(error, 1e-5);
+  EXPECT_LT(velocityError, 1e-5);
 }
