@@ -1,10 +1,21 @@
 #include "render/balls_view.h"
 
+#include <cstdlib>
+#include <cstring>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "render/balls/bindings.glsl"
 
 namespace tidepool {
+namespace {
+// The tests hold the fragment raster against the compute one (tests/render/balls_golden_test.cpp,
+// tests/cli/gpu_limits_test.cpp): TIDEPOOL_BALLS_RASTER=fragment draws with it where the compute
+// raster would. Not a scene parameter: the compute raster is the faster wherever it can run.
+BallsRaster rasterOf(BallsRaster asked) {
+  const char* forced = std::getenv("TIDEPOOL_BALLS_RASTER");
+  return forced && std::strcmp(forced, "fragment") == 0 ? BallsRaster::Fragment : asked;
+}
+}  // namespace
 
 void visit(ParamVisitor& v, BallsViewParams& p) {
   v.choice({"mode", "Mode", "balls: shaded spheres; water: screen-space water surface"}, p.mode, kBallsModeNames);
@@ -164,7 +175,7 @@ WindowRect meshesWindowRect(const BallsScene& scene, const BallsCamera& camera) 
 
 WindowRect BallsView::drawScene(const BallsScene& scene, const BallsCamera& camera, RenderTarget& target) {
   const WindowRect rect =
-      m_params.raster == BallsRaster::Compute ? meshesWindowRect(scene, camera) : wholeWindow(camera);
+      rasterOf(m_params.raster) == BallsRaster::Compute ? meshesWindowRect(scene, camera) : wholeWindow(camera);
   target.bind();
   // The clear and the draws touch the rectangle only: a depth clear of the whole 1080p target
   // costs 0.15 ms on the H100 (docs/PERFORMANCE.md §7); the later passes treat the rest as far.
@@ -227,7 +238,7 @@ void BallsView::render(const BallsScene& scene, const BallsCamera& camera, Rende
   const bool balls = scene.water.count > 0;
   if (balls) {
     const bool thickness = water || m_params.debug == BallsDebug::Thickness;
-    m_gbuffer.draw(scene.water, camera, sceneDepth, thickness, m_params.raster, profiler);
+    m_gbuffer.draw(scene.water, camera, sceneDepth, thickness, rasterOf(m_params.raster), profiler);
   }
   m_blurred = balls && water && m_params.blurRadius > 0.0f;
   if (m_blurred) {

@@ -125,12 +125,12 @@ TEST(CheckpointCli, TheWindowAutosavesAndResumesUnderXvfb) {
                                            "--size",
                                            "320x240"};
   auto args = window;
-  for (const char* a : {"--frames", "40", "--checkpoint-every", "0.25", "--checkpoint"}) args.push_back(a);
+  for (const char* a : {"--frames", "20", "--checkpoint-every", "0.25", "--checkpoint"}) args.push_back(a);
   args.push_back(ckpt);
   auto r = test::runProcess(args);
   ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
-  // 40 frames of 1/60 s: autosaves at 0.25 and 0.5 s.
-  EXPECT_NE(r.err.find("autosaved " + ckpt + " at t = 0.250 s"), std::string::npos) << r.err;
+  // 20 frames of the scene's 1/30 s, as `render` advances them: autosaves at 8/30 and 15/30 s.
+  EXPECT_NE(r.err.find("autosaved " + ckpt + " at t = 0.267 s"), std::string::npos) << r.err;
   EXPECT_NEAR(io::readCheckpointFile(ckpt).time, 0.5, 1e-9);
   args = window;
   for (const char* a : {"--frames", "2", "--resume"}) args.push_back(a);

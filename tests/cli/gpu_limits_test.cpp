@@ -62,7 +62,7 @@ TEST(GpuLimits, BallsPastOneStorageBlockRunInWindowsAsInOne) {
       "particles": {"radius": 0.005, "domain_min": [0, 0, 0], "domain_max": [0.4, 0.25, 0.5], "fill": "block",
                     "fill_min": [0, 0, 0], "fill_max": [0.2, 0.25, 0.4]},
       "engine": {"substeps": 10},
-      "view": {"mode": "water", "raster": "fragment",
+      "view": {"mode": "water",
                "camera": {"target": [0.2, 0.12, 0.15], "distance": 1.0, "yaw": -1.15, "pitch": 0.35}}}})");
   auto bytes = [](const std::filesystem::path& file) {
     std::ifstream in(file, std::ios::binary);
@@ -74,7 +74,8 @@ TEST(GpuLimits, BallsPastOneStorageBlockRunInWindowsAsInOne) {
     const auto r = test::runTidepool(
         {"render", (dir / "box.json").string(), "--frames", "3", "--size", "96x64", "--out", out, "--checkpoint",
          out + ".ckpt", "--quiet"},
-        windowed ? std::vector<std::string>{"TIDEPOOL_STORAGE_BLOCK_BYTES=262144"} : std::vector<std::string>{});
+        windowed ? std::vector<std::string>{"TIDEPOOL_STORAGE_BLOCK_BYTES=262144", "TIDEPOOL_BALLS_RASTER=fragment"}
+                 : std::vector<std::string>{"TIDEPOOL_BALLS_RASTER=fragment"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     checkpoint[windowed] = bytes(out + ".ckpt");
     frame[windowed] = bytes(std::filesystem::path(out) / "frame_00002.png");
