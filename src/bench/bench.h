@@ -98,7 +98,7 @@ struct PassTimes {
 };
 // wallClock: time whole frames around glFinish, as on a software renderer, for frames that wait
 // on the GPU part-way (a read-back): GL_TIME_ELAPSED across such a wait misses part of the frame
-// (docs/PERFORMANCE.md §16).
+// (docs/PERFORMANCE.md, "Per-pass timers on queued steps").
 PassTimes timePasses(int warmup, int timed, const std::function<void(gl::GpuProfiler&)>& frame, bool wallClock = false,
                      Timers timers = Timers::Queued);
 
