@@ -25,7 +25,7 @@ uniform uint uSourceFirst;
 
 // Candidate j at q: a contact when closer than reach. The ball itself (d = 0) is skipped by the
 // distance test rather than by comparing indices: one test fewer per candidate made the collide
-// pass 13% faster on the H100 (docs/PERFORMANCE.md §4).
+// pass 13% faster on the H100 (docs/ARCHITECTURE.md, "Rejected designs").
 void candidate(uint j, vec3 p, vec3 q, float reach) {
   const vec3 d = p - q;
   const float dist2 = dot(d, d);

@@ -30,7 +30,8 @@ namespace tidepool::gl {
 std::size_t storageBlockBytes();
 // The largest buffer tidepool splits into windows: on the H100 and H200 (driver 580.159.04) a
 // windowed array of balls ending at 4 GiB or past it read wrong, while one of 4.16 GB ran right
-// (docs/PERFORMANCE.md §17), so a windowed array ends a window grain of 16 B short of 4 GiB.
+// (docs/PERFORMANCE.md, "Windowed arrays stop short of 4 GiB"), so a windowed array ends one window
+// grain (4096 elements of 16 B) short of 4 GiB.
 constexpr std::size_t kMaxWindowedBufferBytes = (std::size_t(4) << 30) - 65536;
 constexpr std::size_t kWindowGrain = 4096;                        // elements
 constexpr std::size_t kMinStorageBlockBytes = 16 * kWindowGrain;  // one grain of 16-byte elements

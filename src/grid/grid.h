@@ -1,4 +1,5 @@
-// Uniform spatial grid on the GPU, shared by the balls and life models (and the grid benchmark):
+// Uniform spatial grid on the GPU, shared by the balls, fluid and life models (and the fluid's density probe, the
+// balls view's grid-cells overlay and the grid benchmark):
 // particles are counted into cells, the counts are scanned into cell starts, and particle arrays
 // are reordered so that each cell's particles are contiguous and cells are in index order (x
 // fastest, then y, then z).

@@ -22,11 +22,13 @@
 // two: reduce, then scan, each of the 256 groups summing the block sums before its own (at most
 // 255 words, from L2). A dispatch costs microseconds of launch and drain, the middle one more than
 // its tiny work; the fused sums grow as B^2 / 2 words, 32 MB of L2 reads at 4096 blocks, hence the
-// threshold. Measured on the H100 (docs/PERFORMANCE.md, "Grid"), fusing wins at every size up to 16M: 1M 0.024 -> 0.018
-// ms, 16M 53.5% -> 57.1% of a copy. Any level may fuse: past 16M, level 1 (the sums, in a few blocks) does, so 16M + 1
-// elements take four dispatches, not five. Inside a block (default shape): 16 elements per invocation as 4 coalesced
-// uvec4 loads, a scan of the 1024 chunk sums, and a Blelloch up-sweep/down-sweep of the 256 invocation totals in padded
-// shared memory (shaders/grid/scan_group.glsl). No warp or subgroup size is assumed.
+// threshold. Measured on the H100 (docs/ARCHITECTURE.md, "Rejected designs"), fusing wins at
+// every size up to 16M: 1M 0.024 -> 0.018 ms, 16M 53.5% -> 57.1% of a copy. Any level may fuse:
+// past 16M, level 1 (the sums, in a few blocks) does, so 16M + 1 elements take four dispatches,
+// not five.
+// Inside a block (default shape): 16 elements per invocation as 4 coalesced uvec4 loads, a scan
+// of the 1024 chunk sums, and a Blelloch up-sweep/down-sweep of the 256 invocation totals in
+// padded shared memory (shaders/grid/scan_group.glsl). No warp or subgroup size is assumed.
 //
 // NaiveScan is the log2(N)-pass Hillis-Steele scan (as in the particle-life article), kept as
 // the reference for tests and the benchmark.

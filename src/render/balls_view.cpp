@@ -178,13 +178,13 @@ WindowRect BallsView::drawScene(const BallsScene& scene, const BallsCamera& came
       rasterOf(m_params.raster) == BallsRaster::Compute ? meshesWindowRect(scene, camera) : wholeWindow(camera);
   target.bind();
   // The clear and the draws touch the rectangle only: a depth clear of the whole 1080p target
-  // costs 0.15 ms on the H100 (docs/PERFORMANCE.md §7); the later passes treat the rest as far.
+  // costs 0.15 ms on the H100 (docs/PERFORMANCE.md, "Render"); the later passes treat the rest as far.
   glEnable(GL_SCISSOR_TEST);
   glScissor(rect.min.x, rect.min.y, rect.max.x - rect.min.x, rect.max.y - rect.min.y);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthMask(GL_TRUE);
   // Depth only: the compose takes the background where the depth is still far, so a colour clear
-  // (0.15 ms at 1080p on the H100, docs/PERFORMANCE.md §7) would be wasted.
+  // (0.15 ms at 1080p on the H100) would be wasted.
   glClearDepth(1.0);
   glClear(GL_DEPTH_BUFFER_BIT);
   glEnable(GL_DEPTH_TEST);

@@ -1,4 +1,4 @@
-// Deferred renderer of the balls model (issue 6), after water-webgpu's sphere renderer without
+// Deferred renderer of the balls model, after water-webgpu's sphere renderer without
 // its shortcuts. It only reads the model's SSBOs. One frame:
 //   1. scene:     each obstacle as a mesh placed by its pose (a mesh obstacle's own triangles,
 //                 flat-shaded; any other shape the surface of its balls), their balls too on

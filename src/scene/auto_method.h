@@ -23,7 +23,8 @@
 //   frontError     water-front                front_error
 //
 // The scene then runs the picked model: scene.model becomes "balls" or "fluid" and scene.params
-// that model's params (the balls from the fluid's with asBalls: radius = spacing / 2).
+// that model's params (the balls from the fluid's with asBalls, scene/water_stage.h: the same water
+// volume, so radius = spacing · 2^(1/6) / 2).
 #pragma once
 
 #include <array>

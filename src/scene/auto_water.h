@@ -3,14 +3,17 @@
 // scene. Both studies hold rows of both models (column `model`), measured on the same metric, so
 // the pick compares them: the cheapest row that meets the bound decides the model as well.
 //
-//   key            study (assets/accuracy/)  column               rows' method
-//   densityError   fluid-density             density_error_mean   "pbf, 4 iterations" | "spring-dashpot,
-//   symplectic-euler" frontError     water-front               front_error          (the same)
+// clang-format off
+//   key            study (assets/accuracy/)   column               rows' method
+//   densityError   fluid-density              density_error_mean   "pbf, 4 iterations" | "spring-dashpot, symplectic-euler"
+//   frontError     water-front                front_error          (the same)
+// clang-format on
 //
 // A fluid row sets solver.iterations and engine.dt, engine.substeps (rescaled: the frame keeps
 // its simulated time dt x substeps); a balls row sets what a balls "method": "auto" pick sets
-// (auto_models.h: ballsSettings) on the scene's particles as balls (asBalls: the same water volume, radius = spacing ·
-// 2^(1/6) / 2). Rows whose resolution names a spacing ("spacing 0.02 m") apply only to scenes of that spacing.
+// (auto_models.h: ballsSettings) on the scene's particles as balls (asBalls, scene/water_stage.h:
+// the same water volume, radius = spacing · 2^(1/6) / 2). Rows whose resolution names a spacing
+// ("spacing 0.02 m") apply only to scenes of that spacing.
 #pragma once
 
 #include <string>

@@ -1,4 +1,4 @@
-// The two water models stepped, timed and sampled alike for the water studies of issue 18
+// The two water models stepped, timed and sampled alike for the water studies
 // (water_studies.cpp: fluid-density and water-front; fluid_stability_study.cpp): one run of the
 // balls (DEM) or of the fluid (PBF) on the same water, read on the same metrics. The density error
 // is measured with the fluid's kernel for both (fluid::DensityProbe; the balls with h = 2 × their

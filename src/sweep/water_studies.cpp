@@ -1,4 +1,4 @@
-// The water studies of issue 18: both water models, balls (DEM, spring-dashpot contacts) and fluid
+// The water studies: both water models, balls (DEM, spring-dashpot contacts) and fluid
 // (position-based fluid), on the same water and the same metrics (water_run.h).
 //
 // fluid-density: the resting tank (fluid-tank.json: 0.2 m of water, d = 0.02 m). The fluid at

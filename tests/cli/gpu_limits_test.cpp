@@ -52,7 +52,7 @@ TEST(GpuLimits, TapCountsTowardsTheLimit) {
                      "would make about 5000 balls, but at most 1000 fit (max_particles = 1000)", 1);
 }
 
-// Issue 20: arrays past the storage-block limit run in windows (gl/window.h). With the limit lowered
+// Arrays past the storage-block limit run in windows (gl/window.h). With the limit lowered
 // to 256 KiB, 20,000 balls step, check their health, save a checkpoint and draw in water mode in
 // windows of 16,384; the checkpoint must be the one-block run's byte for byte and the frame its
 // picture pixel for pixel (the fragment raster in both: windowed balls are drawn as fragments).

@@ -1,4 +1,4 @@
-// Hostile input (issue 19) through the program: files too large, too deep or not files at all
+// Hostile input through the program: files too large, too deep or not files at all
 // end the run with one line naming the file, the place and the limit, and exit status 1.
 #include <gtest/gtest.h>
 

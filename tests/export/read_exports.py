@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Reads tidepool's exports back with real readers (issue 21): each scene is rendered twice,
+"""Reads tidepool's exports back with real readers: each scene is rendered twice,
 `--export vtk` and `--export ply`, and
   - the .pvd is parsed as XML: one DataSet per exported frame (frame 0 and every K-th), in order,
     at the simulated time the scene's step gives;

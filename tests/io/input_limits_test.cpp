@@ -1,4 +1,4 @@
-// Hostile input (issue 19): every reader refuses what is too large or too deep with one line
+// Hostile input: every reader refuses what is too large or too deep with one line
 // naming the file, the place and the limit, before allocating for it; text quoted from a file
 // cannot break that line.
 #include <gtest/gtest.h>

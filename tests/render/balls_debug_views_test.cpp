@@ -1,4 +1,4 @@
-// The balls view's debug views (issue 22): the grid cells overlay compacts exactly the non-empty
+// The balls view's debug views: the grid cells overlay compacts exactly the non-empty
 // cells of the grid (its indirect command counts them, its list names them, in index order), on a
 // grid of its own and on a balls model's; the screen-space normals view shows the view-space
 // normal where the world normals view shows the same normal in world axes.

@@ -1,4 +1,4 @@
-// The 3D views' projections (issue 22): the orbit camera's perspective and orthographic matrices
+// The 3D views' projections: the orbit camera's perspective and orthographic matrices
 // against hand-computed values, its rays (parallel when orthographic), BallsCamera's depth range
 // read back from either matrix; and an orthographic balls picture in which two equal balls at
 // different depths have the same size, with either raster.

@@ -1,4 +1,4 @@
-// Hostile input (issue 19): a bad file dropped on the window changes nothing. Each stage that
+// Hostile input: a bad file dropped on the window changes nothing. Each stage that
 // takes files reads the whole file before it changes anything; a refusal is one line naming the
 // file and the problem, and every parameter the UI shows is as it was.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Scenes that grow with the GPU (issue 20): particles.resolution refines a water scene's spacing
+// Scenes that grow with the GPU: particles.resolution refines a water scene's spacing
 // keeping its physical setup; the window edits it live; --fit-gpu measures the finest that fits.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Reproducible runs (issue 19): the same scene stepped twice from a fresh model gives bit-identical
+// Reproducible runs: the same scene stepped twice from a fresh model gives bit-identical
 // state, for every model. llvmpipe runs compute on several threads (four here: LP_NUM_THREADS is
 // set before the suite makes its context), so an order decided by thread timing (the grid's
 // atomicAdd slots) would show up here; the grid's stable order within cells (grid/grid.h) removes it.

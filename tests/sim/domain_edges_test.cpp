@@ -1,4 +1,4 @@
-// GPU limits (issue 19): particles at, on and past every domain face, edge and corner, and on
+// GPU limits: particles at, on and past every domain face, edge and corner, and on
 // every grid-cell border, step without an out-of-bounds index (the grid clamps them into its
 // border cells; the walls bring them back inside) and come out finite and inside the walls, for
 // balls, fluid and life (walls and looping borders). An index past an array would crash llvmpipe or

@@ -1,4 +1,4 @@
-// The water studies of issue 18 (fluid-density, water-front, fluid-stability), quick runs on
+// The water studies (fluid-density, water-front, fluid-stability), quick runs on
 // llvmpipe through the program, as the GPU machine runs them: rows of both models in one CSV with
 // the columns "method": "auto" reads, a CSV that reads back exactly as written (and redraws), and
 // measurements ordered as the physics says.

@@ -1,5 +1,5 @@
 // Statistics and the density probe of particle water, for the fluid AND the balls: one metric for
-// both models (issue 18). The particles' configuration is measured with the fluid's kernel (poly6,
+// both models. The particles' configuration is measured with the fluid's kernel (poly6,
 // support h = smoothing × spacing, rest volume from the rest lattice, walls' half spaces and the
 // obstacles' boundary particles), so a ball configuration reads its compression as the fluid
 // solver would see it. The probe sorts copies of the particles into its own grid (cell h): the

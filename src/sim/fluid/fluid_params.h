@@ -16,7 +16,7 @@ struct Params {
   // What a fluid scene shares with a balls scene (the window switches between the two keeping it).
   // water.radius is spacing / 2 (set from `spacing` by resolvedWater()); contact laws are unused.
   balls::Params water = defaultWater();
-  float spacing = 0.02f;        // d: distance between neighbouring particles at rest (HCP fill), m
+  float spacing = 0.02f;        // d: distance between neighbouring particles at rest (cubic fill), m
   float restDensity = 1000.0f;  // ρ0, kg/m³
   float smoothing = 2.0f;       // h / d: the kernels' support in spacings
   int iterations = 4;           // solver iterations per step

@@ -4,7 +4,7 @@
 // and the spiky kernel's gradient for the constraint gradients (poly6's gradient vanishes at
 // r = 0, which lets particles clump). Both have support h (the smoothing radius, metres), are
 // normalised so that ∫ W dV = 1, and are templates so that the CPU references (double) and the
-// float path the shaders mirror use one definition. Issue 18's fluid model and the density
+// float path the shaders mirror use one definition. The fluid model and the density
 // metric of both water models (balls measured with the same kernel and h) build on these.
 //
 //   W_poly6(r, h)  = 315 / (64 π h⁹) · (h² − r²)³        for 0 ≤ r < h, else 0

@@ -1,4 +1,4 @@
-// Failing loudly (issue 10): a balls run past its stability limit is caught by the non-blocking
+// Failing loudly: a balls run past its stability limit is caught by the non-blocking
 // watch, reported with the time, contact law, integrator and time step, and recovered from the
 // last good state with half the time step, exactly: the restored state is the one a twin run
 // reaches at the same time, bit for bit, and both go on alike; a stable run is never flagged.

@@ -1,4 +1,4 @@
-// Physics of the balls against theory (shared/ACCURACY-REFERENCES.md §2.2): free fall, the
+// Physics of the balls against theory (shared/ACCURACY-REFERENCES.md, "DEM linear spring–dashpot"): free fall, the
 // spring-dashpot restitution, momentum in a head-on collision, energy behaviour of the
 // integrators on an undamped contact, and a settled column.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Balls whose vec4 arrays pass one storage block (issue 20): with the limit lowered to 256 KiB,
+// Balls whose vec4 arrays pass one storage block: with the limit lowered to 256 KiB,
 // windows hold 16384 balls and the collide's windows 8192 (plus the balls in reach of them), so
 // these 40,000 balls step in several windows per pass. A deterministic run must be the unwindowed
 // one bit for bit, for both integrators, both reorders and with an obstacle, and so must its

@@ -1,4 +1,4 @@
-// The fluid behaves like water (issue 18): a resting tank keeps its density within 1% with four
+// The fluid behaves like water: a resting tank keeps its density within 1% with four
 // iterations (less with more), keeps its surface and every particle; the dam break runs 2 s
 // stable with every particle kept and a front that only advances.
 #include <gtest/gtest.h>

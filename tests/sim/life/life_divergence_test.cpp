@@ -1,4 +1,4 @@
-// Failing loudly (issue 10): particle life past symplectic Euler's limit on the central force
+// Failing loudly: particle life past symplectic Euler's limit on the central force
 // (ω·dt > 2) is caught by the non-blocking watch, reported with the integrator, storage and dt,
 // and undone exactly: the restored state is the one a twin run reaches at the same time, and
 // with half the time step the run goes on without being flagged.

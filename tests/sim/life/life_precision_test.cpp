@@ -1,4 +1,4 @@
-// fp16 state storage of particle life (life-precision, issue 10): one GPU step from a state of
+// fp16 state storage of particle life (the life-precision study): one GPU step from a state of
 // half floats equals a double-precision CPU step within one half-float rounding of the result;
 // the fp32 step equals it to float round-off; the CPU reference itself equals the O(N^2) brute
 // force; a storage change converts the running state; a fp16 scene renders like a fp32 one.

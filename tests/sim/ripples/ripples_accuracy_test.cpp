@@ -1,4 +1,5 @@
-// Accuracy and stability of the wave rule against theory (shared/ACCURACY-REFERENCES.md §3):
+// Accuracy and stability of the wave rule against theory (shared/ACCURACY-REFERENCES.md,
+// "Heightfield / shallow-water wave grid"):
 //   phase speed  c̃/c = 2·asin(C·S)/(C·kΔx), S² = sin²(k_xΔx/2) + sin²(k_yΔx/2)
 //   stability    C = c·Δt/Δx ≤ 1/√2 in 2D; the seed rule's limit (derived below) found the same way.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Failing loudly (issue 10): a swarm step far too long for the field (a particle kicked to
+// Failing loudly: a swarm step far too long for the field (a particle kicked to
 // absurd speed, or fp16 state overflowing to infinity) is caught by the non-blocking watch,
 // reported with the integrator, storage and dt, and undone exactly from the last good state with
 // half the time step; a headless run exits non-zero with the message.

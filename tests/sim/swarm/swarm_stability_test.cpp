@@ -1,7 +1,7 @@
 // Where the swarm's integrators fail: the core of a softened attractor is a harmonic oscillator
 // (force s·d/(|d|² + ε) ≈ −(s/ε)·x for |x|² ≪ ε, ω = √(s/ε)), and the largest stable ω·dt of each
 // integrator, found by bisection on the GPU (sim/swarm/measure/swarm_measure.h), is compared with the
-// limit of its one-step matrix (shared/ACCURACY-REFERENCES.md §4): symplectic Euler and velocity
+// limit of its one-step matrix (shared/ACCURACY-REFERENCES.md, "Time integrators"): symplectic Euler and velocity
 // Verlet 2, classical RK4 2√2, explicit Euler none.
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-// Single-contact measurements of the balls model against DEM theory (ACCURACY-REFERENCES §2.2),
-// shared by the tests and `tidepool sweep`:
+// Single-contact measurements of the balls model against DEM theory (shared/ACCURACY-REFERENCES.md,
+// "DEM linear spring–dashpot"), shared by the tests and `tidepool sweep`:
 //   restitution   one ball hits the floor at 1 m/s without gravity: e = v_out / v_in
 //   stability     an undamped contact (e = 1) oscillates with ω0 = π/t_c; symplectic Euler and
 //                 Verlet are stable while ω0·dt < 2, i.e. dt < 2·t_c/π ≈ 0.64·t_c; explicit

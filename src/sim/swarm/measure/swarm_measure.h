@@ -4,8 +4,9 @@
 //                E = |v|²/2 − s·ln|x| is conserved exactly, so the error of an integrator is
 //                max |ΔE|/s over the run.
 //   oscillator   the core of a softened attractor: for |x|² ≪ ε the force s·d/(|d|² + ε) is
-//                −(s/ε)·x, a harmonic oscillator of ω = √(s/ε) (ACCURACY-REFERENCES §4: symplectic
-//                Euler and Verlet stable while ω·dt < 2, RK4 while ω·dt ≤ 2√2, explicit Euler never).
+//                −(s/ε)·x, a harmonic oscillator of ω = √(s/ε) (shared/ACCURACY-REFERENCES.md,
+//                "Time integrators": symplectic Euler and Verlet stable while ω·dt < 2, RK4 while
+//                ω·dt ≤ 2√2, explicit Euler never).
 #pragma once
 
 #include "gl/shader_library.h"
