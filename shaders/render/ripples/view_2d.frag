@@ -1,7 +1,7 @@
 #version 430 core
 // Raster variant of the 2D ripples view (view_2d.comp is the default): one full-screen
 // triangle, the floor sampled with the fragment's own derivatives. Kept to check the compute
-// view against (tests) and selectable with the view's "renderer": "raster".
+// view against (tests, `bench ripples --renderer raster`).
 #include "render/ripples/view_2d.glsl"
 
 in vec2 vUv;
