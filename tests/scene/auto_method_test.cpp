@@ -7,8 +7,7 @@
 #include <sstream>
 
 #include "base/error.h"
-#include "scene/auto_models.h"
-#include "scene/auto_select.h"
+#include "scene/auto/candidates.h"
 #include "scene/param_json.h"
 #include "scene/scene.h"
 #include "sim/balls/balls_params.h"
@@ -133,10 +132,10 @@ TEST(AutoScene, ShippedDataGivesEachModelAPickCheaperThanTheMostAccurate) {
 }
 
 TEST(AutoScene, EveryMetricReadsItsShippedStudy) {
-  for (const Source& s : sources()) {
+  for (const Metric& s : metrics()) {
     SCOPED_TRACE(s.key);
-    for (const char* study : s.studies) {
-      const std::filesystem::path file = accuracyDir() / (std::string(study) + ".csv");
+    for (const std::string& study : s.studies) {
+      const std::filesystem::path file = accuracyDir() / (study + ".csv");
       const io::CsvTable table(file);
       EXPECT_TRUE(table.has(s.column)) << file;
       EXPECT_NE(table.text(0, "device"), "");
@@ -179,8 +178,8 @@ TEST(AutoScene, MistakesAreOneLineErrorsNamingTheKey) {
       {"{\"model\": \"ripples\", \"method\": \"auto\", \"accuracy\": {\"phaseError\": 1e-6, \"wavelengthCells\": 8}}",
        "s.json: scene.accuracy.phaseError 1e-06 cannot be met by any measured setting; best is C <= "},
       {"{\"model\": \"balls\", \"method\": \"auto\", \"accuracy\": {\"maxOverlap\": 0.02, \"restitutionError\": 0.1}}",
-       "s.json: scene.accuracy: restitutionError and maxOverlap are measured by different studies; state bounds of one "
-       "study"},
+       "s.json: scene.accuracy: restitutionError (balls-restitution) and maxOverlap (balls-settle) are measured by "
+       "different studies; state bounds of one study"},
   };
   for (const auto& [json, message] : cases) {
     SCOPED_TRACE(json);

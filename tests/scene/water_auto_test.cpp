@@ -10,7 +10,6 @@
 #include <vector>
 
 #include "base/error.h"
-#include "scene/auto_water.h"
 #include "scene/balls_stage.h"
 #include "scene/fluid_stage.h"
 #include "scene/scene.h"
