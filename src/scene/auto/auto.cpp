@@ -92,16 +92,9 @@ fs::path studyFile(const std::string& study) { return accuracyDir() / (study + "
 
 // Whether the scene's "params" object as written states `key` ("engine.dt"): the typed params
 // cannot tell a stated value from a default.
-bool states(const io::Json& params, const std::string& key) {
-  const io::Json* at = &params;
-  for (std::size_t start = 0;;) {
-    const std::size_t dot = key.find('.', start);
-    const std::string name = key.substr(start, dot - start);
-    if (!at->is_object() || !at->contains(name)) return false;
-    at = &at->at(name);
-    if (dot == std::string::npos) return true;
-    start = dot + 1;
-  }
+bool states(const io::Json& params, std::string key) {
+  std::replace(key.begin(), key.end(), '.', '/');
+  return params.contains(io::Json::json_pointer("/" + key));
 }
 
 // A key the pick sets that the scene sets too (other than the ones the pick rescales) would be
