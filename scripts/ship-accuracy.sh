@@ -6,7 +6,7 @@
 #   scripts/ship-accuracy.sh --from-csv   ship the rows already in bench/results/ (measured
 #                                         elsewhere and copied back) without running anything
 #
-# The list is the studies src/scene/auto_models.cpp reads (a test checks they agree).
+# The list is the studies src/scene/auto/auto.cpp reads (a test checks they agree).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 studies=(swarm-orbit swarm-precision ripples-dispersion balls-restitution balls-settle fluid-density water-front)

@@ -5,7 +5,7 @@
 #include "cli/commands.h"
 #include "gl/context.h"
 #include "gl/info.h"
-#include "scene/auto_method.h"
+#include "scene/auto/auto.h"
 #include "sweep/sweep.h"
 
 namespace tidepool::cli {

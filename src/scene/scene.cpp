@@ -14,7 +14,7 @@ std::string modelNames() {
   return names + ", " + kAutoModel;
 }
 
-// "model": "auto" reads a fluid scene's params (the balls' follow from them, scene/auto_water.h).
+// "model": "auto" reads a fluid scene's params (the balls' follow from them, scene/auto/auto.h).
 const ModelEntry& modelNamed(const std::string& name, const std::string& where) {
   const std::string model = name == kAutoModel ? "fluid" : name;
   for (const ModelEntry& m : models())
@@ -102,7 +102,7 @@ Scene readScene(const io::Json& json, const std::string& where, const io::Json& 
     params.merge_patch(overrides);
   }
   scene.params = modelNamed(scene.model, where).parse(params, where + ": params");
-  resolveAutoMethod(scene, params, where);  // after the overrides, which it must not silently undo
+  resolveAuto(scene, params, where);  // after the overrides, which it must not silently undo
   applyResolution(scene, where);
   return scene;
 }

@@ -5,9 +5,9 @@
 //     "clip": { "frames": 90, "fps": 30, "width": 960, "height": 540 } }
 //
 // A scene may instead state the accuracy it needs and let the engine pick the method:
-//   "method": "auto", "accuracy": { "energyDrift": 1e-3 }   (scene/auto_method.h)
+//   "method": "auto", "accuracy": { "energyDrift": 1e-3 }   (scene/auto/auto.h)
 // and a water scene the model too (balls or fluid; its params are a fluid scene's):
-//   "model": "auto", "accuracy": { "densityError": 0.01 }  (scene/auto_water.h)
+//   "model": "auto", "accuracy": { "densityError": 0.01 }
 //
 // The window, the headless renderer, benchmarks and tests load the same files.
 #pragma once
@@ -19,7 +19,7 @@
 
 #include "io/assets.h"
 #include "io/json.h"
-#include "scene/auto_method.h"
+#include "scene/auto/auto.h"
 #include "scene/scene_params.h"
 #include "scene/stage.h"
 
@@ -37,7 +37,7 @@ struct Scene {
   std::string model = "blank";
   SceneParams params;  // the model's typed parameters, read from "params" at load (scene/scene_params.h)
   ClipSettings clip;
-  MethodMode method = MethodMode::Params;  // "auto": pick the method from `accuracy` (scene/auto_method.h)
+  MethodMode method = MethodMode::Params;  // "auto": pick the method from `accuracy` (scene/auto/auto.h)
   io::Json accuracy;                       // e.g. {"energyDrift": 1e-3}; null when not stated
   std::optional<AutoChoice> autoChoice;    // what "auto" picked (already written into params)
 };

@@ -175,7 +175,7 @@ TEST(BallsScenes, RenderWritesASequenceForEveryBallsScene) {
   for (const auto& entry : std::filesystem::directory_iterator(findAssetDir() / "scenes")) {
     if (entry.path().extension() != ".json" || !test::missingAccuracyData(entry.path()).empty() ||
         loadScene(entry.path()).model != "balls")
-      continue;  // (water-auto.json before its rows ship: WaterAuto.* run it on fixtures)
+      continue;  // (water-auto.json before its rows ship: ResolveAutoWater.* run it on fixtures)
     SCOPED_TRACE(entry.path().string());
     test::TempDir dir;
     const auto r = test::runTidepool(

@@ -23,7 +23,7 @@ TEST_F(Scenes, EveryShippedSceneLoadsBuildsStepsAndRenders) {
     if (entry.path().extension() != ".json") continue;
     SCOPED_TRACE(entry.path().string());
     if (const std::string missing = test::missingAccuracyData(entry.path()); !missing.empty()) {
-      // water-auto.json before the GPU machine ships its rows (WaterAuto.* run it on fixtures)
+      // water-auto.json before the GPU machine ships its rows (ResolveAutoWater.* run it on fixtures)
       std::printf("skipped %s: %s not shipped yet\n", entry.path().filename().c_str(), missing.c_str());
       continue;
     }

@@ -21,7 +21,7 @@ using namespace tidepool;
 
 namespace {
 
-class AutoRealRun : public test::GlTest {};
+class ResolveAutoRealRun : public test::GlTest {};
 
 template <std::size_t N>
 int indexOf(const std::array<const char*, N>& names, const std::string& name) {
@@ -33,7 +33,7 @@ int indexOf(const std::array<const char*, N>& names, const std::string& name) {
 
 }  // namespace
 
-TEST_F(AutoRealRun, SwarmPickMeetsItsEnergyDriftAndMovesLessStateThanTheMostAccurate) {
+TEST_F(ResolveAutoRealRun, SwarmPickMeetsItsEnergyDriftAndMovesLessStateThanTheMostAccurate) {
   const std::filesystem::path file = findAssetDir() / "scenes" / "swarm-auto.json";
   const Scene scene = loadScene(file);
   ASSERT_TRUE(scene.autoChoice);
@@ -62,7 +62,7 @@ TEST_F(AutoRealRun, SwarmPickMeetsItsEnergyDriftAndMovesLessStateThanTheMostAccu
   EXPECT_LE(bytesPerSimSecond(picked, sceneDt), bytesPerSimSecond(best, bestSceneDt));
 }
 
-TEST_F(AutoRealRun, RipplesPickMeetsItsPhaseErrorAndUpdatesFewerCellsThanTheMostAccurate) {
+TEST_F(ResolveAutoRealRun, RipplesPickMeetsItsPhaseErrorAndUpdatesFewerCellsThanTheMostAccurate) {
   const std::filesystem::path file = findAssetDir() / "scenes" / "ripples-auto.json";
   const Scene scene = loadScene(file);
   ASSERT_TRUE(scene.autoChoice);
@@ -86,7 +86,7 @@ TEST_F(AutoRealRun, RipplesPickMeetsItsPhaseErrorAndUpdatesFewerCellsThanTheMost
   EXPECT_LT(cellUpdatesPerSimSecond(picked), cellUpdatesPerSimSecond(best));
 }
 
-TEST_F(AutoRealRun, BallsPickMeetsItsRestitutionErrorInFewerStepsThanTheMostAccurate) {
+TEST_F(ResolveAutoRealRun, BallsPickMeetsItsRestitutionErrorInFewerStepsThanTheMostAccurate) {
   const std::filesystem::path file = findAssetDir() / "scenes" / "balls-auto.json";
   const Scene scene = loadScene(file);
   ASSERT_TRUE(scene.autoChoice);
@@ -106,7 +106,7 @@ TEST_F(AutoRealRun, BallsPickMeetsItsRestitutionErrorInFewerStepsThanTheMostAccu
 
 // maxOverlap reads balls-settle.csv, measured on a block of r = 1 cm balls under g = 9.81 m/s²
 // with t_c = 20 dt: the pick (integrator, dt and that t_c) runs there at the study's small size.
-TEST_F(AutoRealRun, BallsOverlapPickMeetsItsBoundOnTheSettlingColumn) {
+TEST_F(ResolveAutoRealRun, BallsOverlapPickMeetsItsBoundOnTheSettlingColumn) {
   const Scene scene = parseScene(io::parseJson(R"({"model": "balls", "method": "auto",
       "accuracy": {"maxOverlap": 0.1}, "params": {"engine": {"dt": 0.0005, "substeps": 8}}})",
                                                "s.json"),

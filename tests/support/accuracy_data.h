@@ -9,8 +9,7 @@
 #include <string>
 
 #include "io/json.h"
-#include "scene/auto_method.h"
-#include "scene/auto_water.h"
+#include "scene/auto/auto.h"
 
 namespace tidepool::test {
 
@@ -20,10 +19,10 @@ inline std::string missingAccuracyData(const std::filesystem::path& scene) {
   const io::Json json = io::readJsonFile(scene);
   if (!json.is_object() || json.value("model", "") != kAutoModel || !json.contains("accuracy")) return "";
   for (const auto& [key, value] : json.at("accuracy").items())
-    if (const automethod::WaterSource* s = automethod::waterSource(key)) {
-      const std::filesystem::path file = accuracyDir() / (std::string(s->study) + ".csv");
-      if (!std::filesystem::exists(file)) return file.string();
-    }
+    for (const automethod::Metric& m : automethod::metrics())
+      if (m.model == "water" && m.key == key)
+        for (const std::string& study : m.studies)
+          if (const auto file = accuracyDir() / (study + ".csv"); !std::filesystem::exists(file)) return file.string();
   return "";
 }
 

@@ -1,30 +1,17 @@
 // "method": "auto": a scene states the accuracy it needs and the engine picks the cheapest
 // measured (method, dt, substeps, precision) that meets it, from the study data shipped in
-// assets/accuracy/<study>.csv (`tidepool sweep <study> --ship` regenerates it).
+// assets/accuracy/<study>.csv (`tidepool sweep <study> --ship` regenerates it). "model": "auto"
+// does the same for water and picks the model too, balls or fluid, from rows of both.
 //
 //   { "model": "swarm", "method": "auto", "accuracy": { "energyDrift": 1e-3 }, "params": {...} }
-//
-//   model    accuracy key       study (assets/accuracy/)           metric column
-//   swarm    energyDrift        swarm-orbit, swarm-precision       energy_error
-//   ripples  phaseError         ripples-dispersion                 phase_error  (+ wavelength or wavelengthCells)
-//   balls    maxOverlap         balls-settle                       max_overlap
-//   balls    energyDrift        balls-settle                       energy_drift
-//   balls    restitutionError   balls-restitution                  restitution_error
-//
-// The pick is written into the scene's typed params (integrator, storage, dt, substeps, Courant
-// target, grid), logged at load and shown in the window's parameter panel.
-//
-// "model": "auto" does the same for water, picking the model too (balls or fluid, scene/auto_water.h):
-//
 //   { "model": "auto", "accuracy": { "densityError": 0.01 }, "params": { <a fluid scene's params> } }
 //
-//   accuracy key   study (assets/accuracy/)   metric column
-//   densityError   fluid-density              density_error_mean
-//   frontError     water-front                front_error
-//
-// The scene then runs the picked model: scene.model becomes "balls" or "fluid" and scene.params
-// that model's params (the balls from the fluid's with asBalls, scene/water_stage.h: the same water
-// volume, so radius = spacing · 2^(1/6) / 2).
+// metrics() (auto/candidates.h) lists each model's accuracy keys with the study and column that
+// measure them (ripples also states wavelength or wavelengthCells). The pick is written into the
+// scene's typed params (integrator, storage, dt, substeps, Courant target, grid), logged at load
+// and shown in the window's parameter panel. "model": "auto" then runs the picked model:
+// scene.model becomes "balls" or "fluid" and scene.params that model's params (the balls from
+// the fluid's with asBalls: the same water volume, so radius = spacing · 2^(1/6) / 2).
 #pragma once
 
 #include <array>
@@ -33,7 +20,7 @@
 #include <vector>
 
 #include "io/json.h"
-#include "scene/auto_select.h"
+#include "scene/auto/candidates.h"
 #include "scene/scene_params.h"
 
 namespace tidepool {
@@ -64,21 +51,21 @@ struct AutoChoice {
   std::string headline() const;    // short: "auto: fluid, 4 iterations, dt 1 ms (density error 0.35% <= 1%)"
 };
 
-// Resolves "method": "auto" in place: validates scene.accuracy, picks from the shipped data,
-// writes the pick into the typed scene.params and sets scene.autoChoice. A scene without
-// "method": "auto" must not state accuracy. "model": "auto" (scene.params read as a fluid
-// scene's) also sets scene.model and scene.method (auto). Throws Error (one line naming the key) for unknown
+// Resolves "method": "auto" and "model": "auto" in place: validates scene.accuracy, picks from the
+// shipped data, writes the pick into the typed scene.params and sets scene.autoChoice ("model":
+// "auto", whose params were read as a fluid scene's, also sets scene.model and scene.method). A
+// scene with neither must not state accuracy. Throws Error (one line naming the key) for unknown
 // keys, keys of another model, out-of-range values, missing data, bounds no measured setting
 // meets, and params the pick would override that `stated` (the file's "params" object) states.
 // `where` prefixes messages (the scene file).
-void resolveAutoMethod(Scene& scene, const io::Json& stated, const std::string& where);
+void resolveAuto(Scene& scene, const io::Json& stated, const std::string& where);
 
 // Studies whose CSVs method or model auto reads: the ones `tidepool sweep <study> --ship` accepts.
 std::vector<std::string> shippedStudies();
 std::filesystem::path accuracyDir();  // assets/accuracy
 
-// Checks that `csv` (a sweep's bench/results/<study>.csv) holds the columns method auto reads
-// and copies it to assets/accuracy/<study>.csv; returns the destination. Throws Error.
+// Checks that `csv` (a sweep's bench/results/<study>.csv) holds the columns auto reads and copies
+// it to assets/accuracy/<study>.csv; returns the destination. Throws Error.
 std::filesystem::path shipStudy(const std::string& study, const std::filesystem::path& csv);
 
 }  // namespace tidepool

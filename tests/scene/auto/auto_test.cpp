@@ -1,5 +1,6 @@
 // "method": "auto": the selection rule on synthetic rows, the shipped data, and the one-line
-// errors for what a scene can state wrongly. Real runs of the picks: tests/sim/auto_real_run_test.cpp.
+// errors for what a scene can state wrongly. Real runs of the picks: tests/sim/auto_real_run_test.cpp;
+// "model": "auto": water_test.cpp.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -7,8 +8,7 @@
 #include <sstream>
 
 #include "base/error.h"
-#include "scene/auto_models.h"
-#include "scene/auto_select.h"
+#include "scene/auto/candidates.h"
 #include "scene/param_json.h"
 #include "scene/scene.h"
 #include "sim/balls/balls_params.h"
@@ -69,7 +69,7 @@ std::vector<std::string> changedKeys(const io::Json& a, const io::Json& b, const
 
 }  // namespace
 
-TEST(AutoSelect, PicksTheCheapestRowWhoseErrorMeetsTheBoundWithTheMargin) {
+TEST(SelectCheapest, PicksTheCheapestRowWhoseErrorMeetsTheBoundWithTheMargin) {
   std::vector<Candidate> rows = {row("a", 1.0, 1.0, 0.9e-3), row("a", 0.5, 2.0, 0.2e-3), row("b", 1.0, 4.0, 1e-6)};
   const Selection s = selectCheapest(rows, {{"energyDrift", 1e-3}}, "s");
   // 0.9e-3 meets 1e-3 but not with the margin: the pick is the next cheapest.
@@ -78,7 +78,7 @@ TEST(AutoSelect, PicksTheCheapestRowWhoseErrorMeetsTheBoundWithTheMargin) {
   EXPECT_LT(s.chosen->cost, s.mostAccurate->cost);
 }
 
-TEST(AutoSelect, ARowCountsWithTheWorstErrorOfItsFamilyAtSmallerSteps) {
+TEST(SelectCheapest, ARowCountsWithTheWorstErrorOfItsFamilyAtSmallerSteps) {
   // Round-off: the family's smallest step is worse than the middle one. The engine may run a
   // smaller step than picked, so the middle and the largest step inherit that error.
   std::vector<Candidate> rows = {row("rk4", 0.1, 1.0, 1e-5), row("rk4", 0.05, 2.0, 1e-6), row("rk4", 0.02, 5.0, 4e-4),
@@ -89,12 +89,12 @@ TEST(AutoSelect, ARowCountsWithTheWorstErrorOfItsFamilyAtSmallerSteps) {
   EXPECT_EQ(s.chosen, &rows[3]);
 }
 
-TEST(AutoSelect, UnstableRowsAreNeverPickedAndPoisonLargerStepsOfTheirFamily) {
+TEST(SelectCheapest, UnstableRowsAreNeverPickedAndPoisonLargerStepsOfTheirFamily) {
   std::vector<Candidate> rows = {row("a", 1.0, 1.0, 1e-9), row("a", 0.5, 2.0, 1e-9, false), row("b", 1.0, 3.0, 1e-3)};
   EXPECT_EQ(selectCheapest(rows, {{"maxOverlap", 0.01}}, "s").chosen, &rows[2]);
 }
 
-TEST(AutoSelect, NoRowMeetingTheBoundIsAOneLineErrorNamingTheBest) {
+TEST(SelectCheapest, NoRowMeetingTheBoundIsAOneLineErrorNamingTheBest) {
   std::vector<Candidate> rows = {row("a", 1.0, 1.0, 0.1), row("b", 1.0, 2.0, 0.01)};
   try {
     selectCheapest(rows, {{"phaseError", 1e-6}}, "s.json: scene.accuracy");
@@ -108,7 +108,7 @@ TEST(AutoSelect, NoRowMeetingTheBoundIsAOneLineErrorNamingTheBest) {
   }
 }
 
-TEST(AutoScene, ShippedDataGivesEachModelAPickCheaperThanTheMostAccurate) {
+TEST(ResolveAuto, ShippedDataGivesEachModelAPickCheaperThanTheMostAccurate) {
   for (const std::string name : {"swarm-auto", "ripples-auto", "balls-auto"}) {
     SCOPED_TRACE(name);
     const Scene scene = loadScene(resolveScenePath(name));
@@ -132,11 +132,11 @@ TEST(AutoScene, ShippedDataGivesEachModelAPickCheaperThanTheMostAccurate) {
   }
 }
 
-TEST(AutoScene, EveryMetricReadsItsShippedStudy) {
-  for (const Source& s : sources()) {
+TEST(ResolveAuto, EveryMetricReadsItsShippedStudy) {
+  for (const Metric& s : metrics()) {
     SCOPED_TRACE(s.key);
-    for (const char* study : s.studies) {
-      const std::filesystem::path file = accuracyDir() / (std::string(study) + ".csv");
+    for (const std::string& study : s.studies) {
+      const std::filesystem::path file = accuracyDir() / (study + ".csv");
       const io::CsvTable table(file);
       EXPECT_TRUE(table.has(s.column)) << file;
       EXPECT_NE(table.text(0, "device"), "");
@@ -144,7 +144,7 @@ TEST(AutoScene, EveryMetricReadsItsShippedStudy) {
   }
 }
 
-TEST(AutoScene, MistakesAreOneLineErrorsNamingTheKey) {
+TEST(ResolveAuto, MistakesAreOneLineErrorsNamingTheKey) {
   const std::vector<std::pair<std::string, std::string>> cases = {
       {swarmScene("\"accuracy\": {\"energyDrfit\": 1e-3}"),
        "s.json: scene.accuracy.energyDrfit: unknown key (known for swarm: energyDrift)"},
@@ -179,8 +179,8 @@ TEST(AutoScene, MistakesAreOneLineErrorsNamingTheKey) {
       {"{\"model\": \"ripples\", \"method\": \"auto\", \"accuracy\": {\"phaseError\": 1e-6, \"wavelengthCells\": 8}}",
        "s.json: scene.accuracy.phaseError 1e-06 cannot be met by any measured setting; best is C <= "},
       {"{\"model\": \"balls\", \"method\": \"auto\", \"accuracy\": {\"maxOverlap\": 0.02, \"restitutionError\": 0.1}}",
-       "s.json: scene.accuracy: restitutionError and maxOverlap are measured by different studies; state bounds of one "
-       "study"},
+       "s.json: scene.accuracy: restitutionError (balls-restitution) and maxOverlap (balls-settle) are measured by "
+       "different studies; state bounds of one study"},
   };
   for (const auto& [json, message] : cases) {
     SCOPED_TRACE(json);
@@ -190,7 +190,7 @@ TEST(AutoScene, MistakesAreOneLineErrorsNamingTheKey) {
   }
 }
 
-TEST(AutoScene, FixedGridRipplesPickOnlyTheCourantNumber) {
+TEST(ResolveAuto, FixedGridRipplesPickOnlyTheCourantNumber) {
   const Scene s = parseScene(io::parseJson("{\"model\": \"ripples\", \"method\": \"auto\", \"accuracy\": "
                                            "{\"phaseError\": 0.05, \"wavelengthCells\": 20}, \"params\": "
                                            "{\"width\": 64, \"height\": 64}}",
@@ -207,7 +207,7 @@ TEST(AutoScene, FixedGridRipplesPickOnlyTheCourantNumber) {
 
 // `tidepool sweep <study> --ship` copies the rows into assets/accuracy (here a temporary assets
 // folder); studies auto does not read, and quick runs, are refused before anything runs.
-TEST(AutoShip, SweepShipCopiesTheCsvAndRefusesOtherStudies) {
+TEST(ShipStudy, SweepShipCopiesTheCsvAndRefusesOtherStudies) {
   test::TempDir assets;
   const std::string results = std::string(TIDEPOOL_SOURCE_DIR) + "/bench/results";
   const std::string env = "TIDEPOOL_ASSET_DIR=" + assets.path().string();
@@ -226,7 +226,7 @@ TEST(AutoShip, SweepShipCopiesTheCsvAndRefusesOtherStudies) {
   }
 }
 
-TEST(AutoShip, TheShipScriptRunsEveryStudyAutoReads) {
+TEST(ShipStudy, TheShipScriptRunsEveryStudyAutoReads) {
   const std::string script = io::readTextFile(std::string(TIDEPOOL_SOURCE_DIR) + "/scripts/ship-accuracy.sh");
   const std::size_t start = script.find("\nstudies=(");
   ASSERT_NE(start, std::string::npos);

@@ -1,4 +1,4 @@
-#include "scene/auto_select.h"
+#include "scene/auto/candidates.h"
 
 #include <algorithm>
 #include <cmath>

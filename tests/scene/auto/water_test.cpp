@@ -10,7 +10,6 @@
 #include <vector>
 
 #include "base/error.h"
-#include "scene/auto_water.h"
 #include "scene/balls_stage.h"
 #include "scene/fluid_stage.h"
 #include "scene/scene.h"
@@ -53,12 +52,12 @@ double frameOf(const Scene& s) {
   return double(ballsScene(s).model.dt) * ballsScene(s).model.substeps;
 }
 
-class WaterAuto : public ::testing::Test {
+class ResolveAutoWater : public ::testing::Test {
  protected:
   test::ScopedAssetDir m_assets{kFixture};
 };
 
-class WaterAutoRun : public test::GlTest {
+class ResolveAutoWaterRun : public test::GlTest {
  protected:
   test::ScopedAssetDir m_assets{kFixture};
 };
@@ -68,7 +67,7 @@ class WaterAutoRun : public test::GlTest {
 // Balls compress: their best row (0.8%) times the margin 2 is above 1%. The fluid with 4
 // iterations at dt 2 ms has 0.4%; a row at another spacing (1 iteration, cheaper, 0.01%) is not
 // this scene's.
-TEST_F(WaterAuto, PicksFluidWhenOnlyTheFluidMeetsATightDensityBound) {
+TEST_F(ResolveAutoWater, PicksFluidWhenOnlyTheFluidMeetsATightDensityBound) {
   const Scene s = load(waterScene(R"({"densityError": 0.01})"));
   ASSERT_TRUE(s.autoChoice);
   EXPECT_EQ(s.model, "fluid");
@@ -94,7 +93,7 @@ TEST_F(WaterAuto, PicksFluidWhenOnlyTheFluidMeetsATightDensityBound) {
 
 // A loose bound: balls at dt 1 ms (2%, x 2 = 4% <= 5%) cost 10, less than any fluid row; the
 // cheaper balls row at 2 ms is unstable and never picked.
-TEST_F(WaterAuto, PicksTheCheaperBallsWhenALooseBoundLetsThemQualify) {
+TEST_F(ResolveAutoWater, PicksTheCheaperBallsWhenALooseBoundLetsThemQualify) {
   const Scene s = load(waterScene(R"({"densityError": 0.05})"));
   ASSERT_TRUE(s.autoChoice);
   EXPECT_EQ(s.model, "balls");
@@ -115,7 +114,7 @@ TEST_F(WaterAuto, PicksTheCheaperBallsWhenALooseBoundLetsThemQualify) {
 
 // Among the fluid rows that meet the bound, the cheapest: the fewest iterations, then the
 // largest step (a row counts with the worst error of its family at its step or smaller).
-TEST_F(WaterAuto, PicksTheFewestIterationsAndTheLargestStepThatMeetTheBound) {
+TEST_F(ResolveAutoWater, PicksTheFewestIterationsAndTheLargestStepThatMeetTheBound) {
   struct Case {
     double bound;
     int iterations;
@@ -134,7 +133,7 @@ TEST_F(WaterAuto, PicksTheFewestIterationsAndTheLargestStepThatMeetTheBound) {
 
 // The pick divides the scene's frame (its dt x substeps, as stated or the fluid's defaults) into
 // more, shorter steps of the same total, for balls and fluid alike.
-TEST_F(WaterAuto, TheFrameKeepsItsSimulatedTime) {
+TEST_F(ResolveAutoWater, TheFrameKeepsItsSimulatedTime) {
   for (const std::string engine :
        {R"("dt": 0.001, "substeps": 5)", R"("dt": 0.0005, "substeps": 7)", R"("dt": 0.004, "substeps": 1)", ""}) {
     SCOPED_TRACE(engine);
@@ -153,7 +152,7 @@ TEST_F(WaterAuto, TheFrameKeepsItsSimulatedTime) {
 }
 
 // A bound no row meets names the bound, the best row and its error, and the file of the rows.
-TEST_F(WaterAuto, ABoundNobodyMeetsIsOneLineNamingTheBoundTheBestAndTheFile) {
+TEST_F(ResolveAutoWater, ABoundNobodyMeetsIsOneLineNamingTheBoundTheBestAndTheFile) {
   const std::string e = sceneError(waterScene(R"({"densityError": 0.001})"));
   EXPECT_EQ(e,
             "s.json: scene.accuracy.densityError 0.001 cannot be met by any measured setting; best is fluid, 8 "
@@ -161,7 +160,7 @@ TEST_F(WaterAuto, ABoundNobodyMeetsIsOneLineNamingTheBoundTheBestAndTheFile) {
                 (kFixture / "accuracy" / "fluid-density.csv").string());
 }
 
-TEST_F(WaterAuto, MistakesAreOneLineErrorsNamingTheKey) {
+TEST_F(ResolveAutoWater, MistakesAreOneLineErrorsNamingTheKey) {
   const std::vector<std::pair<std::string, std::string>> cases = {
       {R"({"model": "auto"})",
        "s.json: scene.model = 'auto' needs scene.accuracy, the error the water accepts (densityError, frontError)"},
@@ -200,7 +199,7 @@ TEST_F(WaterAuto, MistakesAreOneLineErrorsNamingTheKey) {
   }
 }
 
-TEST_F(WaterAuto, MissingDataIsOneLineNamingTheFile) {
+TEST_F(ResolveAutoWater, MissingDataIsOneLineNamingTheFile) {
   test::TempDir empty;
   test::ScopedAssetDir assets(empty.path());
   EXPECT_EQ(sceneError(waterScene(R"({"densityError": 0.01})")),
@@ -212,7 +211,7 @@ TEST_F(WaterAuto, MissingDataIsOneLineNamingTheFile) {
 }
 
 // frontError reads the dam-break front rows: balls at 0.5 ms (0.02) meet 5%; 3% needs the fluid.
-TEST_F(WaterAuto, FrontErrorPicksFromTheWaterFrontRows) {
+TEST_F(ResolveAutoWater, FrontErrorPicksFromTheWaterFrontRows) {
   const Scene loose = load(waterScene(R"({"frontError": 0.05})"));
   ASSERT_TRUE(loose.autoChoice);
   EXPECT_EQ(loose.model, "balls");
@@ -226,7 +225,7 @@ TEST_F(WaterAuto, FrontErrorPicksFromTheWaterFrontRows) {
 
 // The shipped scene reads the dam break's params; with these rows it is the fluid. Without data
 // it fails in one line naming the file, never a crash, from the command line too.
-TEST_F(WaterAuto, TheShippedSceneLoadsWithDataAndFailsInOneLineWithout) {
+TEST_F(ResolveAutoWater, TheShippedSceneLoadsWithDataAndFailsInOneLineWithout) {
   const std::filesystem::path scene = std::filesystem::path(TIDEPOOL_SOURCE_DIR) / "assets/scenes/water-auto.json";
   const Scene s = loadScene(scene);
   EXPECT_EQ(s.model, "fluid");
@@ -243,7 +242,7 @@ TEST_F(WaterAuto, TheShippedSceneLoadsWithDataAndFailsInOneLineWithout) {
 }
 
 // `tidepool render` says what was picked, as for "method": "auto": one log line at load.
-TEST_F(WaterAuto, TheCommandLineLogsThePick) {
+TEST_F(ResolveAutoWater, TheCommandLineLogsThePick) {
   test::TempDir dir;
   dir.write("tank.json", waterScene(R"({"densityError": 0.01})"));
   const auto r = test::runTidepool({"render", (dir / "tank.json").string(), "--frames", "1", "--size", "32x18", "--out",
@@ -257,7 +256,7 @@ TEST_F(WaterAuto, TheCommandLineLogsThePick) {
 
 // The picked parameters build and step the water stage (llvmpipe, 125 particles, three frames):
 // the model the pick names runs, for the frame's simulated time, without diverging.
-TEST_F(WaterAutoRun, PickedParametersBuildAndStepARealStage) {
+TEST_F(ResolveAutoWaterRun, PickedParametersBuildAndStepARealStage) {
   for (const auto& [bound, metric] :
        {std::pair{"0.01", "density error (%)"}, std::pair{"0.05", "max overlap (% of r)"}}) {
     SCOPED_TRACE(bound);
