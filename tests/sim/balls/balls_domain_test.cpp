@@ -3,10 +3,10 @@
 // is pushed below it on the GPU, and "Reset domain" brings rotation 0 and contraction 1 back.
 #include <gtest/gtest.h>
 
+#include "reference/balls_reference.h"
 #include "scene/balls_stage.h"
 #include "scene/scene.h"
 #include "sim/balls/balls.h"
-#include "sim/balls/balls_reference.h"
 #include "sim/balls/water_frame.h"
 #include "support/gl_test.h"
 #include "support/null_visitor.h"

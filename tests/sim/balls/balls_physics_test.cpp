@@ -5,8 +5,8 @@
 
 #include <cmath>
 
+#include "reference/balls_reference.h"
 #include "sim/balls/balls.h"
-#include "sim/balls/balls_reference.h"
 #include "sim/balls/measure/balls_measure.h"
 #include "support/gl_test.h"
 

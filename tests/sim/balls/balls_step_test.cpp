@@ -7,9 +7,9 @@
 #include <random>
 
 #include "base/error.h"
+#include "reference/balls_reference.h"
 #include "sim/balls/balls.h"
 #include "sim/balls/balls_init.h"
-#include "sim/balls/balls_reference.h"
 #include "support/gl_test.h"
 
 using namespace tidepool;

@@ -7,9 +7,9 @@
 
 #include <random>
 
+#include "reference/balls_reference.h"
 #include "scene/balls_stage.h"
 #include "sim/balls/balls.h"
-#include "sim/balls/balls_reference.h"
 #include "support/gl_test.h"
 
 using namespace tidepool;

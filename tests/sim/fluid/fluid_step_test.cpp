@@ -1,4 +1,4 @@
-// The GPU fluid step equals the CPU reference (tests/sim/fluid/pbf_reference.h): one solver
+// The GPU fluid step equals the CPU reference (tests/reference/pbf_reference.h): one solver
 // iteration alone, then several with XSPH, vorticity confinement and an obstacle's boundary
 // particles, in both grid reorder modes.
 #include <gtest/gtest.h>
@@ -6,9 +6,9 @@
 #include <cstdio>
 #include <random>
 
+#include "reference/pbf_reference.h"
 #include "sim/balls/balls_init.h"
 #include "sim/fluid/fluid.h"
-#include "sim/fluid/pbf_reference.h"
 #include "support/gl_test.h"
 
 using namespace tidepool;

@@ -8,8 +8,8 @@
 #include <glm/gtc/packing.hpp>
 
 #include "io/png.h"
+#include "reference/life_reference.h"
 #include "sim/life/life.h"
-#include "sim/life/life_reference.h"
 #include "sim/life/measure/life_cpu.h"
 #include "support/gl_test.h"
 #include "support/run_process.h"

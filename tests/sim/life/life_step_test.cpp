@@ -5,8 +5,8 @@
 #include <cmath>
 #include <random>
 
+#include "reference/life_reference.h"
 #include "sim/life/life.h"
-#include "sim/life/life_reference.h"
 #include "support/gl_test.h"
 
 using namespace tidepool;

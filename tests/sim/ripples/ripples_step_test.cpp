@@ -5,8 +5,8 @@
 #include <random>
 
 #include "base/log.h"
+#include "reference/ripples_reference.h"
 #include "sim/ripples/ripples.h"
-#include "sim/ripples/ripples_reference.h"
 #include "support/gl_test.h"
 
 using namespace tidepool;

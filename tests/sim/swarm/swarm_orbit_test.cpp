@@ -14,7 +14,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "sim/swarm/swarm_reference.h"
+#include "reference/swarm_reference.h"
 #include "support/gl_test.h"
 
 using namespace tidepool;

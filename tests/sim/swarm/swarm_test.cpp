@@ -7,7 +7,7 @@
 #include <glm/gtc/packing.hpp>
 #include <random>
 
-#include "sim/swarm/swarm_reference.h"
+#include "reference/swarm_reference.h"
 #include "support/gl_test.h"
 
 using namespace tidepool;
