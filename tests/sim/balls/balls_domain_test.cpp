@@ -3,11 +3,11 @@
 // is pushed below it on the GPU, and "Reset domain" brings rotation 0 and contraction 1 back.
 #include <gtest/gtest.h>
 
-#include "reference/balls_reference.h"
 #include "scene/balls_stage.h"
 #include "scene/scene.h"
 #include "sim/balls/balls.h"
 #include "sim/balls/water_frame.h"
+#include "support/balls_fixtures.h"
 #include "support/gl_test.h"
 #include "support/null_visitor.h"
 
@@ -29,7 +29,7 @@ class PressReset final : public test::NullVisitor {
 }  // namespace
 
 TEST(BallsDomainWalls, ContractionLowersOnlyTheTopWall) {
-  Params p = reference::emptyBox(0.01f, glm::vec3(1.0f));
+  Params p = test::emptyBox(0.01f, glm::vec3(1.0f));
   p.contraction = 0.4f;
   Walls w = wallsAt(p, 0.0);
   EXPECT_EQ(w.min, glm::vec3(0.0f));
@@ -38,7 +38,7 @@ TEST(BallsDomainWalls, ContractionLowersOnlyTheTopWall) {
   p.domainMax = {1.0f, 1.0f, 2.0f};
   EXPECT_FLOAT_EQ(wallsAt(p, 0.0).max.z, -2.0f + 0.4f * 4.0f) << "a fraction of the domain's height";
   // With the piston on z the lower of the two holds the wall (and it stands still while it does).
-  p = reference::emptyBox(0.01f, glm::vec3(1.0f));
+  p = test::emptyBox(0.01f, glm::vec3(1.0f));
   p.pistonAxis = 3;
   p.pistonTravel = 0.8f;
   p.pistonPeriod = 4.0f;
@@ -75,7 +75,7 @@ TEST(BallsDomainWalls, ResetDomainRestoresRotationAndContraction) {
 // (no gravity), never letting it back above the wall.
 TEST_F(BallsDomain, ABallAboveTheContractedWallIsPushedBelowIt) {
   for (Contact contact : {Contact::SpringDashpot, Contact::Penalty}) {
-    Params p = reference::emptyBox(0.02f, glm::vec3(1.0f));
+    Params p = test::emptyBox(0.02f, glm::vec3(1.0f));
     p.contact = contact;
     p.gravity = glm::vec3(0.0f);
     p.substeps = 1;

@@ -5,9 +5,9 @@
 
 #include <cmath>
 
-#include "reference/balls_reference.h"
 #include "sim/balls/balls.h"
 #include "sim/balls/measure/balls_measure.h"
+#include "support/balls_fixtures.h"
 #include "support/gl_test.h"
 
 using namespace tidepool;
@@ -18,7 +18,7 @@ namespace {
 class BallsPhysics : public test::GlTest {};
 
 Params oneBallBox() {
-  Params p = reference::emptyBox(0.01f, glm::vec3(1.0f));
+  Params p = test::emptyBox(0.01f, glm::vec3(1.0f));
   p.contact = Contact::SpringDashpot;
   p.integrator = Integrator::SymplecticEuler;
   p.substeps = 1;

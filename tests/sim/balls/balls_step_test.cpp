@@ -10,6 +10,7 @@
 #include "reference/balls_reference.h"
 #include "sim/balls/balls.h"
 #include "sim/balls/balls_init.h"
+#include "support/balls_fixtures.h"
 #include "support/gl_test.h"
 
 using namespace tidepool;
@@ -18,13 +19,6 @@ using namespace tidepool::balls;
 namespace {
 
 class BallsStep : public test::GlTest {};
-
-Params emptyBox() {
-  Params p = reference::emptyBox(0.02f, glm::vec3(0.4f, 0.3f, 0.5f));
-  p.dt = 2e-4f;
-  p.contactTime = 0.004f;
-  return p;
-}
 
 // A dense, jumbled cloud: overlaps, wall contacts, random velocities.
 void jumbled(std::vector<glm::vec4>& pos, std::vector<glm::vec4>& vel, const Params& p, int count) {
@@ -46,7 +40,7 @@ TEST_F(BallsStep, GpuStepEqualsCpuReferenceForEveryContactLawAndIntegrator) {
   for (Contact contact : {Contact::SpringDashpot, Contact::Penalty, Contact::CudaSample})
     for (Integrator integrator : {Integrator::SymplecticEuler, Integrator::ExplicitEuler, Integrator::VelocityVerlet}) {
       SCOPED_TRACE(std::string(kContactNames[int(contact)]) + " / " + kIntegratorNames[int(integrator)]);
-      Params p = emptyBox();
+      Params p = test::emptyTank();
       p.contact = contact;
       p.integrator = integrator;
       p.friction = contact == Contact::SpringDashpot ? 0.3f : 0.0f;
@@ -74,7 +68,7 @@ TEST_F(BallsStep, GpuStepEqualsCpuReferenceForEveryContactLawAndIntegrator) {
 // Euler keeps no accelerations and no order of the last step: 20 bytes per ball fewer. A live
 // switch to velocity Verlet allocates them and steps as a model that started with Verlet does.
 TEST_F(BallsStep, AccelerationsAndOrderAreAllocatedOnlyWhenUsed) {
-  Params p = emptyBox();
+  Params p = test::emptyTank();
   std::vector<glm::vec4> pos, vel;
   jumbled(pos, vel, p, 500);
   Balls euler(shaders(), p);
@@ -99,7 +93,7 @@ TEST_F(BallsStep, AccelerationsAndOrderAreAllocatedOnlyWhenUsed) {
 }
 
 TEST_F(BallsStep, NothingIsLostOrEscapesAndNothingIsNaN) {
-  Params p = emptyBox();
+  Params p = test::emptyTank();
   p.fill = Fill::Random;
   p.randomCount = 1500;
   p.fillMin = p.domainMin;
@@ -115,7 +109,7 @@ TEST_F(BallsStep, NothingIsLostOrEscapesAndNothingIsNaN) {
 }
 
 TEST_F(BallsStep, PistonPushesBallsWithoutLosingAny) {
-  Params p = emptyBox();
+  Params p = test::emptyTank();
   p.fill = Fill::Block;
   p.fillMin = p.domainMin;
   p.fillMax = glm::vec3(0.4f, 0.3f, 0.2f);
@@ -140,7 +134,7 @@ TEST_F(BallsStep, PistonPushesBallsWithoutLosingAny) {
 }
 
 TEST_F(BallsStep, SpinningObstacleKeepsItsParticlesAndStirsTheWater) {
-  Params p = emptyBox();
+  Params p = test::emptyTank();
   p.domainMax = glm::vec3(0.6f, 0.6f, 0.4f);
   p.fill = Fill::Slab;
   p.slabHeight = 0.15f;
@@ -186,7 +180,7 @@ TEST_F(BallsStep, TooManyBallsAreRefusedBeforeAllocating) {
 }
 
 TEST_F(BallsStep, TapEmitsUpToItsMaximumAndEveryBallStaysInside) {
-  Params p = emptyBox();
+  Params p = test::emptyTank();
   p.tap = true;
   p.tapPosition = glm::vec3(0.03f, 0.15f, 0.3f);  // a jet from the side wall, away from its own splash
   p.tapDirection = glm::vec3(1.0f, 0.0f, 0.2f);
@@ -215,7 +209,7 @@ TEST_F(BallsStep, TapEmitsUpToItsMaximumAndEveryBallStaysInside) {
 }
 
 TEST_F(BallsStep, ObstacleEditedWhileRunningIsRebuilt) {
-  Params p = emptyBox();
+  Params p = test::emptyTank();
   p.fill = Fill::None;
   Balls b(shaders(), p);
   EXPECT_EQ(b.obstacleCount(), 0u);
@@ -242,7 +236,7 @@ TEST_F(BallsStep, ObstacleEditedWhileRunningIsRebuilt) {
 TEST_F(BallsStep, CountingInTheCollideTakesTheNextGridsCounts) {
   for (Integrator integrator : {Integrator::SymplecticEuler, Integrator::ExplicitEuler}) {
     SCOPED_TRACE(kIntegratorNames[int(integrator)]);
-    Params p = emptyBox();
+    Params p = test::emptyTank();
     p.integrator = integrator;
     std::vector<glm::vec4> pos, vel;
     jumbled(pos, vel, p, 900);
