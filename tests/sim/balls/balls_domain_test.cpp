@@ -15,7 +15,7 @@ using namespace tidepool;
 using namespace tidepool::balls;
 
 namespace {
-class BallsDomain : public test::GlTest {};
+using BallsTest = test::GlTest;
 
 // Presses the "Reset domain" button, as the panel does, and sees the contraction slider's range.
 class PressReset final : public test::NullVisitor {
@@ -73,7 +73,7 @@ TEST(BallsDomainWalls, ResetDomainRestoresRotationAndContraction) {
 // A ball resting above the contracted wall: the step clamps it to the wall and the wall's
 // contact (the spring-dashpot's and the seed's penalty) pushes it down, below contraction − r
 // (no gravity), never letting it back above the wall.
-TEST_F(BallsDomain, ABallAboveTheContractedWallIsPushedBelowIt) {
+TEST_F(BallsTest, ABallAboveTheContractedWallIsPushedBelowIt) {
   for (Contact contact : {Contact::SpringDashpot, Contact::Penalty}) {
     Params p = test::emptyBox(0.02f, glm::vec3(1.0f));
     p.contact = contact;
