@@ -37,6 +37,14 @@ if [ -f "$driver" ]; then
   ASAN_OPTIONS+=":verify_asan_link_order=0"  # the driver precedes the ASan runtime; it defines no malloc
 fi
 cd build-asan
-selection=(-R 'Grid|Modes|Determinism|DomainEdges|ParticleMemory|GpuLimits|BadInput|Checkpoint|InputLimits|BadDrop|Hostile|Fuzz|SoakJudge|SoakCli|Json|Obj|Png|ParamJson|SceneFile|LifeRules|LifeStep|RipplesStep|BallsStep|FluidStep|Swarms|SwarmStages|BallsLists|DispatchGate|Export|Video|Surface|Resolution|FramePacer|BallsDebugViews|KeyBindings|Indicators')
+# The step tests of each model (tests/sim/<model>/<model>_step_test.cpp, tests/sim/swarm/swarm_test.cpp)
+# and BallsView's debug views (tests/render/balls_debug_views_test.cpp), by name: their suites hold
+# the model's slower tests too.
+steps='BallsTest\.(GpuStepEquals|AccelerationsAndOrder|NothingIsLost|PistonPushes|SpinningObstacle|TooManyBalls|TapEmits|ObstacleEdited|CountingInTheCollide)'
+steps+='|FluidTest\.(OneSolverIteration|IterationsViscosity)|LifeTest\.(BinnedForces|FrictionAlone|PushBrush|VerletIsSecondOrder)'
+steps+='|RipplesTest\.(GpuMatchesCpu|TotalHeightIsConserved|CourantAboveTheLimit|MovingSpherePushes)'
+steps+='|SwarmTest\.(AnimatedPreset|BounceKeeps|Fp16StorageErrorAgainstFp32|TooLargeRequests|ResetScatters)'
+debugViews='BallsViewTest\.(GridCellsCompaction|GridCellsOverlay|ScreenNormalsFace)'
+selection=(-R "Grid|Determinism|DomainEdges|ParticleMemory|GpuLimits|BadInput|Checkpoint|InputLimits|BadDrop|Hostile|Fuzz|SoakJudge|SoakCli|Json|Obj|Png|ParamJson|SceneFile|LifeRules|$steps|SwarmStages|Export|Video|Surface|Resolution|FramePacer|$debugViews|KeyBindings|Indicators")
 [ $# -gt 0 ] && selection=("$@")
 ctest --output-on-failure -j "$(nproc)" -E '^(Layers|Build)\.' -LE soak "${selection[@]}"

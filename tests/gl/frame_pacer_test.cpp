@@ -12,7 +12,7 @@
 using namespace tidepool;
 
 namespace {
-class FramePacerTest : public test::GlTest {};
+class FramePacer : public test::GlTest {};
 
 // Some GPU work for a "frame": clears and copies of a buffer of a few MB.
 void frameWork(gl::Buffer& a, gl::Buffer& b) {
@@ -24,7 +24,7 @@ void frameWork(gl::Buffer& a, gl::Buffer& b) {
 }
 }  // namespace
 
-TEST_F(FramePacerTest, NeverMoreThanMaxFramesInFlight) {
+TEST_F(FramePacer, NeverMoreThanMaxFramesInFlight) {
   const std::vector<float> data(1 << 20, 1.0f);
   gl::Buffer a{std::span<const float>(data)}, b{std::span<const float>(data)};
   for (int max : {1, 2, 3}) {
@@ -44,7 +44,7 @@ TEST_F(FramePacerTest, NeverMoreThanMaxFramesInFlight) {
   }
 }
 
-TEST_F(FramePacerTest, ACallerThatSkipsTheWaitStaysBounded) {
+TEST_F(FramePacer, ACallerThatSkipsTheWaitStaysBounded) {
   const std::vector<float> data(1 << 18, 2.0f);
   gl::Buffer a{std::span<const float>(data)}, b{std::span<const float>(data)};
   gl::FramePacer pacer(2);

@@ -21,7 +21,7 @@ using namespace tidepool;
 using namespace tidepool::grid;
 
 namespace {
-class Grid : public test::GlTest {};
+class UniformGridTest : public test::GlTest {};
 
 gl::Buffer vec4Buffer(const std::vector<glm::vec4>& v) {
   return gl::Buffer(std::max<std::size_t>(v.size(), 1) * sizeof(glm::vec4), v.data());
@@ -179,7 +179,7 @@ void reorderSweep(gl::ShaderLibrary& shaders, const GridParams& params, uint32_t
 }
 }  // namespace
 
-TEST_F(Grid, ExampleFromTheHeader) {
+TEST_F(UniformGridTest, ExampleFromTheHeader) {
   UniformGrid grid(shaders(), {.domainMin = {0, 0, 0}, .domainMax = {4, 1, 0}, .cellSize = 1.0f});
   ASSERT_EQ(grid.dims(), glm::uvec3(4, 1, 1));
   EXPECT_TRUE(grid.is2D());
@@ -193,17 +193,17 @@ TEST_F(Grid, ExampleFromTheHeader) {
   EXPECT_EQ(perm.readAll<uint32_t>(), (std::vector<uint32_t>{1, 5, 0, 2, 4, 3})) << "stable: by index in a cell";
 }
 
-TEST_F(Grid, Random3DWithBordersAndOutsiders) {
+TEST_F(UniformGridTest, Random3DWithBordersAndOutsiders) {
   const GridParams params{.domainMin = {-1, 0, 2}, .domainMax = {3, 2, 3.5f}, .cellSize = 0.25f};
   checkGrid(shaders(), params, makePositions(params, 20000, 0.5f, 1));
 }
 
-TEST_F(Grid, Random2DWithBordersAndOutsiders) {
+TEST_F(UniformGridTest, Random2DWithBordersAndOutsiders) {
   const GridParams params{.domainMin = {0, 0, 0}, .domainMax = {8, 4, 0}, .cellSize = 0.5f};
   checkGrid(shaders(), params, makePositions(params, 30001, 1.0f, 2));
 }
 
-TEST_F(Grid, ManyParticlesPerCellAndManyCells) {
+TEST_F(UniformGridTest, ManyParticlesPerCellAndManyCells) {
   // ~8 per cell over more cells than one scan block (two-level scan), and a crowded tiny grid.
   const GridParams wide{.domainMin = {0, 0, 0}, .domainMax = {24, 24, 24}, .cellSize = 1.0f};
   checkGrid(shaders(), wide, makePositions(wide, 8 * 24 * 24 * 24, 0.0f, 3));
@@ -212,7 +212,7 @@ TEST_F(Grid, ManyParticlesPerCellAndManyCells) {
 }
 
 // Without the stable order the cells are the same and any order within a cell is allowed.
-TEST_F(Grid, AtomicOrderWhenNotStable) {
+TEST_F(UniformGridTest, AtomicOrderWhenNotStable) {
   GridParams params{.domainMin = {-1, 0, 2}, .domainMax = {3, 2, 3.5f}, .cellSize = 0.25f};
   params.stable = false;
   checkGrid(shaders(), params, makePositions(params, 20000, 0.5f, 21));
@@ -220,7 +220,7 @@ TEST_F(Grid, AtomicOrderWhenNotStable) {
 
 // A cell of more than GRID_STABLE_MAX_CELL particles keeps its atomic order (still a valid
 // reorder); the cells beside it are ranked as usual.
-TEST_F(Grid, CrowdedCellKeepsAValidOrder) {
+TEST_F(UniformGridTest, CrowdedCellKeepsAValidOrder) {
   const GridParams params{.domainMin = {0, 0, 0}, .domainMax = {4, 4, 4}, .cellSize = 1.0f};
   std::vector<glm::vec4> pos = makePositions(params, 6000, 0.0f, 22);
   for (std::size_t i = 0; i < 3000; i += 2) pos[i] = glm::vec4(0.5f, 0.5f, 0.5f, float(i));
@@ -229,7 +229,7 @@ TEST_F(Grid, CrowdedCellKeepsAValidOrder) {
   checkGrid(shaders(), params, pos);
 }
 
-TEST_F(Grid, NonMultipleCellSizeRoundsDimsUp) {
+TEST_F(UniformGridTest, NonMultipleCellSizeRoundsDimsUp) {
   UniformGrid grid(shaders(), {.domainMin = {0, 0, 0}, .domainMax = {1, 1, 1}, .cellSize = 0.3f});
   EXPECT_EQ(grid.dims(), glm::uvec3(4, 4, 4));
   EXPECT_FALSE(grid.is2D());
@@ -239,7 +239,7 @@ TEST_F(Grid, NonMultipleCellSizeRoundsDimsUp) {
 
 // Layout::Half2 (particle life's fp16 state): positions are uvec2 (packHalf2x16(xy), a word) and
 // the reordered arrays have 8-byte elements, moved bit for bit (NaN patterns included).
-TEST_F(Grid, HalfFloatPositionsAndEightByteArrays) {
+TEST_F(UniformGridTest, HalfFloatPositionsAndEightByteArrays) {
   const GridParams params = {
       .domainMin = {-8, -4, 0}, .domainMax = {8, 4, 0}, .cellSize = 0.75f, .layout = Layout::Half2};
   const std::vector<glm::vec4> wide = makePositions(params, 20001, 1.0f, 7);
@@ -280,7 +280,7 @@ TEST_F(Grid, HalfFloatPositionsAndEightByteArrays) {
   EXPECT_THROW(grid.build(posOut, n + 1), Error) << "n + 1 positions need 8 more bytes";
 }
 
-TEST_F(Grid, ZeroParticles) {
+TEST_F(UniformGridTest, ZeroParticles) {
   UniformGrid grid(shaders(), {.domainMin = {0, 0, 0}, .domainMax = {2, 2, 2}, .cellSize = 1.0f});
   const glm::vec4 untouched(7.0f);
   gl::Buffer pos(16), out(16, &untouched), perm(4);
@@ -291,22 +291,22 @@ TEST_F(Grid, ZeroParticles) {
   EXPECT_EQ(out.read<glm::vec4>(1)[0], untouched) << "nothing to move";
 }
 
-TEST_F(Grid, ArraysFollowThePermutation3D) {
+TEST_F(UniformGridTest, ArraysFollowThePermutation3D) {
   reorderSweep(shaders(), {.domainMin = {-1, 0, 2}, .domainMax = {3, 2, 3.5f}, .cellSize = 0.25f}, 11);
 }
 
-TEST_F(Grid, ArraysFollowThePermutation2D) {
+TEST_F(UniformGridTest, ArraysFollowThePermutation2D) {
   reorderSweep(shaders(), {.domainMin = {0, 0, 0}, .domainMax = {8, 4, 0}, .cellSize = 0.5f}, 12);
 }
 
-TEST_F(Grid, ArraysFollowThePermutationHalfFloat) {
+TEST_F(UniformGridTest, ArraysFollowThePermutationHalfFloat) {
   reorderSweep(shaders(),
                {.domainMin = {-8, -4, 0}, .domainMax = {8, 4, 0}, .cellSize = 0.75f, .layout = Layout::Half2}, 13);
 }
 
 // A reorder of the balls' kind (positions alone, no permutation) repeated from its own output (the
 // last step's cell order).
-TEST_F(Grid, ReorderFromCellOrderKeepsTheCells) {
+TEST_F(UniformGridTest, ReorderFromCellOrderKeepsTheCells) {
   const GridParams params{.domainMin = {0, 0, 0}, .domainMax = {6, 6, 6}, .cellSize = 0.5f};
   const std::vector<glm::vec4> pos = makePositions(params, 7000, 0.1f, 14);
   UniformGrid grid(shaders(), params);
@@ -331,7 +331,7 @@ TEST_F(Grid, ReorderFromCellOrderKeepsTheCells) {
   }
 }
 
-TEST_F(Grid, CountsAndStartsAreDeterministic) {
+TEST_F(UniformGridTest, CountsAndStartsAreDeterministic) {
   const GridParams params{.domainMin = {0, 0, 0}, .domainMax = {10, 10, 10}, .cellSize = 0.5f};
   const std::vector<glm::vec4> pos = makePositions(params, 50000, 0.3f, 6);
   gl::Buffer posBuf = vec4Buffer(pos);
@@ -350,7 +350,7 @@ TEST_F(Grid, CountsAndStartsAreDeterministic) {
   }
 }
 
-TEST_F(Grid, MemoryIsReported) {
+TEST_F(UniformGridTest, MemoryIsReported) {
   UniformGrid grid(shaders(), {.domainMin = {0, 0, 0}, .domainMax = {64, 64, 64}, .cellSize = 1.0f}, 1000);
   const std::size_t cells = 64 * 64 * 64;
   // counts + starts + indexInCell + particleCell + the stable order's members + scan levels (64 + 1 block sums)
@@ -361,7 +361,7 @@ TEST_F(Grid, MemoryIsReported) {
   EXPECT_EQ(atomic.memoryBytes(), grid.memoryBytes() - 1000 * 4);
 }
 
-TEST_F(Grid, BadInputThrowsOneLineErrors) {
+TEST_F(UniformGridTest, BadInputThrowsOneLineErrors) {
   auto make = [&](GridParams p) { UniformGrid grid(shaders(), p); };
   const glm::vec3 zero(0.0f), one(1.0f);
   for (float cell : {0.0f, -1.0f, std::nanf("")})
@@ -403,7 +403,7 @@ TEST(GridBindings, HeaderHoldsOnlyDefinesSharedWithCpp) {
 // and every pair of windows; the 4-byte words (16384 at most) stay whole. The results must be the
 // unwindowed ones: the same CPU checks, every element where the permutation says.
 namespace {
-class WindowedGrid : public Grid {
+class WindowedGrid : public UniformGridTest {
  protected:
   void SetUp() override { gl::overrideStorageBlockBytes(gl::kMinStorageBlockBytes); }
   void TearDown() override { gl::overrideStorageBlockBytes(0); }

@@ -17,7 +17,7 @@ using namespace tidepool;
 using namespace tidepool::grid;
 
 namespace {
-class Scan : public test::GlTest {};
+class PrefixScanTest : public test::GlTest {};
 
 enum class Offsets { Scanned, Fused };  // ScanConfig::fuseMaxBlocks = 0 or the largest that can fuse
 class ScanPaths : public test::GlTest, public ::testing::WithParamInterface<Offsets> {
@@ -75,7 +75,7 @@ std::vector<std::size_t> edgeSizes(int maxLog2, PrefixScan::Config config = {}) 
 }
 }  // namespace
 
-TEST_F(Scan, ExampleFromTheHeader) {
+TEST_F(PrefixScanTest, ExampleFromTheHeader) {
   PrefixScan scan(shaders());
   const std::vector<uint32_t> counts = {2, 0, 3, 1};
   gl::Buffer in{std::span<const uint32_t>(counts)}, out(5 * 4);
@@ -162,7 +162,7 @@ INSTANTIATE_TEST_SUITE_P(NeverAndAlwaysFused, ScanPaths, ::testing::Values(Offse
                            return std::string(info.param == Offsets::Fused ? "fused" : "scanned");
                          });
 
-TEST_F(Scan, DispatchesForEachPath) {
+TEST_F(PrefixScanTest, DispatchesForEachPath) {
   const PrefixScan::Config defaults;
   const std::size_t block = defaults.block(), limit = defaults.fuseMaxBlocks;
   ASSERT_GT(limit, 1u);
@@ -181,7 +181,7 @@ TEST_F(Scan, DispatchesForEachPath) {
 
 // Fused offsets over every tail of the block sums (blocks % 4 words after the uvec4 loads) and
 // over several uvec4 per invocation (up to 512 blocks / 4 / 32 invocations = 4).
-TEST_F(Scan, FusedOffsetsAtEveryTailOfTheBlockSums) {
+TEST_F(PrefixScanTest, FusedOffsetsAtEveryTailOfTheBlockSums) {
   PrefixScan scan(shaders(), {.groupSize = 32, .vecsPerThread = 4, .fuseMaxBlocks = 512});  // blocks of 512
   ASSERT_EQ(scan.dispatchesFor(512 * 512), 2u);
   uint32_t seed = 300;
@@ -192,7 +192,7 @@ TEST_F(Scan, FusedOffsetsAtEveryTailOfTheBlockSums) {
     }
 }
 
-TEST_F(Scan, NaiveScanMatchesCpu) {
+TEST_F(PrefixScanTest, NaiveScanMatchesCpu) {
   NaiveScan naive(shaders());
   EXPECT_EQ(NaiveScan::passesFor(0), 1u);
   EXPECT_EQ(NaiveScan::passesFor(4), 3u);  // 5 entries: strides 1, 2, 4
@@ -205,7 +205,7 @@ TEST_F(Scan, NaiveScanMatchesCpu) {
   expectScanMatches(naive, (std::size_t(1) << 20) + 1, 3);
 }
 
-TEST_F(Scan, BadSizesThrowOneLineErrors) {
+TEST_F(PrefixScanTest, BadSizesThrowOneLineErrors) {
   PrefixScan scan(shaders());
   NaiveScan naive(shaders());
   gl::Buffer small(16), out(64);

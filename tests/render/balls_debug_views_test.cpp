@@ -15,7 +15,7 @@ using namespace tidepool;
 
 namespace {
 
-class BallsDebugViewsTest : public test::GlTest {};
+using BallsViewTest = test::GlTest;
 
 // Non-empty cells of a count array, in index order (the CPU reference of the compaction).
 std::vector<std::uint32_t> nonEmpty(const std::vector<std::uint32_t>& counts) {
@@ -27,7 +27,7 @@ std::vector<std::uint32_t> nonEmpty(const std::vector<std::uint32_t>& counts) {
 
 }  // namespace
 
-TEST_F(BallsDebugViewsTest, GridCellsCompactionListsExactlyTheNonEmptyCells) {
+TEST_F(BallsViewTest, GridCellsCompactionListsExactlyTheNonEmptyCells) {
   // Clustered points in grids of 64 to 27000 cells (several scan blocks), and an empty grid.
   std::mt19937 rng(5);
   for (const float cellSize : {0.25f, 0.1f, 1.0f / 30.0f}) {
@@ -52,7 +52,7 @@ TEST_F(BallsDebugViewsTest, GridCellsCompactionListsExactlyTheNonEmptyCells) {
   }
 }
 
-TEST_F(BallsDebugViewsTest, GridCellsOverlayDrawsTheModelsNonEmptyCells) {
+TEST_F(BallsViewTest, GridCellsOverlayDrawsTheModelsNonEmptyCells) {
   balls::Params p;
   p.radius = 0.02f;
   p.fillMax = {0.3f, 0.4f, 0.3f};
@@ -80,7 +80,7 @@ TEST_F(BallsDebugViewsTest, GridCellsOverlayDrawsTheModelsNonEmptyCells) {
   }
 }
 
-TEST_F(BallsDebugViewsTest, ScreenNormalsFaceTheViewerWhereWorldNormalsFaceTheEye) {
+TEST_F(BallsViewTest, ScreenNormalsFaceTheViewerWhereWorldNormalsFaceTheEye) {
   // One ball at the origin seen from an oblique eye: at the image centre the surface faces the
   // eye, so its view-space normal is +z (colour 0.5, 0.5, 1) and its world normal the unit vector
   // towards the eye.

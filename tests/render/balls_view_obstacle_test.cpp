@@ -11,7 +11,7 @@ using namespace tidepool::balls;
 
 namespace {
 
-class BallsViewObstacleTest : public test::GlTest {};
+using BallsViewTest = test::GlTest;
 
 // A model of the obstacles alone (no water, balls of 1 cm, 1 ms steps) and its view without the
 // domain box (only the obstacles cover pixels), 128x128 pixels.
@@ -58,7 +58,7 @@ std::size_t onlyIn(const std::vector<bool>& a, const std::vector<bool>& b) {  //
 
 }  // namespace
 
-TEST_F(BallsViewObstacleTest, MeshObstacleIsDrawnWhereItsParticlesAreAndTurnsWithThem) {
+TEST_F(BallsViewTest, MeshObstacleIsDrawnWhereItsParticlesAreAndTurnsWithThem) {
   ObstacleParams blob;
   blob.shape = Shape::Mesh;
   blob.mesh = "blob";  // no symmetry about the spin axis
@@ -87,7 +87,7 @@ TEST_F(BallsViewObstacleTest, MeshObstacleIsDrawnWhereItsParticlesAreAndTurnsWit
   EXPECT_GT(count(s.covered()), 800u);
 }
 
-TEST_F(BallsViewObstacleTest, EachObstacleFollowsItsOwnPoseAndIsMeshedOnce) {
+TEST_F(BallsViewTest, EachObstacleFollowsItsOwnPoseAndIsMeshedOnce) {
   ObstacleParams helix;  // turning about its vertical axis
   helix.shape = Shape::Helix;
   helix.centre = glm::vec3(0.3f, 0.5f, 0.2f);

@@ -16,7 +16,7 @@ using namespace tidepool;
 
 namespace {
 
-class BallsViewTest : public test::GlTest {};
+using BallsViewTest = test::GlTest;
 class BallsRasterTest : public test::GlTest, public ::testing::WithParamInterface<BallsRaster> {};
 
 constexpr int kSize = 65;  // odd: the centre pixel's centre is on the optical axis

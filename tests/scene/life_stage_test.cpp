@@ -13,7 +13,7 @@
 using namespace tidepool;
 
 namespace {
-class LifeStageTest : public test::GlTest {};
+class LifeStage : public test::GlTest {};
 
 // Reads one text parameter the way the ImGui editor shows it: through visitParams.
 class ReadText final : public test::NullVisitor {
@@ -45,7 +45,7 @@ std::unique_ptr<Stage> lifeStage(const io::Json& params, gl::ShaderLibrary& shad
 }
 }  // namespace
 
-TEST_F(LifeStageTest, ShareCodeFollowsTheRulesAndNMakesNewOnes) {
+TEST_F(LifeStage, ShareCodeFollowsTheRulesAndNMakesNewOnes) {
   auto stage = lifeStage(smallScene(), shaders());
   const life::Rules first = life::decodeShareCode(stage->shareText());
   EXPECT_TRUE(first == life::generateRules({.species = 3, .particleCount = 1024, .size = {256, 144}, .seed = 4}));
@@ -62,7 +62,7 @@ TEST_F(LifeStageTest, ShareCodeFollowsTheRulesAndNMakesNewOnes) {
   EXPECT_EQ(again->shareText(), stage->shareText()) << "N is reproducible too";
 }
 
-TEST_F(LifeStageTest, BadRulesKeyIsReportedWithTheSceneKey) {
+TEST_F(LifeStage, BadRulesKeyIsReportedWithTheSceneKey) {
   io::Json p = smallScene();
   p["rules"] = "AAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAA";
   try {
@@ -75,7 +75,7 @@ TEST_F(LifeStageTest, BadRulesKeyIsReportedWithTheSceneKey) {
   EXPECT_NO_THROW(lifeStage(p, shaders()));
 }
 
-TEST_F(LifeStageTest, DroppedRulesFileLoadsAndABadOneChangesNothing) {
+TEST_F(LifeStage, DroppedRulesFileLoadsAndABadOneChangesNothing) {
   test::TempDir dir;
   const life::Rules dropped = life::generateRules({.species = 2, .particleCount = 512, .size = {128, 72}, .seed = 9});
   io::writeJsonFile((dir / "good.json").string(), life::rulesToJson(dropped));
@@ -103,7 +103,7 @@ TEST_F(LifeStageTest, DroppedRulesFileLoadsAndABadOneChangesNothing) {
 
 // R in the window (Stage::restart): the original's Restart, new random particles under the same
 // rules; each restart draws others, and reset() still gives the seed's own start.
-TEST_F(LifeStageTest, RestartKeepsTheRulesAndDrawsNewPositions) {
+TEST_F(LifeStage, RestartKeepsTheRulesAndDrawsNewPositions) {
   auto stage = lifeStage(smallScene(), shaders());
   auto* life = dynamic_cast<life::Life*>(stage->model());
   ASSERT_NE(life, nullptr);

@@ -18,7 +18,7 @@ using namespace tidepool::balls;
 
 namespace {
 
-class BallsDivergence : public test::GlTest {};
+using BallsTest = test::GlTest;
 
 // A block of balls resting on the floor, springs of contact time 2 ms. Undamped-contact stability
 // needs dt < 2/omega0 ~ 0.64 t_c (docs/ACCURACY.md); `dt` picks either side.
@@ -91,7 +91,7 @@ void runFrames(Balls& b, int frames, gl::GpuProfiler& profiler) {
 
 }  // namespace
 
-TEST_F(BallsDivergence, StableRunsAreNeverFlagged) {
+TEST_F(BallsTest, StableRunsAreNeverFlagged) {
   Balls b(shaders(), restingBlock(1e-4f));
   gl::GpuProfiler profiler;
   for (int i = 0; i < 120; ++i) b.step(profiler);
@@ -99,7 +99,7 @@ TEST_F(BallsDivergence, StableRunsAreNeverFlagged) {
   EXPECT_FALSE(b.divergence().has_value()) << b.divergence()->message;
 }
 
-TEST_F(BallsDivergence, BlowUpIsReportedAndRecoveredWithHalfTheStep) {
+TEST_F(BallsTest, BlowUpIsReportedAndRecoveredWithHalfTheStep) {
   Balls b(shaders(), restingBlock(1e-4f));
   ASSERT_GT(b.count(), 100u);
   gl::GpuProfiler profiler;
@@ -131,7 +131,7 @@ TEST_F(BallsDivergence, BlowUpIsReportedAndRecoveredWithHalfTheStep) {
   EXPECT_TRUE(allFiniteInside(b));
 }
 
-TEST_F(BallsDivergence, RecoveryEqualsATwinRunBitForBit) {
+TEST_F(BallsTest, RecoveryEqualsATwinRunBitForBit) {
   gl::GpuProfiler profiler;
   Balls b(shaders(), restingBlock(1e-4f)), twin(shaders(), restingBlock(1e-4f));
   placeOnTheFloor(b);
@@ -168,7 +168,7 @@ TEST_F(BallsDivergence, RecoveryEqualsATwinRunBitForBit) {
   EXPECT_EQ(stateSet(b), stateSet(twin)) << "the recovered run goes on as the twin does, bit for bit";
 }
 
-TEST_F(BallsDivergence, WithoutAGoodStateRecoveryIsRefused) {
+TEST_F(BallsTest, WithoutAGoodStateRecoveryIsRefused) {
   Balls b(shaders(), restingBlock(1e-4f));
   EXPECT_FALSE(b.recover()) << "nothing diverged";
 }

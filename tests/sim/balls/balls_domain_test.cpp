@@ -6,8 +6,8 @@
 #include "scene/balls_stage.h"
 #include "scene/scene.h"
 #include "sim/balls/balls.h"
-#include "sim/balls/balls_reference.h"
 #include "sim/balls/water_frame.h"
+#include "support/balls_fixtures.h"
 #include "support/gl_test.h"
 #include "support/null_visitor.h"
 
@@ -15,7 +15,7 @@ using namespace tidepool;
 using namespace tidepool::balls;
 
 namespace {
-class BallsDomain : public test::GlTest {};
+using BallsTest = test::GlTest;
 
 // Presses the "Reset domain" button, as the panel does, and sees the contraction slider's range.
 class PressReset final : public test::NullVisitor {
@@ -29,7 +29,7 @@ class PressReset final : public test::NullVisitor {
 }  // namespace
 
 TEST(BallsDomainWalls, ContractionLowersOnlyTheTopWall) {
-  Params p = reference::emptyBox(0.01f, glm::vec3(1.0f));
+  Params p = test::emptyBox(0.01f, glm::vec3(1.0f));
   p.contraction = 0.4f;
   Walls w = wallsAt(p, 0.0);
   EXPECT_EQ(w.min, glm::vec3(0.0f));
@@ -38,7 +38,7 @@ TEST(BallsDomainWalls, ContractionLowersOnlyTheTopWall) {
   p.domainMax = {1.0f, 1.0f, 2.0f};
   EXPECT_FLOAT_EQ(wallsAt(p, 0.0).max.z, -2.0f + 0.4f * 4.0f) << "a fraction of the domain's height";
   // With the piston on z the lower of the two holds the wall (and it stands still while it does).
-  p = reference::emptyBox(0.01f, glm::vec3(1.0f));
+  p = test::emptyBox(0.01f, glm::vec3(1.0f));
   p.pistonAxis = 3;
   p.pistonTravel = 0.8f;
   p.pistonPeriod = 4.0f;
@@ -73,9 +73,9 @@ TEST(BallsDomainWalls, ResetDomainRestoresRotationAndContraction) {
 // A ball resting above the contracted wall: the step clamps it to the wall and the wall's
 // contact (the spring-dashpot's and the seed's penalty) pushes it down, below contraction − r
 // (no gravity), never letting it back above the wall.
-TEST_F(BallsDomain, ABallAboveTheContractedWallIsPushedBelowIt) {
+TEST_F(BallsTest, ABallAboveTheContractedWallIsPushedBelowIt) {
   for (Contact contact : {Contact::SpringDashpot, Contact::Penalty}) {
-    Params p = reference::emptyBox(0.02f, glm::vec3(1.0f));
+    Params p = test::emptyBox(0.02f, glm::vec3(1.0f));
     p.contact = contact;
     p.gravity = glm::vec3(0.0f);
     p.substeps = 1;

@@ -6,8 +6,8 @@
 #include <cmath>
 
 #include "sim/balls/balls.h"
-#include "sim/balls/balls_reference.h"
 #include "sim/balls/measure/balls_measure.h"
+#include "support/balls_fixtures.h"
 #include "support/gl_test.h"
 
 using namespace tidepool;
@@ -15,10 +15,10 @@ using namespace tidepool::balls;
 
 namespace {
 
-class BallsPhysics : public test::GlTest {};
+using BallsTest = test::GlTest;
 
 Params oneBallBox() {
-  Params p = reference::emptyBox(0.01f, glm::vec3(1.0f));
+  Params p = test::emptyBox(0.01f, glm::vec3(1.0f));
   p.contact = Contact::SpringDashpot;
   p.integrator = Integrator::SymplecticEuler;
   p.substeps = 1;
@@ -27,7 +27,7 @@ Params oneBallBox() {
 
 }  // namespace
 
-TEST_F(BallsPhysics, FreeFallFollowsTheParabolaBeforeContact) {
+TEST_F(BallsTest, FreeFallFollowsTheParabolaBeforeContact) {
   Params p = oneBallBox();
   p.dt = 1e-3f;
   Balls b(shaders(), p);
@@ -42,7 +42,7 @@ TEST_F(BallsPhysics, FreeFallFollowsTheParabolaBeforeContact) {
   }
 }
 
-TEST_F(BallsPhysics, SpringDashpotRestitutionMatchesAt50StepsPerContactAndConverges) {
+TEST_F(BallsTest, SpringDashpotRestitutionMatchesAt50StepsPerContactAndConverges) {
   for (float e : {0.5f, 0.9f}) {
     const Bounce b50 = measureBounce(shaders(), Integrator::SymplecticEuler, e, 50);
     EXPECT_NEAR(b50.restitution / e, 1.0, 0.02) << "e = " << e << ": measured " << b50.restitution;
@@ -57,7 +57,7 @@ TEST_F(BallsPhysics, SpringDashpotRestitutionMatchesAt50StepsPerContactAndConver
   EXPECT_NEAR(verlet / 0.9, 1.0, 0.02) << "velocity Verlet: " << verlet;
 }
 
-TEST_F(BallsPhysics, HeadOnCollisionConservesMomentumAndSwapsEqualMasses) {
+TEST_F(BallsTest, HeadOnCollisionConservesMomentumAndSwapsEqualMasses) {
   for (float e : {1.0f, 0.5f}) {
     Params p = oneBallBox();
     p.gravity = glm::vec3(0.0f);
@@ -79,7 +79,7 @@ TEST_F(BallsPhysics, HeadOnCollisionConservesMomentumAndSwapsEqualMasses) {
   }
 }
 
-TEST_F(BallsPhysics, ExplicitEulerGainsEnergyOnAnUndampedContactTheOthersDoNot) {
+TEST_F(BallsTest, ExplicitEulerGainsEnergyOnAnUndampedContactTheOthersDoNot) {
   // Five periods of an undamped contact oscillation at t_c/dt = 25.
   const double explicitEuler = contactAmplitudeGrowth(shaders(), Integrator::ExplicitEuler, 1.0 / 25, 5);
   const double symplectic = contactAmplitudeGrowth(shaders(), Integrator::SymplecticEuler, 1.0 / 25, 5);
@@ -89,7 +89,7 @@ TEST_F(BallsPhysics, ExplicitEulerGainsEnergyOnAnUndampedContactTheOthersDoNot) 
   EXPECT_LT(verlet, 1.05) << "velocity Verlet stays bounded";
 }
 
-TEST_F(BallsPhysics, UndampedContactStabilityLimitIsTwoOverOmega) {
+TEST_F(BallsTest, UndampedContactStabilityLimitIsTwoOverOmega) {
   // ω0 = π / t_c for e = 1, so symplectic Euler and Verlet are stable while dt < 2/ω0 = 0.6366 t_c.
   // The bisection over [0.05, 2] t_c stops once its bracket is narrower than 1% of its stable end
   // and returns the bracket's middle: within ±0.5% of where the growth criterion flips (near
@@ -114,7 +114,7 @@ TEST_F(BallsPhysics, UndampedContactStabilityLimitIsTwoOverOmega) {
 // (t_c = 2 ms); the seed's penalty law corrects 0.48·overlap per step as a velocity, so its
 // stiffness is 0.48/dt per unit mass: it is run as the seed runs it, with the seed's gravity
 // (0.9 m/s²) and a short step, where its overlaps are small too.
-TEST_F(BallsPhysics, SettledColumnKeepsEveryBallWithSmallOverlaps) {
+TEST_F(BallsTest, SettledColumnKeepsEveryBallWithSmallOverlaps) {
   for (Contact contact : {Contact::SpringDashpot, Contact::Penalty}) {
     SCOPED_TRACE(kContactNames[int(contact)]);
     const bool penalty = contact == Contact::Penalty;

@@ -7,9 +7,10 @@
 #include <random>
 
 #include "base/error.h"
+#include "reference/balls_reference.h"
 #include "sim/balls/balls.h"
 #include "sim/balls/balls_init.h"
-#include "sim/balls/balls_reference.h"
+#include "support/balls_fixtures.h"
 #include "support/gl_test.h"
 
 using namespace tidepool;
@@ -17,14 +18,7 @@ using namespace tidepool::balls;
 
 namespace {
 
-class BallsStep : public test::GlTest {};
-
-Params emptyBox() {
-  Params p = reference::emptyBox(0.02f, glm::vec3(0.4f, 0.3f, 0.5f));
-  p.dt = 2e-4f;
-  p.contactTime = 0.004f;
-  return p;
-}
+using BallsTest = test::GlTest;
 
 // A dense, jumbled cloud: overlaps, wall contacts, random velocities.
 void jumbled(std::vector<glm::vec4>& pos, std::vector<glm::vec4>& vel, const Params& p, int count) {
@@ -42,11 +36,11 @@ void jumbled(std::vector<glm::vec4>& pos, std::vector<glm::vec4>& vel, const Par
 // Each ball's index rides in its position's w, which every pass carries through untouched, so the
 // GPU's cell order maps back to the CPU's whatever the step reordered: Verlet's first step sorts
 // twice (for a(x0), then after the drift), and lastOrder() holds only the last sort.
-TEST_F(BallsStep, GpuStepEqualsCpuReferenceForEveryContactLawAndIntegrator) {
+TEST_F(BallsTest, GpuStepEqualsCpuReferenceForEveryContactLawAndIntegrator) {
   for (Contact contact : {Contact::SpringDashpot, Contact::Penalty, Contact::CudaSample})
     for (Integrator integrator : {Integrator::SymplecticEuler, Integrator::ExplicitEuler, Integrator::VelocityVerlet}) {
       SCOPED_TRACE(std::string(kContactNames[int(contact)]) + " / " + kIntegratorNames[int(integrator)]);
-      Params p = emptyBox();
+      Params p = test::emptyTank();
       p.contact = contact;
       p.integrator = integrator;
       p.friction = contact == Contact::SpringDashpot ? 0.3f : 0.0f;
@@ -73,8 +67,8 @@ TEST_F(BallsStep, GpuStepEqualsCpuReferenceForEveryContactLawAndIntegrator) {
 
 // Euler keeps no accelerations and no order of the last step: 20 bytes per ball fewer. A live
 // switch to velocity Verlet allocates them and steps as a model that started with Verlet does.
-TEST_F(BallsStep, AccelerationsAndOrderAreAllocatedOnlyWhenUsed) {
-  Params p = emptyBox();
+TEST_F(BallsTest, AccelerationsAndOrderAreAllocatedOnlyWhenUsed) {
+  Params p = test::emptyTank();
   std::vector<glm::vec4> pos, vel;
   jumbled(pos, vel, p, 500);
   Balls euler(shaders(), p);
@@ -98,8 +92,8 @@ TEST_F(BallsStep, AccelerationsAndOrderAreAllocatedOnlyWhenUsed) {
   EXPECT_EQ(euler.lastOrder().size(), pos.size());
 }
 
-TEST_F(BallsStep, NothingIsLostOrEscapesAndNothingIsNaN) {
-  Params p = emptyBox();
+TEST_F(BallsTest, NothingIsLostOrEscapesAndNothingIsNaN) {
+  Params p = test::emptyTank();
   p.fill = Fill::Random;
   p.randomCount = 1500;
   p.fillMin = p.domainMin;
@@ -114,8 +108,8 @@ TEST_F(BallsStep, NothingIsLostOrEscapesAndNothingIsNaN) {
   EXPECT_EQ(s.outside, 0u);
 }
 
-TEST_F(BallsStep, PistonPushesBallsWithoutLosingAny) {
-  Params p = emptyBox();
+TEST_F(BallsTest, PistonPushesBallsWithoutLosingAny) {
+  Params p = test::emptyTank();
   p.fill = Fill::Block;
   p.fillMin = p.domainMin;
   p.fillMax = glm::vec3(0.4f, 0.3f, 0.2f);
@@ -139,8 +133,8 @@ TEST_F(BallsStep, PistonPushesBallsWithoutLosingAny) {
   EXPECT_EQ(s.nonFinite, 0u);
 }
 
-TEST_F(BallsStep, SpinningObstacleKeepsItsParticlesAndStirsTheWater) {
-  Params p = emptyBox();
+TEST_F(BallsTest, SpinningObstacleKeepsItsParticlesAndStirsTheWater) {
+  Params p = test::emptyTank();
   p.domainMax = glm::vec3(0.6f, 0.6f, 0.4f);
   p.fill = Fill::Slab;
   p.slabHeight = 0.15f;
@@ -170,7 +164,7 @@ TEST_F(BallsStep, SpinningObstacleKeepsItsParticlesAndStirsTheWater) {
   EXPECT_EQ(s.outside, 0u);
 }
 
-TEST_F(BallsStep, TooManyBallsAreRefusedBeforeAllocating) {
+TEST_F(BallsTest, TooManyBallsAreRefusedBeforeAllocating) {
   Params p;
   p.fill = Fill::Lattice;
   p.latticeCount = 2000;
@@ -185,8 +179,8 @@ TEST_F(BallsStep, TooManyBallsAreRefusedBeforeAllocating) {
   }
 }
 
-TEST_F(BallsStep, TapEmitsUpToItsMaximumAndEveryBallStaysInside) {
-  Params p = emptyBox();
+TEST_F(BallsTest, TapEmitsUpToItsMaximumAndEveryBallStaysInside) {
+  Params p = test::emptyTank();
   p.tap = true;
   p.tapPosition = glm::vec3(0.03f, 0.15f, 0.3f);  // a jet from the side wall, away from its own splash
   p.tapDirection = glm::vec3(1.0f, 0.0f, 0.2f);
@@ -214,8 +208,8 @@ TEST_F(BallsStep, TapEmitsUpToItsMaximumAndEveryBallStaysInside) {
   // the contact law pushes them apart. The fountain scene lives with that.)
 }
 
-TEST_F(BallsStep, ObstacleEditedWhileRunningIsRebuilt) {
-  Params p = emptyBox();
+TEST_F(BallsTest, ObstacleEditedWhileRunningIsRebuilt) {
+  Params p = test::emptyTank();
   p.fill = Fill::None;
   Balls b(shaders(), p);
   EXPECT_EQ(b.obstacleCount(), 0u);
@@ -239,10 +233,10 @@ TEST_F(BallsStep, ObstacleEditedWhileRunningIsRebuilt) {
 // counts equal the CPU's histogram of the new positions and every slot in a cell is taken once. An
 // upload at the same count must void the counts the last collide took: the model then steps as a
 // new one made from the uploaded state does, bit for bit.
-TEST_F(BallsStep, CountingInTheCollideTakesTheNextGridsCounts) {
+TEST_F(BallsTest, CountingInTheCollideTakesTheNextGridsCounts) {
   for (Integrator integrator : {Integrator::SymplecticEuler, Integrator::ExplicitEuler}) {
     SCOPED_TRACE(kIntegratorNames[int(integrator)]);
-    Params p = emptyBox();
+    Params p = test::emptyTank();
     p.integrator = integrator;
     std::vector<glm::vec4> pos, vel;
     jumbled(pos, vel, p, 900);

@@ -7,9 +7,10 @@
 
 #include <random>
 
+#include "reference/balls_reference.h"
 #include "scene/balls_stage.h"
 #include "sim/balls/balls.h"
-#include "sim/balls/balls_reference.h"
+#include "support/balls_fixtures.h"
 #include "support/gl_test.h"
 
 using namespace tidepool;
@@ -107,9 +108,7 @@ TEST_F(ObstacleMotion, SceneObstaclesKeepTheirParticlesAndShapeWhileTurningAndTr
 TEST_F(ObstacleMotion, GpuStepAmongMovingObstaclesEqualsTheCpuReference) {
   for (Contact contact : {Contact::SpringDashpot, Contact::CudaSample, Contact::Penalty}) {
     SCOPED_TRACE(kContactNames[int(contact)]);
-    Params p = reference::emptyBox(0.02f, glm::vec3(0.4f, 0.3f, 0.5f));
-    p.dt = 2e-4f;
-    p.contactTime = 0.004f;
+    Params p = test::emptyTank();
     p.contact = contact;
     p.friction = contact == Contact::SpringDashpot ? 0.3f : 0.0f;
     ObstacleParams box, sphere;  // a tumbling box and a sphere spinning on a circle

@@ -15,7 +15,7 @@ using namespace tidepool::fluid;
 
 namespace {
 
-class FluidPhysics : public test::GlTest {};
+using FluidTest = test::GlTest;
 
 Params sceneParams(const char* name) { return fluidScene(loadScene(resolveScenePath(name))).model; }
 
@@ -45,7 +45,7 @@ void expectInsideTheWalls(Fluid& f) {
 
 }  // namespace
 
-TEST_F(FluidPhysics, RestingTankDensityErrorIsBelowOnePercentAndFallsWithIterations) {
+TEST_F(FluidTest, RestingTankDensityErrorIsBelowOnePercentAndFallsWithIterations) {
   std::vector<double> errors;
   for (int iterations : {1, 2, 4, 8}) {
     Params p = sceneParams("fluid-tank");
@@ -65,7 +65,7 @@ TEST_F(FluidPhysics, RestingTankDensityErrorIsBelowOnePercentAndFallsWithIterati
   EXPECT_LT(errors.back(), 0.5 * errors.front());
 }
 
-TEST_F(FluidPhysics, RestingTankKeepsItsSurfaceAndEveryParticleForTwoSeconds) {
+TEST_F(FluidTest, RestingTankKeepsItsSurfaceAndEveryParticleForTwoSeconds) {
   const Params p = sceneParams("fluid-tank");
   Fluid f(shaders(), p);
   const std::size_t count = f.count();
@@ -86,7 +86,7 @@ TEST_F(FluidPhysics, RestingTankKeepsItsSurfaceAndEveryParticleForTwoSeconds) {
   EXPECT_FALSE(f.divergence().has_value());
 }
 
-TEST_F(FluidPhysics, DamBreakRunsTwoSecondsStableWithEveryParticleAndAnAdvancingFront) {
+TEST_F(FluidTest, DamBreakRunsTwoSecondsStableWithEveryParticleAndAnAdvancingFront) {
   const Params p = sceneParams("dam-break-fluid");
   Fluid f(shaders(), p);
   const std::size_t count = f.count();
@@ -109,7 +109,7 @@ TEST_F(FluidPhysics, DamBreakRunsTwoSecondsStableWithEveryParticleAndAnAdvancing
 // particle ends inside the cup's walls or leaves the domain. Inside means the particle's sphere
 // (radius d/2) lies in the solid: the analytic shape reaches half a lattice step beyond its outer
 // particles, where water touching the wall legitimately sits.
-TEST_F(FluidPhysics, NoParticleEntersAnObstacle) {
+TEST_F(FluidTest, NoParticleEntersAnObstacle) {
   Params p = sceneParams("fluid-cup");
   p.spacing = 0.03f;
   Fluid f(shaders(), p);
@@ -139,7 +139,7 @@ TEST_F(FluidPhysics, NoParticleEntersAnObstacle) {
 
 // The tap emits at the fluid's rest density: a jet falling from the nozzle is nowhere compressed
 // (layers at the balls' packing would start it 60% over ρ0 and burst it into spray).
-TEST_F(FluidPhysics, TapJetLeavesTheNozzleUncompressed) {
+TEST_F(FluidTest, TapJetLeavesTheNozzleUncompressed) {
   Params p;
   p.spacing = 0.02f;
   p.water.domainMax = glm::vec3(0.4f, 0.4f, 0.6f);

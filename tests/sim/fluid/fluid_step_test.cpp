@@ -1,4 +1,4 @@
-// The GPU fluid step equals the CPU reference (tests/sim/fluid/pbf_reference.h): one solver
+// The GPU fluid step equals the CPU reference (tests/reference/pbf_reference.h): one solver
 // iteration alone, then several with XSPH, vorticity confinement and an obstacle's boundary
 // particles, in both grid reorder modes.
 #include <gtest/gtest.h>
@@ -6,9 +6,9 @@
 #include <cstdio>
 #include <random>
 
+#include "reference/pbf_reference.h"
 #include "sim/balls/balls_init.h"
 #include "sim/fluid/fluid.h"
-#include "sim/fluid/pbf_reference.h"
 #include "support/gl_test.h"
 
 using namespace tidepool;
@@ -16,7 +16,7 @@ using namespace tidepool::fluid;
 
 namespace {
 
-class FluidStep : public test::GlTest {};
+using FluidTest = test::GlTest;
 
 Params box() {
   Params p;
@@ -122,7 +122,7 @@ double run(gl::ShaderLibrary& shaders, Params p, bool obstacle, double* velocity
 
 }  // namespace
 
-TEST_F(FluidStep, OneSolverIterationEqualsTheCpuReference) {
+TEST_F(FluidTest, OneSolverIterationEqualsTheCpuReference) {
   Params p = box();
   p.iterations = 1;
   double velocityError = 0;
@@ -132,7 +132,7 @@ TEST_F(FluidStep, OneSolverIterationEqualsTheCpuReference) {
   EXPECT_LT(velocityError, 1e-5);
 }
 
-TEST_F(FluidStep, IterationsViscosityVorticityAndObstacleEqualTheCpuReference) {
+TEST_F(FluidTest, IterationsViscosityVorticityAndObstacleEqualTheCpuReference) {
   Params p = box();
   p.iterations = 3;
   p.viscosity = 0.05f;

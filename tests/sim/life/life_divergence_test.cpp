@@ -16,7 +16,7 @@ using namespace tidepool::life;
 
 namespace {
 
-class LifeDivergence : public test::GlTest {};
+using LifeTest = test::GlTest;
 
 // Particles feel only the central force c = 1000 /s² (ω = 31.6 /s; no friction), so each is a
 // harmonic oscillator: symplectic Euler is stable for dt < 2/ω = 0.063 s. The force table's
@@ -61,14 +61,14 @@ void runFrames(Life& model, int frames, gl::GpuProfiler& profiler) {
 
 }  // namespace
 
-TEST_F(LifeDivergence, ArticleDefaultsAreNeverFlagged) {
+TEST_F(LifeTest, ArticleDefaultsAreNeverFlagged) {
   Life model(shaders(), generateRules({.species = 6, .particleCount = 2048, .size = {256.0f, 144.0f}, .seed = 5}));
   gl::GpuProfiler profiler;
   runFrames(model, 120, profiler);
   EXPECT_FALSE(model.divergence().has_value()) << model.divergence()->message;
 }
 
-TEST_F(LifeDivergence, BlowUpIsReportedAndRecoveredWithHalfTheStep) {
+TEST_F(LifeTest, BlowUpIsReportedAndRecoveredWithHalfTheStep) {
   gl::GpuProfiler profiler;
   Life model(shaders(), oscillators()), twin(shaders(), oscillators());
   startInside(model);
@@ -101,7 +101,7 @@ TEST_F(LifeDivergence, BlowUpIsReportedAndRecoveredWithHalfTheStep) {
   EXPECT_GT(model.time(), goodTime + 60 * 0.05 - 1e-6);
 }
 
-TEST_F(LifeDivergence, WithoutAGoodStateRecoveryIsRefused) {
+TEST_F(LifeTest, WithoutAGoodStateRecoveryIsRefused) {
   Life model(shaders(), oscillators());
   EXPECT_FALSE(model.recover()) << "nothing diverged";
 }

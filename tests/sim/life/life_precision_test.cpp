@@ -8,8 +8,8 @@
 #include <glm/gtc/packing.hpp>
 
 #include "io/png.h"
+#include "reference/life_reference.h"
 #include "sim/life/life.h"
-#include "sim/life/life_reference.h"
 #include "sim/life/measure/life_cpu.h"
 #include "support/gl_test.h"
 #include "support/run_process.h"
@@ -19,7 +19,7 @@ using namespace tidepool::life;
 
 namespace {
 
-class LifePrecision : public test::GlTest {};
+using LifeTest = test::GlTest;
 
 // Spacing of half floats around |x| (2^-24 below the normal range).
 double halfUlp(double x) {
@@ -69,7 +69,7 @@ StepCheck stepAgainstCpu(Life& model, const Rules& rules, float dt, double ulps)
 
 }  // namespace
 
-TEST_F(LifePrecision, CpuReferenceEqualsTheBruteForce) {
+TEST_F(LifeTest, CpuReferenceEqualsTheBruteForce) {
   for (bool looping : {false, true}) {
     SCOPED_TRACE(looping ? "looping" : "walls");
     const Rules rules = articleDensity(3000, looping, 4);
@@ -86,7 +86,7 @@ TEST_F(LifePrecision, CpuReferenceEqualsTheBruteForce) {
   }
 }
 
-TEST_F(LifePrecision, Fp32StepEqualsTheCpuStepToFloatRoundOff) {
+TEST_F(LifeTest, Fp32StepEqualsTheCpuStepToFloatRoundOff) {
   const Rules rules = articleDensity(4096, true, 11);
   Life model(shaders(), rules);
   for (int k = 0; k < 5; ++k) model.stepOnce(0.02f);  // clusters start to form
@@ -96,7 +96,7 @@ TEST_F(LifePrecision, Fp32StepEqualsTheCpuStepToFloatRoundOff) {
   EXPECT_LT(c.worstVel, 1.0);
 }
 
-TEST_F(LifePrecision, Fp16StepEqualsTheCpuStepWithinOneHalfFloatRounding) {
+TEST_F(LifeTest, Fp16StepEqualsTheCpuStepWithinOneHalfFloatRounding) {
   for (bool looping : {false, true}) {
     SCOPED_TRACE(looping ? "looping" : "walls");
     const Rules rules = articleDensity(4096, looping, 11);
@@ -115,7 +115,7 @@ TEST_F(LifePrecision, Fp16StepEqualsTheCpuStepWithinOneHalfFloatRounding) {
   }
 }
 
-TEST_F(LifePrecision, AStorageChangeConvertsTheRunningState) {
+TEST_F(LifeTest, AStorageChangeConvertsTheRunningState) {
   const Rules rules = articleDensity(2048, false, 2);
   Life model(shaders(), rules);
   for (int k = 0; k < 3; ++k) model.stepOnce(0.02f);

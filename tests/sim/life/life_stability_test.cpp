@@ -18,7 +18,7 @@ using namespace tidepool::life;
 
 namespace {
 
-class LifeStability : public test::GlTest {};
+using LifeTest = test::GlTest;
 
 // Spectral radius of a 2x2 matrix [[a, b], [c, d]].
 double spectralRadius(double a, double b, double c, double d) {
@@ -66,7 +66,7 @@ TEST(LifeStabilityTheory, PairForceIsTheStatedSpringAboutItsEquilibrium) {
   }
 }
 
-TEST_F(LifeStability, PairOscillatorLimitsMatchTheDerivationWithFriction) {
+TEST_F(LifeTest, PairOscillatorLimitsMatchTheDerivationWithFriction) {
   // The model's default friction γ = 10/s at ω = 50/s: γ/ω = 0.2.
   const PairOscillator pair = pairOscillator(10.0);
   const double a = double(pair.rules.friction) / pair.omega;

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <random>
 
+#include "reference/life_reference.h"
 #include "sim/life/life.h"
-#include "sim/life/life_reference.h"
 #include "support/gl_test.h"
 
 using namespace tidepool;
@@ -14,7 +14,7 @@ using namespace tidepool::life;
 
 namespace {
 
-class LifeStep : public test::GlTest {};
+using LifeTest = test::GlTest;
 
 void expectForcesMatch(Life& model, const Rules& rules) {
   model.computeForces();
@@ -34,7 +34,7 @@ void expectForcesMatch(Life& model, const Rules& rules) {
 
 }  // namespace
 
-TEST_F(LifeStep, BinnedForcesMatchBruteForce) {
+TEST_F(LifeTest, BinnedForcesMatchBruteForce) {
   for (bool looping : {false, true}) {
     SCOPED_TRACE(looping ? "looping" : "walls");
     // 4096 particles at the article's density (65536 in 1024x576) in a box that is no multiple
@@ -65,7 +65,7 @@ TEST_F(LifeStep, BinnedForcesMatchBruteForce) {
   }
 }
 
-TEST_F(LifeStep, FrictionAloneDecaysSpeedExponentially) {
+TEST_F(LifeTest, FrictionAloneDecaysSpeedExponentially) {
   for (Integrator integrator : {Integrator::Euler, Integrator::Verlet}) {
     SCOPED_TRACE(kIntegratorNames[int(integrator)]);
     Rules rules = generateRules({.species = 2, .particleCount = 1024, .friction = 7.0f, .seed = 8});
@@ -90,7 +90,7 @@ TEST_F(LifeStep, FrictionAloneDecaysSpeedExponentially) {
   }
 }
 
-TEST_F(LifeStep, PushBrushAddsAGaussianVelocityForOneStep) {
+TEST_F(LifeTest, PushBrushAddsAGaussianVelocityForOneStep) {
   Rules rules = generateRules({.species = 1, .particleCount = 1024, .friction = 0.0f, .seed = 2});
   rules.species[0].forces[0] = {0, 0, 4, 0};
   Life model(shaders(), rules);
@@ -120,7 +120,7 @@ TEST_F(LifeStep, PushBrushAddsAGaussianVelocityForOneStep) {
   EXPECT_FLOAT_EQ(maxSpeedAfter, maxSpeedBefore);
 }
 
-TEST_F(LifeStep, VerletIsSecondOrderAndEulerFirstOnTheCentralForce) {
+TEST_F(LifeTest, VerletIsSecondOrderAndEulerFirstOnTheCentralForce) {
   // One particle, no pair forces, no friction: the central force -c·p is a harmonic oscillator,
   // p(t) = p0 cos(wt) + v0/w sin(wt) with w = sqrt(c). Halving dt divides the error at t = 1 by
   // about 2 for symplectic Euler and about 4 for velocity Verlet.

@@ -17,7 +17,7 @@ using namespace tidepool::ripples;
 
 namespace {
 
-class RipplesAccuracy : public test::GlTest {};
+using RipplesTest = test::GlTest;
 
 constexpr double kPi = std::numbers::pi;
 
@@ -47,7 +47,7 @@ double crestRadius(const std::vector<float>& hv, int n, double minRadius) {
 
 }  // namespace
 
-TEST_F(RipplesAccuracy, PhaseSpeedFollowsTheDiscreteDispersionRelationAlongTheAxis) {
+TEST_F(RipplesTest, PhaseSpeedFollowsTheDiscreteDispersionRelationAlongTheAxis) {
   for (int cellsPerWavelength : {10, 16, 32}) {
     const double k = 2 * kPi / cellsPerWavelength;
     const double measured = measuredPhaseRatio(shaders(), 2 * cellsPerWavelength, 16, k, 0.0, 0.5);
@@ -61,7 +61,7 @@ TEST_F(RipplesAccuracy, PhaseSpeedFollowsTheDiscreteDispersionRelationAlongTheAx
   }
 }
 
-TEST_F(RipplesAccuracy, PhaseSpeedAlongTheDiagonalLagsLess) {
+TEST_F(RipplesTest, PhaseSpeedAlongTheDiagonalLagsLess) {
   const int n = 16;  // one period across a 16x16 torus in x and in y: 11.3 cells per wavelength
   const double k = 2 * kPi / n;
   const double measured = measuredPhaseRatio(shaders(), n, n, k, k, 0.5);
@@ -70,7 +70,7 @@ TEST_F(RipplesAccuracy, PhaseSpeedAlongTheDiagonalLagsLess) {
   EXPECT_GT(measured, predictedPhaseRatio(std::hypot(k, k), 0.0, 0.5)) << "an axis wave of the same length lags more";
 }
 
-TEST_F(RipplesAccuracy, GaussianRingFrontTravelsAtTheNumericalPhaseSpeed) {
+TEST_F(RipplesTest, GaussianRingFrontTravelsAtTheNumericalPhaseSpeed) {
   // A Gaussian bump of width sigma = 4 cells: its spectrum peaks near 2*pi*sigma = 25 cells per
   // wavelength (>= 10). The ring crest is timed between two radii well after it has separated.
   const int n = 256;
@@ -98,7 +98,7 @@ TEST_F(RipplesAccuracy, GaussianRingFrontTravelsAtTheNumericalPhaseSpeed) {
   EXPECT_NEAR(measured / predicted, 1.0, 0.01);
 }
 
-TEST_F(RipplesAccuracy, WaveRuleStabilityLimitIsOneOverSqrtTwo) {
+TEST_F(RipplesTest, WaveRuleStabilityLimitIsOneOverSqrtTwo) {
   const Params p = periodicWaveGrid(32, 32);
   const double limit = 1.0 / std::sqrt(2.0);
   auto stableAt = [&](double c) { return staysBounded(shaders(), p, c * p.cellSize / p.waveSpeed, 10000); };
@@ -110,7 +110,7 @@ TEST_F(RipplesAccuracy, WaveRuleStabilityLimitIsOneOverSqrtTwo) {
   EXPECT_NEAR(measured / limit, 1.0, 0.02);
 }
 
-TEST_F(RipplesAccuracy, SeedRuleStabilityLimitMatchesItsDerivation) {
+TEST_F(RipplesTest, SeedRuleStabilityLimitMatchesItsDerivation) {
   // Seed rule, checkerboard mode (mean4 − h = −2h): v' = f·(v − dt·(k + 2c)·h), h' = h + dt·v'.
   // The one-step matrix has trace 1 + f − f·dt²·ω² and determinant f (ω² = k + 2c), so it is
   // stable while dt²·ω² < 2(1 + f)/f. With the seed's k = 0.7, c = 20, f = 0.995: dt < 0.3139,

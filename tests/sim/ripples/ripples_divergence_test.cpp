@@ -15,7 +15,7 @@ using namespace tidepool::ripples;
 
 namespace {
 
-class RipplesDivergence : public test::GlTest {};
+using RipplesTest = test::GlTest;
 
 Params unstableAt(double courantNumber, double frame) {
   Params p = periodicWaveGrid(32, 32);
@@ -33,7 +33,7 @@ void seedNoise(Ripples& r) {
 
 }  // namespace
 
-TEST_F(RipplesDivergence, StableRunsAreNeverFlagged) {
+TEST_F(RipplesTest, StableRunsAreNeverFlagged) {
   const double frame = 1.0 / 60;
   Ripples r(shaders(), unstableAt(0.6, frame));
   seedNoise(r);
@@ -43,7 +43,7 @@ TEST_F(RipplesDivergence, StableRunsAreNeverFlagged) {
   EXPECT_FALSE(r.divergence().has_value());
 }
 
-TEST_F(RipplesDivergence, BlowUpIsReportedAndTheLastGoodStateRestored) {
+TEST_F(RipplesTest, BlowUpIsReportedAndTheLastGoodStateRestored) {
   const double frame = 1.0 / 60;
   const Params p = unstableAt(0.75, frame);
   Ripples r(shaders(), p), twin(shaders(), p);  // the twin replays the run to check the restored state

@@ -5,8 +5,8 @@
 #include <random>
 
 #include "base/log.h"
+#include "reference/ripples_reference.h"
 #include "sim/ripples/ripples.h"
-#include "sim/ripples/ripples_reference.h"
 #include "support/gl_test.h"
 
 using namespace tidepool;
@@ -14,7 +14,7 @@ using namespace tidepool::ripples;
 
 namespace {
 
-class RipplesStep : public test::GlTest {};
+using RipplesTest = test::GlTest;
 
 std::vector<float> randomState(int w, int h, unsigned seed) {
   std::mt19937 rng(seed);
@@ -39,7 +39,7 @@ Params small(Rule rule, Boundary boundary) {
 
 }  // namespace
 
-TEST_F(RipplesStep, GpuMatchesCpuReferenceForEveryRuleAndBoundary) {
+TEST_F(RipplesTest, GpuMatchesCpuReferenceForEveryRuleAndBoundary) {
   for (Rule rule : {Rule::Wave, Rule::Seed})
     for (Boundary boundary : {Boundary::Reflecting, Boundary::Absorbing, Boundary::Periodic}) {
       SCOPED_TRACE(std::string(kRuleNames[int(rule)]) + " / " + kBoundaryNames[int(boundary)]);
@@ -73,7 +73,7 @@ TEST(RipplesParams, SeedRuleDefaultsAreTheSeedsConstants) {
   EXPECT_FLOAT_EQ(p.touchRadius, 0.03f);
 }
 
-TEST_F(RipplesStep, TotalHeightIsConservedWithReflectingWalls) {
+TEST_F(RipplesTest, TotalHeightIsConservedWithReflectingWalls) {
   Params p = small(Rule::Wave, Boundary::Reflecting);
   p.velDamping = 0;
   p.posDamping = 0;
@@ -116,7 +116,7 @@ TEST(RipplesParams, AutoSubstepsKeepTheCourantNumberUnderTheTarget) {
   EXPECT_EQ(substepsFor(p, 1.0 / 60), 3);
 }
 
-TEST_F(RipplesStep, CourantAboveTheLimitIsWarnedInLogAndStatus) {
+TEST_F(RipplesTest, CourantAboveTheLimitIsWarnedInLogAndStatus) {
   Params p = small(Rule::Wave, Boundary::Reflecting);
   p.substeps = 1;
   Ripples r(shaders(), p);
@@ -132,7 +132,7 @@ TEST_F(RipplesStep, CourantAboveTheLimitIsWarnedInLogAndStatus) {
   EXPECT_NE(r.status().find("UNSTABLE"), std::string::npos) << r.status();
 }
 
-TEST_F(RipplesStep, MovingSpherePushesWaterAsideWithoutCreatingIt) {
+TEST_F(RipplesTest, MovingSpherePushesWaterAsideWithoutCreatingIt) {
   Params p = small(Rule::Wave, Boundary::Reflecting);
   p.width = p.height = 64;
   p.velDamping = p.posDamping = 0;

@@ -17,7 +17,7 @@ using namespace tidepool::sim;
 
 namespace {
 
-class SwarmDivergence : public test::GlTest {};
+using SwarmTest = test::GlTest;
 
 // A ring of 256 particles on the circular orbit r = 0.5 around one attractor s = 1 (ε = 0): the
 // period is π s, and 200 steps per orbit keep it on its orbit.
@@ -55,7 +55,7 @@ void runFrames(Swarm& swarm, int frames, double dt) {
 
 }  // namespace
 
-TEST_F(SwarmDivergence, SeedSettingsAreNeverFlagged) {
+TEST_F(SwarmTest, SeedSettingsAreNeverFlagged) {
   SwarmParams p;
   p.particles = 1 << 14;
   Swarm swarm(shaders(), p);
@@ -64,7 +64,7 @@ TEST_F(SwarmDivergence, SeedSettingsAreNeverFlagged) {
   EXPECT_LT(swarm.speedBound(), 1e3) << "the bound is on the scale of the field, not arbitrary";
 }
 
-TEST_F(SwarmDivergence, BlowUpIsReportedAndRecoveredWithHalfTheStep) {
+TEST_F(SwarmTest, BlowUpIsReportedAndRecoveredWithHalfTheStep) {
   const double dt = std::numbers::pi / 200;
   Swarm swarm(shaders(), ringParams(Storage::Fp32)), twin(shaders(), ringParams(Storage::Fp32));
   placeRing(swarm);
@@ -96,7 +96,7 @@ TEST_F(SwarmDivergence, BlowUpIsReportedAndRecoveredWithHalfTheStep) {
   }
 }
 
-TEST_F(SwarmDivergence, Fp16OverflowIsReportedAsNonFinite) {
+TEST_F(SwarmTest, Fp16OverflowIsReportedAsNonFinite) {
   Swarm swarm(shaders(), ringParams(Storage::Fp16));
   placeRing(swarm);
   runFrames(swarm, 16, std::numbers::pi / 200);
@@ -108,7 +108,7 @@ TEST_F(SwarmDivergence, Fp16OverflowIsReportedAsNonFinite) {
   EXPECT_NE(message.find("fp16"), std::string::npos) << message;
 }
 
-TEST_F(SwarmDivergence, WithoutAGoodStateRecoveryIsRefused) {
+TEST_F(SwarmTest, WithoutAGoodStateRecoveryIsRefused) {
   Swarm swarm(shaders(), ringParams(Storage::Fp32));
   placeRing(swarm);
   EXPECT_FALSE(swarm.recover());

@@ -14,7 +14,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "sim/swarm/swarm_reference.h"
+#include "reference/swarm_reference.h"
 #include "support/gl_test.h"
 
 using namespace tidepool;
@@ -23,7 +23,7 @@ using namespace tidepool::sim;
 namespace {
 
 class SwarmOrbit : public test::GlTest, public ::testing::WithParamInterface<Integrator> {};
-class SwarmOrbitFp16 : public test::GlTest {};
+using SwarmTest = test::GlTest;
 
 constexpr double kStrength = 1.0, kRadius = 0.5;
 constexpr int kStepsPerOrbit = 200, kOrbits = 10, kSampleEvery = 10;
@@ -129,7 +129,7 @@ INSTANTIATE_TEST_SUITE_P(AllIntegrators, SwarmOrbit,
 //   symplectic Euler 0.094, Verlet 0.045, RK4 0.071  (fp32: 0.022, 5.0e-4, 6.5e-6)
 // i.e. a random walk of ~sqrt(steps) half-precision roundings of the velocity. fp16 suits
 // pictures, not accuracy studies; the bound below is 1.5x the worst measured.
-TEST_F(SwarmOrbitFp16, EnergyErrorWithFp16StorageIsMeasured) {
+TEST_F(SwarmTest, EnergyErrorWithFp16StorageIsMeasured) {
   for (Integrator integrator : {Integrator::SymplecticEuler, Integrator::Verlet, Integrator::Rk4}) {
     SwarmParams params = test::freeFlight();
     params.integrator = integrator;

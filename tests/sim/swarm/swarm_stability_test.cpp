@@ -17,11 +17,11 @@ using namespace tidepool::sim;
 
 namespace {
 
-class SwarmStability : public test::GlTest {};
+using SwarmTest = test::GlTest;
 
 }  // namespace
 
-TEST_F(SwarmStability, SoftenedCoreOscillatorLimitsMatchTheory) {
+TEST_F(SwarmTest, SoftenedCoreOscillatorLimitsMatchTheory) {
   struct Case {
     Integrator integrator;
     double theory;
@@ -36,7 +36,7 @@ TEST_F(SwarmStability, SoftenedCoreOscillatorLimitsMatchTheory) {
   }
 }
 
-TEST_F(SwarmStability, ExplicitEulerGrowsAtEveryStep) {
+TEST_F(SwarmTest, ExplicitEulerGrowsAtEveryStep) {
   // |R| = √(1 + (ω·dt)²) per step: over 10 periods at 200 steps per period the amplitude grows
   // by (1 + h²)^1000 = e^0.99 ≈ 2.7, and the bisection finds no stable ω·dt at all.
   const double h = 2.0 * std::numbers::pi / 200;

@@ -7,7 +7,7 @@
 #include <glm/gtc/packing.hpp>
 #include <random>
 
-#include "sim/swarm/swarm_reference.h"
+#include "reference/swarm_reference.h"
 #include "support/gl_test.h"
 
 using namespace tidepool;
@@ -15,7 +15,7 @@ using namespace tidepool::sim;
 
 namespace {
 
-class Swarms : public test::GlTest {};
+using SwarmTest = test::GlTest;
 
 std::vector<SwarmParticle> randomParticles(std::size_t n, unsigned seed, float speed = 0.0f) {
   std::mt19937 rng(seed);
@@ -36,7 +36,7 @@ double maxPosGap(const std::vector<SwarmParticle>& a, const std::vector<test::Re
 // The full law (gravity, eps, friction, aspect 16:9, bounce) with the moving "orbit" attractors:
 // forces at intermediate times must use the attractors at those times. A reference that holds
 // the attractors at the start of each step lands far outside the tolerance.
-TEST_F(Swarms, AnimatedPresetMatchesCpuReferenceForEveryIntegrator) {
+TEST_F(SwarmTest, AnimatedPresetMatchesCpuReferenceForEveryIntegrator) {
   constexpr int kSteps = 30;
   constexpr float kDt = 1.0f / 60.0f;
   const std::vector<SwarmParticle> start = randomParticles(2048, 7, 0.3f);
@@ -72,7 +72,7 @@ TEST_F(Swarms, AnimatedPresetMatchesCpuReferenceForEveryIntegrator) {
   }
 }
 
-TEST_F(Swarms, BounceKeepsEveryParticleInsideAndTheCountNeverChanges) {
+TEST_F(SwarmTest, BounceKeepsEveryParticleInsideAndTheCountNeverChanges) {
   SwarmParams params;
   params.particles = 20000;
   params.preset = Preset::CentralRepulsive;
@@ -112,7 +112,7 @@ TEST_F(Swarms, BounceKeepsEveryParticleInsideAndTheCountNeverChanges) {
 // here against fp32 storage from the same start (values representable in both):
 // after one step the gap is one half-precision rounding (<= 2^-11 |x| per coordinate); after
 // a second of the seed's settings it stays a small fraction of the box.
-TEST_F(Swarms, Fp16StorageErrorAgainstFp32IsMeasuredAndBounded) {
+TEST_F(SwarmTest, Fp16StorageErrorAgainstFp32IsMeasuredAndBounded) {
   std::vector<SwarmParticle> start = randomParticles(4096, 11, 0.2f);
   for (auto& p : start) {  // start from values exact in fp16, so only the stepping differs
     p.pos = glm::unpackHalf2x16(glm::packHalf2x16(p.pos));
@@ -162,7 +162,7 @@ TEST_F(Swarms, Fp16StorageErrorAgainstFp32IsMeasuredAndBounded) {
   EXPECT_LE(median120, 5e-3) << "after 1 s, typical drift must stay under ~3 pixels at 1080p (1 px = 1.9e-3)";
 }
 
-TEST_F(Swarms, TooLargeRequestsFailBeforeAllocatingWithOneLine) {
+TEST_F(SwarmTest, TooLargeRequestsFailBeforeAllocatingWithOneLine) {
   GLint64 maxBlock = 0;
   glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
   const std::size_t fits = std::size_t(maxBlock) / 16;
@@ -182,7 +182,7 @@ TEST_F(Swarms, TooLargeRequestsFailBeforeAllocatingWithOneLine) {
   if (std::size_t(params.particles) > fits) EXPECT_THROW(Swarm(shaders(), params), Error);
 }
 
-TEST_F(Swarms, ResetScattersUniformlyAtRestAndIsReproducible) {
+TEST_F(SwarmTest, ResetScattersUniformlyAtRestAndIsReproducible) {
   SwarmParams params;
   params.particles = 10000;
   params.storage = Storage::Fp16;

@@ -1,7 +1,7 @@
 // Particle life on the CPU in double precision: the plain statement of the force pass
 // (shaders/life/forces.comp, through a cell list) and of the symplectic Euler step
 // (shaders/life/integrate.comp). The reference of the life-precision study and of the fp16 test;
-// the O(N^2) brute force of tests/sim/life/life_reference.h checks it in turn.
+// the O(N^2) brute force of tests/reference/life_reference.h checks it in turn.
 //
 //   std::vector<CpuParticle> s = cpuState(model.downloadPositions(), model.downloadVelocities());
 //   for (int k = 0; k < 40; ++k) cpuStepEuler(rules, s, 0.025);

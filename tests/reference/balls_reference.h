@@ -83,16 +83,6 @@ inline Gap gap(const State& cpu, const std::vector<glm::vec4>& pos, const std::v
   return {worstX, worstV / scaleV};
 }
 
-// An empty box [0, size] for balls of radius r (the rest of the parameters at their defaults).
-inline Params emptyBox(float radius, glm::vec3 size) {
-  Params p;
-  p.fill = Fill::None;
-  p.radius = radius;
-  p.domainMin = glm::vec3(0.0f);
-  p.domainMax = size;
-  return p;
-}
-
 // Acceleration of every ball at the state's positions and velocities (collide.comp's sum): gravity,
 // every other ball within 2r, the fixed particles and the walls at the domain bounds.
 inline std::vector<dvec3> accelerations(const State& s, const Params& p, const std::vector<Fixed>& fixed) {

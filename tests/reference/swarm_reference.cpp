@@ -1,4 +1,4 @@
-#include "sim/swarm/swarm_reference.h"
+#include "reference/swarm_reference.h"
 
 #include <algorithm>
 #include <cmath>
