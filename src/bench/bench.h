@@ -95,8 +95,7 @@ struct PassTimes {
 // wallClock: time whole frames around glFinish, as on a software renderer, for frames that wait
 // on the GPU part-way (a read-back): GL_TIME_ELAPSED across such a wait misses part of the frame
 // (docs/PERFORMANCE.md, "Per-pass timers on queued steps").
-PassTimes timePasses(int warmup, int timed, const std::function<void(gl::GpuProfiler&)>& frame,
-                     bool wallClock = false);
+PassTimes timePasses(int warmup, int timed, const std::function<void(gl::GpuProfiler&)>& frame, bool wallClock = false);
 
 // Keeps the GPU busy with buffer copies for about `ms` of wall-clock time. GPUs lower their clocks
 // when idle, and a few warm-up repeats of a sub-millisecond kernel do not bring them back: on the
