@@ -39,18 +39,13 @@ life::Rules rulesFor(const LifeOptions& o, std::size_t n) {
 }
 
 void bruteForce(gl::ShaderLibrary& shaders, const life::Life& model) {
-  gl::Program& p = shaders.program({"life/forces_brute.comp"}, model.rules().loopingBorders
-                                                                   ? std::vector<gl::ShaderDefine>{{"LOOPING", "1"}}
-                                                                   : std::vector<gl::ShaderDefine>{});
-  p.use();
-  p.set("uBoxSize", model.rules().size);
-  p.set("uCount", GLuint(model.count()));
-  p.set("uSpecies", GLuint(model.rules().speciesCount()));
-  p.set("uCentralForce", model.rules().centralForce);
+  const gl::Kernel<life::PairUniforms> brute(
+      shaders, "life/forces_brute.comp", {LIFE_POSITIONS, LIFE_ACCELERATIONS, LIFE_FORCE_TABLE},
+      model.rules().loopingBorders ? std::vector<gl::ShaderDefine>{{"LOOPING", "1"}} : std::vector<gl::ShaderDefine>{});
   model.positions().bindBase(GL_SHADER_STORAGE_BUFFER, LIFE_POSITIONS);
   model.accelerations().bindBase(GL_SHADER_STORAGE_BUFFER, LIFE_ACCELERATIONS);
   model.forceTable().bindBase(GL_SHADER_STORAGE_BUFFER, LIFE_FORCE_TABLE);
-  p.dispatchThreads(model.count());
+  brute.dispatchThreads(model.count(), model.pairUniforms());
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 

@@ -4,7 +4,6 @@
 #include <string>
 
 #include "common/words_bindings.glsl"
-#include "gl/program.h"
 
 namespace tidepool::gl {
 namespace {
@@ -18,7 +17,8 @@ void checkWords(std::size_t bytes, std::size_t size, const char* what) {
 }  // namespace
 
 BufferOps::BufferOps(ShaderLibrary& shaders)
-    : m_fill(&shaders.program({"common/words_fill.comp"})), m_copy(&shaders.program({"common/words_copy.comp"})) {
+    : m_fill(shaders, "common/words_fill.comp", {WORDS_FILL_TARGET}),
+      m_copy(shaders, "common/words_copy.comp", {WORDS_COPY_SRC, WORDS_COPY_DST}) {
   GLint64 maxBlock = 0;
   glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
   // Chunk offsets stay multiples of 64 KiB, far above any SSBO offset alignment.
@@ -30,13 +30,10 @@ void BufferOps::fill(Buffer& buffer, uint32_t value, std::size_t bytes) const {
   if (bytes == SIZE_MAX) bytes = buffer.size() & ~std::size_t(3);
   checkWords(bytes, buffer.size(), "fill");
   if (!bytes) return;
-  m_fill->use();
-  m_fill->set("uValue", unsigned(value));
   for (std::size_t offset = 0; offset < bytes; offset += m_chunk) {
     const std::size_t n = std::min(m_chunk, bytes - offset);
     buffer.bindRange(GL_SHADER_STORAGE_BUFFER, WORDS_FILL_TARGET, offset, n);
-    m_fill->set("uWords", unsigned(n / 4));
-    m_fill->dispatchThreads((n / 4 + 3) / 4);
+    m_fill.dispatchThreads((n / 4 + 3) / 4, {.words = unsigned(n / 4), .value = value});
   }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
@@ -46,13 +43,11 @@ void BufferOps::copy(const Buffer& src, Buffer& dst, std::size_t bytes) const {
   checkWords(bytes, dst.size(), "copy destination");
   if (!bytes) return;
   if (src.id() == dst.id()) throw GlError("buffer copy onto itself");
-  m_copy->use();
   for (std::size_t offset = 0; offset < bytes; offset += m_chunk) {
     const std::size_t n = std::min(m_chunk, bytes - offset);
     src.bindRange(GL_SHADER_STORAGE_BUFFER, WORDS_COPY_SRC, offset, n);
     dst.bindRange(GL_SHADER_STORAGE_BUFFER, WORDS_COPY_DST, offset, n);
-    m_copy->set("uWords", unsigned(n / 4));
-    m_copy->dispatchThreads((n / 4 + 3) / 4);
+    m_copy.dispatchThreads((n / 4 + 3) / 4, {.words = unsigned(n / 4)});
   }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }

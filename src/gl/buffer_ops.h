@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "gl/buffer.h"
-#include "gl/shader_library.h"
+#include "gl/kernel.h"
 
 namespace tidepool::gl {
 
@@ -39,8 +39,18 @@ class BufferOps {
   }
 
  private:
-  Program* m_fill;
-  Program* m_copy;
+  struct FillUniforms {
+    GLuint words = 0, value = 0;
+    static constexpr auto fields() {
+      return std::tuple{field("uWords", &FillUniforms::words), field("uValue", &FillUniforms::value)};
+    }
+  };
+  struct CopyUniforms {
+    GLuint words = 0;
+    static constexpr auto fields() { return std::tuple{field("uWords", &CopyUniforms::words)}; }
+  };
+  Kernel<FillUniforms> m_fill;
+  Kernel<CopyUniforms> m_copy;
   std::size_t m_chunk;  // bytes bound per dispatch: under GL_MAX_SHADER_STORAGE_BLOCK_SIZE
 };
 

@@ -1,5 +1,6 @@
 #include "gl/program.h"
 
+#include <atomic>
 #include <glm/gtc/type_ptr.hpp>
 
 namespace tidepool::gl {
@@ -11,6 +12,13 @@ void Program::swap(Program& other) noexcept {
   std::swap(m_handle, other.m_handle);
   m_locations.clear();
   other.m_locations.clear();
+  m_generation = nextGeneration();
+  other.m_generation = nextGeneration();
+}
+
+std::uint64_t Program::nextGeneration() {
+  static std::atomic<std::uint64_t> next{0};
+  return next++;
 }
 
 GLint Program::uniform(const char* name) const {

@@ -1,8 +1,10 @@
 // Linked GL programs: compute (one .comp) or graphics (.vert + .frag [+ .geom]).
 // Built by the ShaderLibrary, which can swap a new GL program in on hot reload; uniform
-// locations are cached by name and dropped on swap.
+// locations are cached by name and dropped on swap. Compute kernels with typed uniforms wrap a
+// Program in gl::Kernel (gl/kernel.h).
 #pragma once
 
+#include <cstdint>
 #include <glm/glm.hpp>
 #include <string>
 #include <unordered_map>
@@ -19,7 +21,8 @@ class Program {
   GLuint id() const { return m_handle.get(); }
   const std::string& label() const { return m_label; }  // e.g. "grid/scan.comp [WG=256]"
   void use() const { glUseProgram(id()); }
-  void swap(Program& other) noexcept;  // hot reload: take the other's GL program
+  void swap(Program& other) noexcept;                        // hot reload: take the other's GL program
+  std::uint64_t generation() const { return m_generation; }  // new on every swap: cached locations go stale
 
   GLint uniform(const char* name) const;  // -1 when absent or optimised out
   void set(const char* name, float v) const;
@@ -44,6 +47,8 @@ class Program {
   Handle<Kind::Program> m_handle;
   std::string m_label;
   mutable std::unordered_map<std::string, GLint> m_locations;
+  std::uint64_t m_generation = nextGeneration();
+  static std::uint64_t nextGeneration();
 };
 
 }  // namespace tidepool::gl

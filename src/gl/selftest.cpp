@@ -1,18 +1,24 @@
 #include "gl/selftest.h"
 
 #include "gl/buffer.h"
+#include "gl/kernel.h"
 #include "selftest/bindings.glsl"
 
 namespace tidepool::gl {
+namespace {
+struct FillUniforms {
+  GLuint count = 0, mul = 0;
+  static constexpr auto fields() {
+    return std::tuple{field("uCount", &FillUniforms::count), field("uMul", &FillUniforms::mul)};
+  }
+};
+}  // namespace
 
 std::string computeSelfTest(ShaderLibrary& shaders, unsigned count) {
-  Program& fill = shaders.program({"selftest/fill.comp"});
+  const Kernel<FillUniforms> fill(shaders, "selftest/fill.comp", {SELFTEST_OUT});
   Buffer out(std::size_t(count) * sizeof(GLuint));
   out.bindBase(GL_SHADER_STORAGE_BUFFER, SELFTEST_OUT);
-  fill.use();
-  fill.set("uCount", count);
-  fill.set("uMul", 7u);
-  fill.dispatchThreads(count);
+  fill.dispatchThreads(count, {.count = count, .mul = 7u});
   const std::vector<GLuint> got = out.read<GLuint>(count);
   for (unsigned i = 0; i < count; ++i)
     if (got[i] != i * 7u + 1u)

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -80,19 +81,25 @@ ShaderLibrary::ShaderLibrary(fs::path root) : m_root(std::move(root)) {
     throw Error("shader directory '" + m_root.string() + "' is not a readable directory");
 }
 
-Program ShaderLibrary::build(const std::vector<std::string>& files, const std::vector<ShaderDefine>& defines) const {
-  const ShaderFileReader reader = [this](const std::string& path) -> std::optional<std::string> {
+ShaderFileReader ShaderLibrary::reader() const {
+  return [this](const std::string& path) -> std::optional<std::string> {
     std::ifstream in(m_root / path, std::ios::binary);
     if (!in) return std::nullopt;
     std::ostringstream ss;
     ss << in.rdbuf();
     return ss.str();
   };
+}
+
+Program ShaderLibrary::build(const std::vector<std::string>& files, const std::vector<ShaderDefine>& defines,
+                             const std::vector<KernelInterface>& kernels) const {
   const std::string label = programLabel(files, defines);
   std::vector<Handle<Kind::Shader>> shaders;
+  std::string source;  // all stages' assembled text, for the kernel checks
   for (const std::string& file : files) {
     const GLenum stage = stageOf(file);
-    AssembledShader src = assembleShader(file, reader, defines);
+    AssembledShader src = assembleShader(file, reader(), defines);
+    source += src.text;
     Handle<Kind::Shader> shader(glCreateShader(stage));
     const char* text = src.text.c_str();
     glShaderSource(shader.get(), 1, &text, nullptr);
@@ -113,7 +120,9 @@ Program ShaderLibrary::build(const std::vector<std::string>& files, const std::v
   GLint ok = GL_FALSE;
   glGetProgramiv(program.get(), GL_LINK_STATUS, &ok);
   if (!ok) throw GlError("program '" + label + "' failed to link\n" + infoLog(program.get(), true));
-  return Program(std::move(program), label);
+  Program result(std::move(program), label);
+  for (const KernelInterface& kernel : kernels) checkKernel(result, source, kernel);
+  return result;
 }
 
 Program& ShaderLibrary::program(const std::vector<std::string>& files, const std::vector<ShaderDefine>& defines) {
@@ -122,15 +131,31 @@ Program& ShaderLibrary::program(const std::vector<std::string>& files, const std
   if (it != m_programs.end()) return *it->second.program;
   auto built = std::make_unique<Program>(build(files, defines));
   Program& ref = *built;
-  m_programs.emplace(key, Entry{files, defines, std::move(built)});
+  m_programs.emplace(key, Entry{files, defines, std::move(built), {}});
   return ref;
+}
+
+Program& ShaderLibrary::program(const std::vector<std::string>& files, const std::vector<ShaderDefine>& defines,
+                                const KernelInterface& kernel) {
+  const std::string key = programLabel(files, defines);
+  auto it = m_programs.find(key);
+  if (it == m_programs.end()) {
+    auto built = std::make_unique<Program>(build(files, defines, {kernel}));
+    it = m_programs.emplace(key, Entry{files, defines, std::move(built), {kernel}}).first;
+  } else if (std::find(it->second.kernels.begin(), it->second.kernels.end(), kernel) == it->second.kernels.end()) {
+    std::string source;
+    for (const std::string& file : files) source += assembleShader(file, reader(), defines).text;
+    checkKernel(*it->second.program, source, kernel);
+    it->second.kernels.push_back(kernel);
+  }
+  return *it->second.program;
 }
 
 ShaderLibrary::ReloadResult ShaderLibrary::reload() {
   ReloadResult result;
   for (auto& [key, entry] : m_programs) {
     try {
-      Program fresh = build(entry.files, entry.defines);
+      Program fresh = build(entry.files, entry.defines, entry.kernels);
       entry.program->swap(fresh);
       ++result.reloaded;
     } catch (const Error& e) {

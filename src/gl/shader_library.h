@@ -6,7 +6,8 @@
 //   gl::Program& scan = lib.program({"grid/scan.comp"}, {{"WG", "256"}});
 //
 // Programs live as long as the library, at a stable address; reload() recompiles all of them
-// and keeps the old GL program wherever the new one fails.
+// and keeps the old GL program wherever the new one fails. A program built for a gl::Kernel
+// (gl/kernel.h) carries its KernelInterface, checked at build and on every reload.
 #pragma once
 
 #include <filesystem>
@@ -16,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "gl/kernel_check.h"
 #include "gl/program.h"
 #include "gl/shader_source.h"
 
@@ -31,6 +33,9 @@ class ShaderLibrary {
   const std::filesystem::path& root() const { return m_root; }
 
   Program& program(const std::vector<std::string>& files, const std::vector<ShaderDefine>& defines = {});
+  // The same, checked against `kernel` now and on every reload (gl/kernel_check.h).
+  Program& program(const std::vector<std::string>& files, const std::vector<ShaderDefine>& defines,
+                   const KernelInterface& kernel);
 
   struct ReloadResult {
     int reloaded = 0;                 // programs rebuilt and swapped in
@@ -39,17 +44,22 @@ class ShaderLibrary {
   ReloadResult reload();
   std::size_t size() const { return m_programs.size(); }
 
-  // Compiles and links without caching (used by program() and reload(), and by tests).
-  Program build(const std::vector<std::string>& files, const std::vector<ShaderDefine>& defines) const;
+  // Compiles, links and checks against `kernels` without caching (used by program() and
+  // reload(), and by tests).
+  Program build(const std::vector<std::string>& files, const std::vector<ShaderDefine>& defines,
+                const std::vector<KernelInterface>& kernels = {}) const;
 
  private:
   struct Entry {
     std::vector<std::string> files;
     std::vector<ShaderDefine> defines;
     std::unique_ptr<Program> program;
+    std::vector<KernelInterface> kernels;  // checked on reload
   };
   std::filesystem::path m_root;
   std::map<std::string, Entry> m_programs;  // key: files + defines
+
+  ShaderFileReader reader() const;  // files under m_root
 };
 
 // Label used in messages: "grid/scan.comp [WG=256]".

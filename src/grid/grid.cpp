@@ -43,6 +43,11 @@ reference::GridShape shapeOf(const GridParams& p) {
 
 const char* halfDefine(const GridParams& p) { return p.layout == Layout::Half2 ? "1" : "0"; }
 
+// The reorder and rank passes' storage blocks: every binding of grid/bindings.glsl.
+constexpr std::initializer_list<GLuint> kReorderBindings = {
+    GRID_PARTICLE_CELL, GRID_INDEX_IN_CELL,   GRID_CELL_START,  GRID_PERMUTATION,
+    GRID_REORDER_SRC,   GRID_REORDER_SRC + 1, GRID_REORDER_DST, GRID_REORDER_DST + 1};
+
 void checkArray(const gl::Buffer* b, std::size_t bytes, const std::string& what) {
   if (!b || b->size() < bytes)
     throw Error("grid: " + what + " needs " + std::to_string(bytes) + " bytes, the buffer " +
@@ -56,7 +61,9 @@ UniformGrid::UniformGrid(gl::ShaderLibrary& shaders, const GridParams& params, s
       m_shaders(&shaders),
       m_maxBlockBytes(gl::storageBlockBytes()),
       m_ops(shaders),
-      m_countPass(&shaders.program({"grid/grid_count.comp"}, {{"HALF_POSITIONS", halfDefine(params)}})),
+      m_countPass(shaders, "grid/grid_count.comp",
+                  {GRID_CELL_COUNT, GRID_INDEX_IN_CELL, GRID_PARTICLE_CELL_OUT, GRID_POSITIONS},
+                  {{"HALF_POSITIONS", halfDefine(params)}}),
       m_scan(shaders) {
   const std::size_t startBytes = (cells() + 1) * kWord;
   if (startBytes > m_maxBlockBytes)
@@ -102,13 +109,9 @@ void UniformGrid::countParticles(const gl::Buffer& positions, std::size_t count)
     m_cellCount.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_CELL_COUNT);
     m_indexInCell.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_INDEX_IN_CELL);
     m_particleCell.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_PARTICLE_CELL_OUT);
-    m_countPass->use();
-    setUniforms(*m_countPass);
     for (const gl::Window& w : gl::windows(count, elementBytes())) {
       gl::bindWindow(positions, GRID_POSITIONS, w, elementBytes());
-      m_countPass->set("uFirst", uint32_t(w.first));
-      m_countPass->set("uCount", uint32_t(w.end()));
-      m_countPass->dispatchThreads(w.count);
+      m_countPass.dispatchThreads(w.count, {uniforms(), GLuint(w.first), GLuint(w.end())});
     }
   }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
@@ -142,19 +145,16 @@ void UniformGrid::reorder(const gl::Buffer& positions, std::span<const ReorderAr
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
-gl::Program& UniformGrid::reorderPass(std::size_t arrays, bool writePermutation) {
-  gl::Program*& program = m_reorderPass[arrays][writePermutation];
-  if (!program)
-    program = &m_shaders->program({"grid/grid_reorder.comp"}, {{"ARRAYS", std::to_string(arrays)},
-                                                               {"WRITE_PERMUTATION", writePermutation ? "1" : "0"},
-                                                               {"HALF_POSITIONS", halfDefine(m_params)}});
-  program->use();
-  setUniforms(*program);
-  program->set("uFirst", 0u);
-  program->set("uCount", uint32_t(m_count));
-  program->set("uDstFirst", 0u);
-  program->set("uDstCount", uint32_t(m_count));
-  return *program;
+const gl::Kernel<UniformGrid::ReorderUniforms>& UniformGrid::reorderPass(std::size_t arrays, bool writePermutation) {
+  gl::Kernel<ReorderUniforms>& kernel = m_reorderPass[arrays][writePermutation];
+  if (!kernel.built())
+    kernel = {*m_shaders,
+              "grid/grid_reorder.comp",
+              kReorderBindings,
+              {{"ARRAYS", std::to_string(arrays)},
+               {"WRITE_PERMUTATION", writePermutation ? "1" : "0"},
+               {"HALF_POSITIONS", halfDefine(m_params)}}};
+  return kernel;
 }
 
 // Binds the batch of up to GRID_REORDER_MAX_ARRAYS arrays starting at `first`; returns its size.
@@ -180,12 +180,8 @@ void UniformGrid::scatter(std::span<const ReorderArray> arrays, gl::Buffer* perm
     for (const gl::Window& src : windows)  // each slot lies in one destination window
       for (const gl::Window& dst : windows) {
         batch = bindBatch(arrays, first, src, dst);
-        gl::Program& program = reorderPass(batch, writePermutation);
-        program.set("uFirst", uint32_t(src.first));
-        program.set("uCount", uint32_t(src.end()));
-        program.set("uDstFirst", uint32_t(dst.first));
-        program.set("uDstCount", uint32_t(dst.count));
-        program.dispatchThreads(src.count);
+        reorderPass(batch, writePermutation)
+            .dispatchThreads(src.count, {GLuint(src.first), GLuint(src.end()), GLuint(dst.first), GLuint(dst.count)});
       }
     first += batch;
     writePermutation = false;
@@ -196,30 +192,30 @@ void UniformGrid::scatter(std::span<const ReorderArray> arrays, gl::Buffer* perm
 // each particle its rank among them, into indexInCell for the scatter.
 void UniformGrid::rankWithinCells() {
   writeMembers();
-  gl::Program& program = rankPass(0, false, false);
   m_members.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_MEMBERS);
-  program.dispatchThreads(m_count);
+  rank(0, false, false);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 // The members pass: the scatter of each particle's index into its cell, in atomic order.
 void UniformGrid::writeMembers() {
   if (m_members.size() < m_count * kWord) m_members = gl::Buffer(m_count * kWord);
   m_members.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_PERMUTATION);
-  reorderPass(0, true).dispatchThreads(m_count);
+  const GLuint n = GLuint(m_count);
+  reorderPass(0, true).dispatchThreads(m_count, {0u, n, 0u, n});
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
-gl::Program& UniformGrid::rankPass(std::size_t arrays, bool writePermutation, bool keepRank) {
-  gl::Program*& program = m_rankPass[arrays][writePermutation][keepRank];
-  if (!program)
-    program = &m_shaders->program({"grid/grid_rank.comp"}, {{"ARRAYS", std::to_string(arrays)},
-                                                            {"WRITE_PERMUTATION", writePermutation ? "1" : "0"},
-                                                            {"KEEP_RANK", keepRank ? "1" : "0"},
-                                                            {"HALF_POSITIONS", halfDefine(m_params)}});
-  program->use();
-  setUniforms(*program);
-  program->set("uCount", uint32_t(m_count));
-  return *program;
+void UniformGrid::rank(std::size_t arrays, bool writePermutation, bool keepRank) {
+  gl::Kernel<RankUniforms>& kernel = m_rankPass[arrays][writePermutation][keepRank];
+  if (!kernel.built())
+    kernel = {*m_shaders,
+              "grid/grid_rank.comp",
+              kReorderBindings,
+              {{"ARRAYS", std::to_string(arrays)},
+               {"WRITE_PERMUTATION", writePermutation ? "1" : "0"},
+               {"KEEP_RANK", keepRank ? "1" : "0"},
+               {"HALF_POSITIONS", halfDefine(m_params)}}};
+  kernel.dispatchThreads(m_count, {uniforms(), GLuint(m_count)});
 }
 
 // The stable scatter when the positions are the first array: the members pass, then one pass
@@ -230,10 +226,9 @@ void UniformGrid::rankAndScatter(std::span<const ReorderArray> arrays, gl::Buffe
   const gl::Window all{0, m_count};
   const std::size_t batch = bindBatch(arrays, 0, all, all);
   const bool more = batch < arrays.size();
-  gl::Program& program = rankPass(batch, permutation != nullptr, more);
   m_members.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_POSITIONS);
   if (permutation) permutation->bindBase(GL_SHADER_STORAGE_BUFFER, GRID_PERMUTATION);
-  program.dispatchThreads(m_count);
+  rank(batch, permutation != nullptr, more);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   if (!more) return;
   m_particleCell.bindBase(GL_SHADER_STORAGE_BUFFER, GRID_PARTICLE_CELL);

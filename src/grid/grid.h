@@ -52,7 +52,7 @@
 
 #include "gl/buffer.h"
 #include "gl/buffer_ops.h"
-#include "gl/shader_library.h"
+#include "gl/kernel.h"
 #include "gl/window.h"
 #include "grid/bindings.glsl"
 #include "grid/grid_reference.h"
@@ -72,6 +72,19 @@ struct GridParams {
   float cellSize = 0.1f;      // world units; at least the model's interaction radius
   Layout layout = Layout::Vec4;
   bool stable = true;  // order within a cell by particle index (see above)
+};
+
+// The cell math's uniforms (shaders/common/grid.glsl), a field of any kernel's uniform struct
+// that includes it: gl::field(&MyUniforms::grid).
+struct GridUniforms {
+  glm::vec3 origin{0.0f};    // uGridOrigin, world units
+  float invCellSize = 1.0f;  // uGridInvCellSize, 1 / world units
+  glm::uvec3 dims{1u};       // uGridDims
+  static constexpr auto fields() {
+    return std::tuple{gl::field("uGridOrigin", &GridUniforms::origin),
+                      gl::field("uGridInvCellSize", &GridUniforms::invCellSize),
+                      gl::field("uGridDims", &GridUniforms::dims)};
+  }
 };
 
 // One array to move by reorder(): src is read in particle order, dst written in cell order.
@@ -104,7 +117,8 @@ class UniformGrid {
     reorder(positions, std::span<const ReorderArray>(arrays.begin(), arrays.size()), permutation);
   }
 
-  void setUniforms(const gl::Program& program) const;        // uGridOrigin, uGridInvCellSize, uGridDims
+  GridUniforms uniforms() const { return {m_shape.origin, m_shape.invCellSize, m_shape.dims}; }
+  void setUniforms(const gl::Program& program) const;        // the same, set by name on an untyped program
   void setStable(bool stable) { m_params.stable = stable; }  // for the next reorder()
 
   const GridParams& params() const { return m_params; }
@@ -128,22 +142,46 @@ class UniformGrid {
   gl::ShaderLibrary* m_shaders;
   std::size_t m_maxBlockBytes;  // GL_MAX_SHADER_STORAGE_BLOCK_SIZE, queried once
   gl::BufferOps m_ops;          // the cellCount clear
-  gl::Program* m_countPass;
+  struct CountUniforms {
+    GridUniforms grid;
+    GLuint first = 0, count = 0;  // the window's particles: [first, count)
+    static constexpr auto fields() {
+      return std::tuple{gl::field(&CountUniforms::grid), gl::field("uFirst", &CountUniforms::first),
+                        gl::field("uCount", &CountUniforms::count)};
+    }
+  };
+  struct ReorderUniforms {
+    GLuint first = 0, count = 0;        // the source window's particles: [first, count)
+    GLuint dstFirst = 0, dstCount = 0;  // the destination window: dstCount slots from dstFirst
+    static constexpr auto fields() {
+      return std::tuple{gl::field("uFirst", &ReorderUniforms::first), gl::field("uCount", &ReorderUniforms::count),
+                        gl::field("uDstFirst", &ReorderUniforms::dstFirst),
+                        gl::field("uDstCount", &ReorderUniforms::dstCount)};
+    }
+  };
+  struct RankUniforms {
+    GridUniforms grid;
+    GLuint count = 0;  // particles
+    static constexpr auto fields() {
+      return std::tuple{gl::field(&RankUniforms::grid), gl::field("uCount", &RankUniforms::count)};
+    }
+  };
+  gl::Kernel<CountUniforms> m_countPass;
   // Stable grid (grid_rank.comp) [arrays it moves][writes permutation][keeps the rank], made on use.
-  gl::Program* m_rankPass[GRID_REORDER_MAX_ARRAYS + 1][2][2] = {};
-  gl::Program* m_reorderPass[GRID_REORDER_MAX_ARRAYS + 1][2] = {};  // [arrays][writes permutation], made on use
+  gl::Kernel<RankUniforms> m_rankPass[GRID_REORDER_MAX_ARRAYS + 1][2][2] = {};
+  gl::Kernel<ReorderUniforms> m_reorderPass[GRID_REORDER_MAX_ARRAYS + 1][2] = {};  // [arrays][writes permutation]
   PrefixScan m_scan;
   gl::Buffer m_cellCount, m_cellStart, m_indexInCell, m_particleCell;
   gl::Buffer m_members;  // stable grid: each cell's particles in atomic order, uint per particle
 
-  gl::Program& reorderPass(std::size_t arrays, bool writePermutation);
+  const gl::Kernel<ReorderUniforms>& reorderPass(std::size_t arrays, bool writePermutation);
   std::size_t bindBatch(std::span<const ReorderArray> arrays, std::size_t first, const gl::Window& src,
                         const gl::Window& dst) const;
   void scatter(std::span<const ReorderArray> arrays, gl::Buffer* permutation, std::size_t first = 0);
   // Stable grid: the rank by index (see above) into indexInCell.
   void rankWithinCells();
   void writeMembers();
-  gl::Program& rankPass(std::size_t arrays, bool writePermutation, bool keepRank);  // in use, uniforms set
+  void rank(std::size_t arrays, bool writePermutation, bool keepRank);  // the rank pass over all particles
   // Stable scatter with the positions as arrays[0]: the rank pass moves the first batch itself.
   void rankAndScatter(std::span<const ReorderArray> arrays, gl::Buffer* permutation);
   std::size_t m_count = 0;

@@ -10,6 +10,10 @@ namespace tidepool::grid {
 namespace {
 constexpr std::size_t kWord = sizeof(uint32_t);
 
+// Every binding of scan_io.glsl and scan_block.comp.
+constexpr std::initializer_list<GLuint> kScanBindings = {SCAN_IN_VEC,   SCAN_IN_WORD,    SCAN_OUT_VEC,
+                                                         SCAN_OUT_WORD, SCAN_BLOCK_SUMS, SCAN_BLOCK_SUMS_VEC};
+
 std::vector<gl::ShaderDefine> scanDefines(const PrefixScan::Config& c) {
   const std::size_t g = c.groupSize, v = c.vecsPerThread;
   if (g < 32 || g > 1024 || (g & (g - 1)) || v < 1 || v > 16)
@@ -44,8 +48,8 @@ void checkSizes(const char* what, const gl::Buffer& in, const gl::Buffer& out, s
 PrefixScan::PrefixScan(gl::ShaderLibrary& shaders, Config config)
     : m_config(config),
       m_maxBlockBytes(gl::storageBlockBytes()),
-      m_reduce(&shaders.program({"grid/scan_reduce.comp"}, scanDefines(config))),
-      m_block(&shaders.program({"grid/scan_block.comp"}, scanDefines(config))) {}
+      m_reduce(shaders, "grid/scan_reduce.comp", kScanBindings, scanDefines(config)),
+      m_block(shaders, "grid/scan_block.comp", kScanBindings, scanDefines(config)) {}
 
 std::size_t PrefixScan::blocksOf(std::size_t n) const {
   return std::max<std::size_t>(1, (n + m_config.block() - 1) / m_config.block());
@@ -92,24 +96,21 @@ void PrefixScan::scanLevel(const gl::Buffer& in, gl::Buffer& out, std::size_t n,
     (sums ? *sums : dst).bindBase(GL_SHADER_STORAGE_BUFFER, SCAN_BLOCK_SUMS);  // unused at the top
     (sums ? *sums : dst).bindBase(GL_SHADER_STORAGE_BUFFER, SCAN_BLOCK_SUMS_VEC);
   };
-  auto dispatch = [&](gl::Program& program) {
-    program.use();
-    program.set("uCount", uint32_t(n));
-    program.dispatchThreads(blocks * m_config.groupSize);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  };
+  const std::size_t threads = blocks * m_config.groupSize;
   if (sums) {
     bind(in, out);
-    dispatch(*m_reduce);
+    m_reduce.dispatchThreads(threads, {GLuint(n)});
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     if (!fused) scanLevel(*sums, *sums, blocks, level + 1);  // block sums -> block offsets, in place
   }
   bind(in, out);  // again: the recursion rebinds the same points
-  m_block->set("uOffsets", fused ? 2u : sums ? 1u : 0u);
-  dispatch(*m_block);
+  m_block.dispatchThreads(threads, {GLuint(n), fused ? 2u : sums ? 1u : 0u});
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
 NaiveScan::NaiveScan(gl::ShaderLibrary& shaders)
-    : m_maxBlockBytes(gl::storageBlockBytes()), m_pass(&shaders.program({"grid/scan_naive.comp"})) {}
+    : m_maxBlockBytes(gl::storageBlockBytes()),
+      m_pass(shaders, "grid/scan_naive.comp", {SCAN_NAIVE_IN, SCAN_NAIVE_OUT}) {}
 
 std::size_t NaiveScan::passesFor(std::size_t n) {
   std::size_t passes = 0;
@@ -126,17 +127,13 @@ void NaiveScan::run(const gl::Buffer& in, gl::Buffer& out, std::size_t n) {
   if (in.id() == out.id()) throw Error("naive scan: input and output must be different buffers");
   reserve(n);
   const std::size_t passes = passesFor(n);
-  m_pass->use();
-  m_pass->set("uCount", uint32_t(n));
   const gl::Buffer* src = &in;
   for (std::size_t p = 0; p < passes; ++p) {
     // Ping-pong so that the last pass lands in `out`.
     const gl::Buffer* dst = (passes - 1 - p) % 2 == 0 ? &out : &m_temp;
     src->bindBase(GL_SHADER_STORAGE_BUFFER, SCAN_NAIVE_IN);
     dst->bindBase(GL_SHADER_STORAGE_BUFFER, SCAN_NAIVE_OUT);
-    m_pass->set("uStride", uint32_t(1) << p);
-    m_pass->set("uShift", p == 0 ? 1u : 0u);
-    m_pass->dispatchThreads(n + 1);
+    m_pass.dispatchThreads(n + 1, {GLuint(n), GLuint(1) << p, p == 0 ? 1u : 0u});
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     src = dst;
   }

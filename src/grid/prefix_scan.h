@@ -42,7 +42,7 @@
 #include <vector>
 
 #include "gl/buffer.h"
-#include "gl/shader_library.h"
+#include "gl/kernel.h"
 
 namespace tidepool::grid {
 
@@ -80,8 +80,19 @@ class PrefixScan {
 
   Config m_config;
   std::size_t m_maxBlockBytes;  // queried once: glGet may sync a threaded driver
-  gl::Program* m_reduce;
-  gl::Program* m_block;
+  struct ReduceUniforms {
+    GLuint count = 0;  // elements at this level
+    static constexpr auto fields() { return std::tuple{gl::field("uCount", &ReduceUniforms::count)}; }
+  };
+  struct BlockUniforms {
+    GLuint count = 0;    // elements at this level
+    GLuint offsets = 0;  // 0: none, 1: the scanned block sums, 2: sums of the block sums (fused)
+    static constexpr auto fields() {
+      return std::tuple{gl::field("uCount", &BlockUniforms::count), gl::field("uOffsets", &BlockUniforms::offsets)};
+    }
+  };
+  gl::Kernel<ReduceUniforms> m_reduce;
+  gl::Kernel<BlockUniforms> m_block;
   std::vector<gl::Buffer> m_sums;  // m_sums[L]: block sums of level L (+1 entry for their total)
 };
 
@@ -97,7 +108,16 @@ class NaiveScan {
 
  private:
   std::size_t m_maxBlockBytes;
-  gl::Program* m_pass;
+  struct PassUniforms {
+    GLuint count = 0;   // elements of the input
+    GLuint stride = 0;  // 2^pass
+    GLuint shift = 0;   // 1 on the first pass
+    static constexpr auto fields() {
+      return std::tuple{gl::field("uCount", &PassUniforms::count), gl::field("uStride", &PassUniforms::stride),
+                        gl::field("uShift", &PassUniforms::shift)};
+    }
+  };
+  gl::Kernel<PassUniforms> m_pass;
   gl::Buffer m_temp;
 };
 

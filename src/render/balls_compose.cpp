@@ -1,5 +1,9 @@
 #include "render/balls_compose.h"
 
+#include <algorithm>
+#include <array>
+
+#include "gl/kernel.h"
 #include "render/balls/bindings.glsl"
 
 namespace tidepool {
@@ -15,6 +19,63 @@ bool clipTo(glm::vec4& a, glm::vec4& b, Plane f) {
   if (fb < 0.0f) b = glm::mix(b, a, fb / (fb - fa));
   return true;
 }
+
+constexpr std::size_t kMaxLinePoints = 24;  // uLines[24]: a box's 12 edges
+
+struct ComposeUniforms {  // see render/balls/compose.comp
+  glm::ivec2 size{0};
+  GLint balls = 0, scene = 0;
+  glm::ivec2 sceneMin{0}, sceneMax{0};
+  std::array<glm::vec4, kMaxLinePoints> lines{};
+  GLint lineCount = 0;
+  glm::vec3 lineColor{0.7f, 0.72f, 0.75f};
+  glm::mat4 invView{1.0f};
+  glm::vec2 invFocal{1.0f};
+  GLint ortho = 0;
+  glm::vec2 depthRange{0.0f};
+  GLint mode = 0, debug = 0;
+  glm::vec3 waterColor{0.0f};
+  float absorption = 0.0f;
+  glm::vec3 background{0.0f};
+  float f0 = 0.0f, specular = 0.0f;
+  GLint foamOn = 0;
+  float thicknessScale = 0.0f;
+  glm::vec3 lightView{0.0f};
+  float depthStep = 0.0f;
+  GLint gbuffer = BALLS_VIEW_GBUFFER, foam = BALLS_VIEW_FOAM, depth = BALLS_VIEW_DEPTH;  // texture units
+  GLint sceneDepth = BALLS_VIEW_SCENE_DEPTH, target = BALLS_VIEW_COMPOSE_TARGET;         // texture, image unit
+  static constexpr auto fields() {
+    using U = ComposeUniforms;
+    return std::tuple{gl::field("uSize", &U::size),
+                      gl::field("uBalls", &U::balls),
+                      gl::field("uScene", &U::scene),
+                      gl::field("uSceneMin", &U::sceneMin),
+                      gl::field("uSceneMax", &U::sceneMax),
+                      gl::field("uLines", &U::lines),
+                      gl::field("uLineCount", &U::lineCount),
+                      gl::field("uLineColor", &U::lineColor),
+                      gl::field("uInvView", &U::invView),
+                      gl::field("uInvFocal", &U::invFocal),
+                      gl::field("uOrtho", &U::ortho),
+                      gl::field("uDepthRange", &U::depthRange),
+                      gl::field("uMode", &U::mode),
+                      gl::field("uDebug", &U::debug),
+                      gl::field("uWaterColor", &U::waterColor),
+                      gl::field("uAbsorption", &U::absorption),
+                      gl::field("uBackground", &U::background),
+                      gl::field("uF0", &U::f0),
+                      gl::field("uSpecular", &U::specular),
+                      gl::field("uFoamOn", &U::foamOn),
+                      gl::field("uThicknessScale", &U::thicknessScale),
+                      gl::field("uLightView", &U::lightView),
+                      gl::field("uDepthStep", &U::depthStep),
+                      gl::field("uGBuffer", &U::gbuffer),
+                      gl::field("uFoam", &U::foam),
+                      gl::field("uDepth", &U::depth),
+                      gl::field("uSceneDepth", &U::sceneDepth),
+                      gl::field("uTarget", &U::target)};
+  }
+};
 
 }  // namespace
 
@@ -41,8 +102,7 @@ std::vector<glm::vec4> boxEdgesInWindow(glm::vec3 lo, glm::vec3 hi, const glm::m
 
 void BallsCompose::draw(const gl::Texture2D* surface, const BallsGBuffer& gbuffer, const BallsViewParams& look,
                         const BallsCamera& camera, float radius, const ComposeScene& scene, RenderTarget& target) {
-  gl::Program& program = m_shaders.program({"render/balls/compose.comp"});
-  program.use();
+  const gl::Kernel<ComposeUniforms> compose(m_shaders, "render/balls/compose.comp", {});
   if (surface) {
     surface->bind(BALLS_VIEW_GBUFFER);
     gbuffer.foam().bind(BALLS_VIEW_FOAM);
@@ -54,30 +114,29 @@ void BallsCompose::draw(const gl::Texture2D* surface, const BallsGBuffer& gbuffe
       scene.box ? boxEdgesInWindow(scene.boxMin, scene.boxMax, camera.proj * camera.view * scene.boxModel,
                                    {camera.width, camera.height})
                 : std::vector<glm::vec4>{};
-  if (!lines.empty()) glUniform4fv(program.uniform("uLines"), GLsizei(lines.size()), &lines[0].x);
-  program.set("uLineCount", int(lines.size() / 2));
-  program.set("uLineColor", glm::vec3(0.7f, 0.72f, 0.75f));
-  program.set("uSize", glm::ivec2(camera.width, camera.height));
-  program.set("uBalls", surface ? 1 : 0);
-  program.set("uScene", scene.drawn ? 1 : 0);
-  program.set("uSceneMin", scene.rect.min);
-  program.set("uSceneMax", scene.rect.max);
-  program.set("uInvView", glm::inverse(camera.view));
-  program.set("uInvFocal", glm::vec2(1.0f / camera.proj[0][0], 1.0f / camera.proj[1][1]));
-  program.set("uOrtho", camera.isOrthographic() ? 1 : 0);
-  program.set("uDepthRange", glm::vec2(camera.near, camera.far));
-  program.set("uMode", int(look.mode));
-  program.set("uDebug", int(look.debug));
-  program.set("uWaterColor", look.waterColor);
-  program.set("uAbsorption", look.absorption);
-  program.set("uBackground", look.background);
-  program.set("uF0", look.fresnelF0);
-  program.set("uSpecular", look.specular);
-  program.set("uFoamOn", look.foam ? 1 : 0);
-  program.set("uThicknessScale", 40.0f * radius);  // ~20 balls deep shows white
-  program.set("uDepthStep", look.depthThreshold * radius);
-  program.set("uLightView", camera.towardsLight(look.lightDirection));
-  program.dispatch({unsigned(camera.width + 15) / 16, unsigned(camera.height + 15) / 16, 1u});
+  ComposeUniforms u{.size = {camera.width, camera.height},
+                    .balls = surface ? 1 : 0,
+                    .scene = scene.drawn ? 1 : 0,
+                    .sceneMin = scene.rect.min,
+                    .sceneMax = scene.rect.max,
+                    .lineCount = int(std::min(lines.size(), kMaxLinePoints) / 2),
+                    .invView = glm::inverse(camera.view),
+                    .invFocal = glm::vec2(1.0f / camera.proj[0][0], 1.0f / camera.proj[1][1]),
+                    .ortho = camera.isOrthographic() ? 1 : 0,
+                    .depthRange = glm::vec2(camera.near, camera.far),
+                    .mode = int(look.mode),
+                    .debug = int(look.debug),
+                    .waterColor = look.waterColor,
+                    .absorption = look.absorption,
+                    .background = look.background,
+                    .f0 = look.fresnelF0,
+                    .specular = look.specular,
+                    .foamOn = look.foam ? 1 : 0,
+                    .thicknessScale = 40.0f * radius,  // ~20 balls deep shows white
+                    .lightView = camera.towardsLight(look.lightDirection),
+                    .depthStep = look.depthThreshold * radius};
+  std::copy_n(lines.begin(), std::min(lines.size(), kMaxLinePoints), u.lines.begin());
+  compose.dispatch({unsigned(camera.width + 15) / 16, unsigned(camera.height + 15) / 16, 1u}, u);
   // Readers of the image: read-backs, the window's blit, texture fetches; the next frame's
   // raster clear and draws.
   glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |

@@ -1,8 +1,17 @@
 #include "render/balls_grid_cells.h"
 
+#include "gl/kernel.h"
 #include "render/balls/bindings.glsl"
 
 namespace tidepool {
+namespace {
+struct CellsUniforms {
+  GLuint cells = 0;  // of the grid
+  static constexpr auto fields() { return std::tuple{gl::field("uCells", &CellsUniforms::cells)}; }
+};
+constexpr std::initializer_list<GLuint> kCellsBindings = {BALLS_VIEW_CELL_COUNT, BALLS_VIEW_CELL_SCAN,
+                                                          BALLS_VIEW_CELL_LIST};
+}  // namespace
 
 BallsGridCells::BallsGridCells(gl::ShaderLibrary& shaders) : m_shaders(shaders), m_scan(shaders) {}
 
@@ -10,20 +19,16 @@ void BallsGridCells::compact(const grid::UniformGrid& grid) {
   const std::size_t cells = grid.cells();
   if (m_flags.size() < (cells + 1) * 4) m_flags.resize((cells + 1) * 4);
   if (m_list.size() < (kHeaderUints + cells) * 4) m_list.resize((kHeaderUints + cells) * 4);
-  gl::Program& flag = m_shaders.program({"render/balls/grid_cells_flag.comp"});
-  flag.use();
-  flag.set("uCells", unsigned(cells));
+  const gl::Kernel<CellsUniforms> flag(m_shaders, "render/balls/grid_cells_flag.comp", kCellsBindings);
+  const gl::Kernel<CellsUniforms> compactPass(m_shaders, "render/balls/grid_cells_compact.comp", kCellsBindings);
   grid.cellCount().bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VIEW_CELL_COUNT);
   m_flags.bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VIEW_CELL_SCAN);
-  flag.dispatchThreads(cells);
+  flag.dispatchThreads(cells, {GLuint(cells)});
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   m_scan.run(m_flags, m_flags, cells);  // ends with its own storage barrier
-  gl::Program& compactPass = m_shaders.program({"render/balls/grid_cells_compact.comp"});
-  compactPass.use();
-  compactPass.set("uCells", unsigned(cells));
   m_flags.bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VIEW_CELL_SCAN);
   m_list.bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VIEW_CELL_LIST);
-  compactPass.dispatchThreads(cells);
+  compactPass.dispatchThreads(cells, {GLuint(cells)});
   // The draw reads the command (indirect) and the ids (vertex shader storage).
   glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
 }

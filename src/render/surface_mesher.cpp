@@ -14,6 +14,10 @@ namespace tidepool {
 namespace {
 
 constexpr std::size_t kWord = sizeof(std::uint32_t);
+// Every kernel's storage blocks (the case table is a uniform block).
+constexpr std::initializer_list<GLuint> kSurfaceBindings = {SURFACE_POSITIONS,  SURFACE_DENSITY,  SURFACE_TRI_COUNT,
+                                                            SURFACE_VERT_COUNT, SURFACE_VERTICES, SURFACE_NORMALS,
+                                                            SURFACE_TRIANGLES};
 
 std::string megabytes(double bytes) {
   char text[32];
@@ -71,21 +75,13 @@ SurfaceGrid surfaceGrid(const SurfaceInput& in, const SurfaceParams& p, std::siz
 SurfaceMesher::SurfaceMesher(gl::ShaderLibrary& shaders)
     : m_ops(shaders),
       m_scan(shaders),
-      m_splat(&shaders.program({"surface/splat.comp"})),
-      m_classify(&shaders.program({"surface/classify.comp"})),
-      m_emitVertices(&shaders.program({"surface/emit_vertices.comp"})),
-      m_emitTriangles(&shaders.program({"surface/emit_triangles.comp"})),
+      m_splat(shaders, "surface/splat.comp", kSurfaceBindings),
+      m_classify(shaders, "surface/classify.comp", kSurfaceBindings),
+      m_emitVertices(shaders, "surface/emit_vertices.comp", kSurfaceBindings),
+      m_emitTriangles(shaders, "surface/emit_triangles.comp", kSurfaceBindings),
       m_maxArrayBytes(gl::storageBlockBytes()) {
   const std::vector<glm::uvec4> cases = mc::packedCaseTable();
   m_cases = gl::Buffer(std::span<const glm::uvec4>(cases), GL_STATIC_DRAW);
-}
-
-void SurfaceMesher::setGrid(gl::Program& program) const {
-  program.use();
-  program.set("uOrigin", m_grid.origin);
-  program.set("uCell", m_grid.cell);
-  program.set("uCorners", m_grid.corners);
-  program.set("uIso", m_iso);
 }
 
 void SurfaceMesher::grow(gl::Buffer& buffer, std::size_t bytes) {
@@ -109,27 +105,23 @@ SurfaceMesher::Counts SurfaceMesher::build(const SurfaceInput& in, const Surface
     auto s = scope("surface.splat");
     m_ops.fill(m_density, 0, n * kWord);
     if (in.count > 0) {
-      setGrid(*m_splat);
-      m_splat->set("uReach", m_grid.h / m_grid.cell);
-      m_splat->set("uInvH2", 1.0f / (m_grid.h * m_grid.h));
-      m_splat->set("uWeightOne", m_grid.weightOne);
+      SplatUniforms u{cube(), 0, m_grid.h / m_grid.cell, 1.0f / (m_grid.h * m_grid.h), m_grid.weightOne};
       m_density.bindBase(GL_SHADER_STORAGE_BUFFER, SURFACE_DENSITY);
       for (const gl::Window& w : gl::windows(in.count, sizeof(glm::vec4))) {  // positions over one block: windows
         gl::bindWindow(*in.positions, SURFACE_POSITIONS, w, sizeof(glm::vec4));
-        m_splat->set("uCount", unsigned(w.count));
-        m_splat->dispatchThreads(w.count);
+        u.count = GLuint(w.count);
+        m_splat.dispatchThreads(w.count, u);
       }
       glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     }
   }
   {
     auto s = scope("surface.classify");
-    setGrid(*m_classify);
     m_density.bindBase(GL_SHADER_STORAGE_BUFFER, SURFACE_DENSITY);
     m_triStart.bindBase(GL_SHADER_STORAGE_BUFFER, SURFACE_TRI_COUNT);
     m_vertStart.bindBase(GL_SHADER_STORAGE_BUFFER, SURFACE_VERT_COUNT);
     m_cases.bindBase(GL_UNIFORM_BUFFER, SURFACE_CASES);
-    m_classify->dispatchThreads(n);
+    m_classify.dispatchThreads(n, cube());
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   }
   {
@@ -157,19 +149,17 @@ SurfaceMesher::Counts SurfaceMesher::build(const SurfaceInput& in, const Surface
     // Every binding again: the scan has bound its own buffers over ours.
     m_density.bindBase(GL_SHADER_STORAGE_BUFFER, SURFACE_DENSITY);
     if (m_counts.vertices > 0) {
-      setGrid(*m_emitVertices);
       m_vertStart.bindBase(GL_SHADER_STORAGE_BUFFER, SURFACE_VERT_COUNT);
       m_vertices.bindBase(GL_SHADER_STORAGE_BUFFER, SURFACE_VERTICES);
       m_normals.bindBase(GL_SHADER_STORAGE_BUFFER, SURFACE_NORMALS);
-      m_emitVertices->dispatchThreads(n);
+      m_emitVertices.dispatchThreads(n, cube());
     }
     if (m_counts.triangles > 0) {
-      setGrid(*m_emitTriangles);
       m_triStart.bindBase(GL_SHADER_STORAGE_BUFFER, SURFACE_TRI_COUNT);
       m_vertStart.bindBase(GL_SHADER_STORAGE_BUFFER, SURFACE_VERT_COUNT);
       m_triangles.bindBase(GL_SHADER_STORAGE_BUFFER, SURFACE_TRIANGLES);
       m_cases.bindBase(GL_UNIFORM_BUFFER, SURFACE_CASES);
-      m_emitTriangles->dispatchThreads(n);
+      m_emitTriangles.dispatchThreads(n, cube());
     }
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   }

@@ -26,7 +26,7 @@
 #include "gl/buffer.h"
 #include "gl/buffer_ops.h"
 #include "gl/gpu_profiler.h"
-#include "gl/shader_library.h"
+#include "gl/kernel.h"
 #include "grid/prefix_scan.h"
 #include "render/export_source.h"
 
@@ -90,15 +90,36 @@ class SurfaceMesher {
   std::size_t memoryBytes() const;                             // every buffer it holds
 
  private:
-  void setGrid(gl::Program& program) const;
+  struct CubeUniforms {      // surface/cube.glsl, read by every kernel
+    glm::vec3 origin{0.0f};  // corner (0, 0, 0), m
+    float cell = 0.0f;       // m
+    glm::uvec3 corners{0u};  // per axis
+    float iso = 0.5f;        // the surface's level of normalised density
+    static constexpr auto fields() {
+      using U = CubeUniforms;
+      return std::tuple{gl::field("uOrigin", &U::origin), gl::field("uCell", &U::cell),
+                        gl::field("uCorners", &U::corners), gl::field("uIso", &U::iso)};
+    }
+  };
+  struct SplatUniforms {
+    CubeUniforms cube;
+    GLuint count = 0;        // particles
+    float reach = 0.0f;      // h / cell
+    float invH2 = 0.0f;      // 1 / h², 1/m²
+    float weightOne = 0.0f;  // fixed-point units of a kernel peak
+    static constexpr auto fields() {
+      using U = SplatUniforms;
+      return std::tuple{gl::field(&U::cube), gl::field("uCount", &U::count), gl::field("uReach", &U::reach),
+                        gl::field("uInvH2", &U::invH2), gl::field("uWeightOne", &U::weightOne)};
+    }
+  };
+  CubeUniforms cube() const { return {m_grid.origin, m_grid.cell, m_grid.corners, m_iso}; }
   void grow(gl::Buffer& buffer, std::size_t bytes);
 
   gl::BufferOps m_ops;
   grid::PrefixScan m_scan;
-  gl::Program* m_splat;
-  gl::Program* m_classify;
-  gl::Program* m_emitVertices;
-  gl::Program* m_emitTriangles;
+  gl::Kernel<SplatUniforms> m_splat;
+  gl::Kernel<CubeUniforms> m_classify, m_emitVertices, m_emitTriangles;
   std::size_t m_maxArrayBytes;
   gl::Buffer m_cases;  // uniform block: mc::packedCaseTable()
   gl::Buffer m_density, m_triStart, m_vertStart, m_vertices, m_normals, m_triangles, m_totals;

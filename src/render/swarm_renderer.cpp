@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "gl/kernel.h"
 #include "render/swarm/bindings.glsl"
 #include "swarm/bindings.glsl"
 
@@ -13,6 +14,22 @@ std::vector<gl::ShaderDefine> storageDefine(const sim::Swarm& swarm) {
   return {{"STORAGE_FP16", swarm.storage() == sim::Storage::Fp16 ? "1" : "0"}};
 }
 
+struct ColorUniforms {
+  GLuint count = 0;
+  GLint image = SWARM_IMAGE_UNIT;  // texture unit
+  static constexpr auto fields() {
+    return std::tuple{gl::field("uCount", &ColorUniforms::count), gl::field("uImage", &ColorUniforms::image)};
+  }
+};
+struct SplatUniforms {
+  GLuint count = 0;
+  glm::ivec2 size{0};   // target pixels
+  GLint colorMode = 0;  // 0: single colour, 1: per-particle colour, 2: velocity hue
+  static constexpr auto fields() {
+    return std::tuple{gl::field("uCount", &SplatUniforms::count), gl::field("uSize", &SplatUniforms::size),
+                      gl::field("uColorMode", &SplatUniforms::colorMode)};
+  }
+};
 }  // namespace
 
 void visit(ParamVisitor& v, SwarmViewParams& p) {
@@ -51,13 +68,12 @@ void SwarmRenderer::colorFromImage(const sim::Swarm& swarm, const io::Image& ima
   texture.setWrap(GL_CLAMP_TO_EDGE);
   if (!m_colors || m_colors.size() != swarm.count() * 4) m_colors = gl::Buffer(swarm.count() * 4);
   m_colorCount = swarm.count();
-  gl::Program& p = m_shaders.program({"render/swarm/color_image.comp"}, storageDefine(swarm));
-  p.use();
-  p.set("uCount", unsigned(swarm.count()));
+  const gl::Kernel<ColorUniforms> colorPass(m_shaders, "render/swarm/color_image.comp",
+                                            {SWARM_STATE_BINDING, SWARM_COLOR_BINDING}, storageDefine(swarm));
   swarm.state().bindBase(GL_SHADER_STORAGE_BUFFER, SWARM_STATE_BINDING);
   m_colors.bindBase(GL_SHADER_STORAGE_BUFFER, SWARM_COLOR_BINDING);
   texture.bind(SWARM_IMAGE_UNIT);
-  p.dispatchThreads(swarm.count());
+  colorPass.dispatchThreads(swarm.count(), {GLuint(swarm.count())});
   glMemoryBarrier(GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
@@ -124,16 +140,14 @@ void SwarmRenderer::splatPoints(const sim::Swarm& swarm, const SwarmViewParams& 
     auto scope = profiler.scope("swarm.splat");
     if (m_splat.size() != bytes) m_splat = gl::Buffer(bytes);
     m_ops.fill(m_splat, 0);
-    gl::Program& p = m_shaders.program({"render/swarm/splat.comp"}, storageDefine(swarm));
-    p.use();
-    p.set("uCount", unsigned(swarm.count()));
-    p.set("uSize", size);
-    p.set("uColorMode", colorMode);
+    const gl::Kernel<SplatUniforms> splat(m_shaders, "render/swarm/splat.comp",
+                                          {SWARM_STATE_BINDING, SWARM_COLOR_BINDING, SWARM_SPLAT_BINDING},
+                                          storageDefine(swarm));
     swarm.state().bindBase(GL_SHADER_STORAGE_BUFFER, SWARM_STATE_BINDING);
     if (perParticle) m_colors.bindBase(GL_SHADER_STORAGE_BUFFER, SWARM_COLOR_BINDING);
     m_splat.bindBase(GL_SHADER_STORAGE_BUFFER, SWARM_SPLAT_BINDING);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);  // the clear before the atomics
-    p.dispatchThreads(swarm.count());
+    splat.dispatchThreads(swarm.count(), {GLuint(swarm.count()), size, colorMode});
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   }
   auto scope = profiler.scope("swarm.resolve");

@@ -14,6 +14,33 @@ namespace {
 constexpr std::size_t kMaxDispatchGroupsSpill = 65536;                 // dispatchThreads may round groups up by a row
 constexpr std::size_t kMaxCheckpointParticles = std::size_t(4) << 20;  // larger runs keep no copy to go back to
 constexpr double kCellsPerStepBound = 10;  // the watch's speed bound, in grid cells per step
+
+struct ForceUniforms {
+  grid::GridUniforms grid;
+  PairUniforms pair;
+  static constexpr auto fields() {
+    return std::tuple{gl::field(&ForceUniforms::grid), gl::field(&ForceUniforms::pair)};
+  }
+};
+struct IntegrateUniforms {
+  glm::vec2 boxSize{0.0f};       // world units
+  GLuint count = 0;              // particles
+  float dt = 0.0f;               // s
+  float damping = 1.0f;          // exp(-friction·dt)
+  glm::vec2 pushPoint{0.0f};     // world units
+  glm::vec2 pushVelocity{0.0f};  // world units / s at the brush centre (0: no brush)
+  float pushRadius = 0.0f;       // world units
+  static constexpr auto fields() {
+    using U = IntegrateUniforms;
+    return std::tuple{gl::field("uBoxSize", &U::boxSize),
+                      gl::field("uCount", &U::count),
+                      gl::field("uDt", &U::dt),
+                      gl::field("uDamping", &U::damping),
+                      gl::field("uPushPoint", &U::pushPoint),
+                      gl::field("uPushVelocity", &U::pushVelocity),
+                      gl::field("uPushRadius", &U::pushRadius)};
+  }
+};
 }  // namespace
 
 Life::Life(gl::ShaderLibrary& shaders, const Rules& rules, const Params& params)
@@ -197,41 +224,40 @@ void Life::sortByCell() {
 
 void Life::evaluateForces() { forcePass(false); }
 
+PairUniforms Life::pairUniforms() const {
+  return {m_rules.size, GLuint(m_count), GLuint(m_rules.speciesCount()), m_rules.centralForce};
+}
+
 void Life::forcePass(bool countPairs) {
   std::vector<gl::ShaderDefine> d = defines();
   if (countPairs) d.push_back({"COUNT_PAIRS", "1"});
-  gl::Program& p = m_shaders.program({"life/forces.comp"}, d);
-  p.use();
-  m_grid->setUniforms(p);
-  p.set("uBoxSize", m_rules.size);
-  p.set("uCount", GLuint(m_count));
-  p.set("uSpecies", GLuint(m_rules.speciesCount()));
-  p.set("uCentralForce", m_rules.centralForce);
+  const gl::Kernel<ForceUniforms> forces(
+      m_shaders, "life/forces.comp",
+      {LIFE_POSITIONS, LIFE_ACCELERATIONS, LIFE_FORCE_TABLE, LIFE_CELL_START, LIFE_GROUP_PAIRS}, d);
   m_pos[m_current].bindBase(GL_SHADER_STORAGE_BUFFER, LIFE_POSITIONS);
   m_accel.bindBase(GL_SHADER_STORAGE_BUFFER, LIFE_ACCELERATIONS);
   m_table.bindBase(GL_SHADER_STORAGE_BUFFER, LIFE_FORCE_TABLE);
   m_grid->cellStart().bindBase(GL_SHADER_STORAGE_BUFFER, LIFE_CELL_START);
   if (countPairs) m_groupPairs.bindBase(GL_SHADER_STORAGE_BUFFER, LIFE_GROUP_PAIRS);
-  p.dispatchThreads(m_count);
+  forces.dispatchThreads(m_count, {m_grid->uniforms(), pairUniforms()});
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
 void Life::integrate(const char* variant, float dt) {
   std::vector<gl::ShaderDefine> d = defines();
   if (*variant) d.push_back({variant, "1"});
-  gl::Program& p = m_shaders.program({"life/integrate.comp"}, d);
-  p.use();
-  p.set("uBoxSize", m_rules.size);
-  p.set("uCount", GLuint(m_count));
-  p.set("uDt", dt);
-  p.set("uDamping", float(std::exp(-double(m_rules.friction) * dt)));
-  p.set("uPushPoint", m_pushPoint);
-  p.set("uPushVelocity", m_pushVelocity);
-  p.set("uPushRadius", m_pushRadius);
+  const gl::Kernel<IntegrateUniforms> pass(m_shaders, "life/integrate.comp",
+                                           {LIFE_POSITIONS, LIFE_VELOCITIES, LIFE_ACCELERATIONS}, d);
   m_pos[m_current].bindBase(GL_SHADER_STORAGE_BUFFER, LIFE_POSITIONS);
   m_vel[m_current].bindBase(GL_SHADER_STORAGE_BUFFER, LIFE_VELOCITIES);
   m_accel.bindBase(GL_SHADER_STORAGE_BUFFER, LIFE_ACCELERATIONS);
-  p.dispatchThreads(m_count);
+  pass.dispatchThreads(m_count, {.boxSize = m_rules.size,
+                                 .count = GLuint(m_count),
+                                 .dt = dt,
+                                 .damping = float(std::exp(-double(m_rules.friction) * dt)),
+                                 .pushPoint = m_pushPoint,
+                                 .pushVelocity = m_pushVelocity,
+                                 .pushRadius = m_pushRadius});
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
 }
 

@@ -23,13 +23,26 @@
 
 #include "gl/buffer.h"
 #include "gl/gpu_profiler.h"
-#include "gl/shader_library.h"
+#include "gl/kernel.h"
 #include "grid/grid.h"
 #include "sim/life/life_params.h"
 #include "sim/life/life_rules.h"
 #include "sim/model.h"
 
 namespace tidepool::life {
+
+// The uniforms of life/forces_brute.comp; life/forces.comp adds the grid's.
+struct PairUniforms {
+  glm::vec2 boxSize{0.0f};    // uBoxSize, world units
+  GLuint count = 0;           // particles
+  GLuint species = 0;         // S
+  float centralForce = 0.0f;  // 1/s^2
+  static constexpr auto fields() {
+    return std::tuple{gl::field("uBoxSize", &PairUniforms::boxSize), gl::field("uCount", &PairUniforms::count),
+                      gl::field("uSpecies", &PairUniforms::species),
+                      gl::field("uCentralForce", &PairUniforms::centralForce)};
+  }
+};
 
 class Life final : public sim::Model {
  public:
@@ -67,6 +80,7 @@ class Life final : public sim::Model {
   const gl::Buffer& velocities() const { return m_vel[m_current]; }  // (vx, vy, ax, ay), see storage()
   const gl::Buffer& accelerations() const { return m_accel; }        // vec2, same order as positions()
   const gl::Buffer& speciesColors() const { return m_colors; }       // vec4 per species
+  PairUniforms pairUniforms() const;                                 // of the current rules and count
   const gl::Buffer& forceTable() const { return m_table; }           // vec4 per pair, see life/bindings.glsl
   const grid::UniformGrid& grid() const { return *m_grid; }
   void upload(const std::vector<glm::vec4>& positions, const std::vector<glm::vec4>& velocities);

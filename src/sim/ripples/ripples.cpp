@@ -17,6 +17,49 @@ std::string fmt(const char* format, double a, double b = 0) {
   std::snprintf(buf, sizeof buf, format, a, b);
   return buf;
 }
+
+struct BodyUniforms {
+  glm::ivec2 size{0};      // cells in x and y
+  glm::vec3 before{0.0f};  // sphere centre at the start of the step, m
+  glm::vec3 now{0.0f};     // and at its end
+  float radius = 0.0f;     // m
+  float cellSize = 0.0f;   // m
+  float coupling = 0.0f;   // fraction of the displaced column moved per step
+  static constexpr auto fields() {
+    using U = BodyUniforms;
+    return std::tuple{gl::field("uSize", &U::size),         gl::field("uBefore", &U::before),
+                      gl::field("uNow", &U::now),           gl::field("uRadius", &U::radius),
+                      gl::field("uCellSize", &U::cellSize), gl::field("uCoupling", &U::coupling)};
+  }
+};
+struct StepUniforms {  // see ripples/step.comp
+  glm::ivec2 size{0};
+  float dt = 0.0f, waveFactor = 0.0f, velDecay = 1.0f, posSmoothing = 0.0f, elasticity = 0.0f;
+  GLint spongeCells = 0;
+  float spongeDecay = 1.0f;
+  static constexpr auto fields() {
+    using U = StepUniforms;
+    return std::tuple{gl::field("uSize", &U::size),
+                      gl::field("uDt", &U::dt),
+                      gl::field("uWaveFactor", &U::waveFactor),
+                      gl::field("uVelDecay", &U::velDecay),
+                      gl::field("uPosSmoothing", &U::posSmoothing),
+                      gl::field("uElasticity", &U::elasticity),
+                      gl::field("uSpongeCells", &U::spongeCells),
+                      gl::field("uSpongeDecay", &U::spongeDecay)};
+  }
+};
+struct TouchUniforms {
+  glm::ivec2 size{0};
+  glm::vec2 centre{0.0f};  // cells
+  float radius = 0.0f;     // cells
+  float depth = 0.0f;      // m (negative pushes the surface down)
+  static constexpr auto fields() {
+    using U = TouchUniforms;
+    return std::tuple{gl::field("uSize", &U::size), gl::field("uCentre", &U::centre), gl::field("uRadius", &U::radius),
+                      gl::field("uDepth", &U::depth)};
+  }
+};
 }  // namespace
 
 Ripples::Ripples(gl::ShaderLibrary& shaders, const Params& params)
@@ -45,59 +88,46 @@ void Ripples::reset() {
   restartWatch();
 }
 
-void Ripples::dispatchCells() const {
-  glDispatchCompute(GLuint((m_width + RIPPLES_TILE - 1) / RIPPLES_TILE),
-                    GLuint((m_height + RIPPLES_TILE - 1) / RIPPLES_TILE), 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-}
-
-gl::Program& Ripples::stepProgram() {
-  std::vector<gl::ShaderDefine> defines = {{m_params.rule == Rule::Seed ? "RULE_SEED" : "RULE_WAVE", ""}};
-  if (m_params.boundary == Boundary::Periodic) defines.push_back({"BOUNDARY_PERIODIC", ""});
-  return m_shaders.program({"ripples/step.comp"}, defines);
+glm::uvec3 Ripples::cellGroups() const {
+  return {GLuint((m_width + RIPPLES_TILE - 1) / RIPPLES_TILE), GLuint((m_height + RIPPLES_TILE - 1) / RIPPLES_TILE), 1};
 }
 
 void Ripples::pushBody(double dt) {
-  gl::Program& p = m_shaders.program({"ripples/body.comp"});
-  p.use();
-  p.set("uSize", glm::ivec2(m_width, m_height));
-  p.set("uBefore", ripples::sphereCentre(m_params, m_time));
-  p.set("uNow", ripples::sphereCentre(m_params, m_time + dt));
-  p.set("uRadius", m_params.sphereRadius);
-  p.set("uCellSize", m_params.cellSize);
-  p.set("uCoupling", m_params.sphereCoupling);
+  const gl::Kernel<BodyUniforms> body(m_shaders, "ripples/body.comp", {RIPPLES_STATE_OUT});
   m_state[m_current].bindBase(GL_SHADER_STORAGE_BUFFER, RIPPLES_STATE_OUT);
-  dispatchCells();
+  dispatchCells(body, {.size = {m_width, m_height},
+                       .before = ripples::sphereCentre(m_params, m_time),
+                       .now = ripples::sphereCentre(m_params, m_time + dt),
+                       .radius = m_params.sphereRadius,
+                       .cellSize = m_params.cellSize,
+                       .coupling = m_params.sphereCoupling});
 }
 
 void Ripples::stepOnce(double dt) {
   if (m_params.width != m_width || m_params.height != m_height) allocate();
   if (m_params.sphere) pushBody(dt);
-  gl::Program& p = stepProgram();
   const Params& q = m_params;
-  p.use();
-  p.set("uSize", glm::ivec2(m_width, m_height));
+  StepUniforms u{.size = {m_width, m_height},
+                 .spongeCells = q.boundary == Boundary::Absorbing ? q.spongeCells : 0,
+                 .spongeDecay = float(std::exp(-q.spongeDamping * dt))};
   if (q.rule == Rule::Seed) {
-    const double seedDt = q.seedTimeScale * dt;
-    p.set("uDt", float(seedDt));
-    p.set("uWaveFactor", q.seedPropagation);
-    p.set("uElasticity", q.seedElasticity);
-    p.set("uVelDecay", q.seedFriction);
-    p.set("uPosSmoothing", 0.0f);
+    u.dt = float(q.seedTimeScale * dt);
+    u.waveFactor = q.seedPropagation;
+    u.elasticity = q.seedElasticity;
+    u.velDecay = q.seedFriction;
   } else {
-    p.set("uDt", float(dt));
-    p.set("uWaveFactor", float(double(q.waveSpeed) * q.waveSpeed * dt / (double(q.cellSize) * q.cellSize)));
-    p.set("uVelDecay", float(std::max(0.0, 1.0 - q.velDamping * dt)));
-    p.set("uPosSmoothing", float(std::min(q.posDamping * dt, 1.0)));
-    p.set("uElasticity", 0.0f);
+    u.dt = float(dt);
+    u.waveFactor = float(double(q.waveSpeed) * q.waveSpeed * dt / (double(q.cellSize) * q.cellSize));
+    u.velDecay = float(std::max(0.0, 1.0 - q.velDamping * dt));
+    u.posSmoothing = float(std::min(q.posDamping * dt, 1.0));
     m_lastCourant = courant(q, dt);
   }
-  const bool sponge = q.boundary == Boundary::Absorbing;
-  p.set("uSpongeCells", sponge ? q.spongeCells : 0);
-  p.set("uSpongeDecay", float(std::exp(-q.spongeDamping * dt)));
+  std::vector<gl::ShaderDefine> defines = {{q.rule == Rule::Seed ? "RULE_SEED" : "RULE_WAVE", ""}};
+  if (q.boundary == Boundary::Periodic) defines.push_back({"BOUNDARY_PERIODIC", ""});
+  const gl::Kernel<StepUniforms> pass(m_shaders, "ripples/step.comp", {RIPPLES_STATE_IN, RIPPLES_STATE_OUT}, defines);
   m_state[m_current].bindBase(GL_SHADER_STORAGE_BUFFER, RIPPLES_STATE_IN);
   m_state[1 - m_current].bindBase(GL_SHADER_STORAGE_BUFFER, RIPPLES_STATE_OUT);
-  dispatchCells();
+  dispatchCells(pass, u);
   m_current = 1 - m_current;
   m_time += dt;
   m_lastDt = dt;
@@ -185,14 +215,10 @@ void Ripples::visitOwnState(sim::StateVisitor& v) {
 }
 
 void Ripples::touch(float x, float y, float radius, float depth) {
-  gl::Program& p = m_shaders.program({"ripples/touch.comp"});
-  p.use();
-  p.set("uSize", glm::ivec2(m_width, m_height));
-  p.set("uCentre", glm::vec2(x * m_width, y * m_height));
-  p.set("uRadius", std::max(radius * m_width, 0.5f));
-  p.set("uDepth", depth);
+  const gl::Kernel<TouchUniforms> kernel(m_shaders, "ripples/touch.comp", {RIPPLES_STATE_OUT});
   m_state[m_current].bindBase(GL_SHADER_STORAGE_BUFFER, RIPPLES_STATE_OUT);
-  dispatchCells();
+  dispatchCells(kernel,
+                {{m_width, m_height}, glm::vec2(x * m_width, y * m_height), std::max(radius * m_width, 0.5f), depth});
 }
 
 void Ripples::upload(const std::vector<float>& hv) {

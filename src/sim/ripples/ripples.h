@@ -12,7 +12,7 @@
 
 #include "gl/buffer.h"
 #include "gl/gpu_profiler.h"
-#include "gl/shader_library.h"
+#include "gl/kernel.h"
 #include "sim/model.h"
 #include "sim/ripples/ripples_params.h"
 
@@ -60,10 +60,14 @@ class Ripples final : public sim::Model {
   // Checkpoints: the clock, the rain's debt and random generator, the last step's figures.
   void visitOwnState(sim::StateVisitor& v) override;
 
-  gl::Program& stepProgram();
-  void pushBody(double dt);    // the sphere's displacement change over the next step
-  void allocate();             // the state buffers at params()' size, then reset()
-  void dispatchCells() const;  // the program in use, one invocation per cell (RIPPLES_TILE² per group); a barrier
+  void pushBody(double dt);       // the sphere's displacement change over the next step
+  void allocate();                // the state buffers at params()' size, then reset()
+  glm::uvec3 cellGroups() const;  // one invocation per cell, RIPPLES_TILE² per group
+  template <class U>
+  void dispatchCells(const gl::Kernel<U>& kernel, const U& uniforms) const {  // then a barrier
+    kernel.dispatch(cellGroups(), uniforms);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  }
 
   gl::ShaderLibrary& m_shaders;
   Params m_params;

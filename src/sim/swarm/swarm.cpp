@@ -6,6 +6,7 @@
 #include <glm/gtc/packing.hpp>
 
 #include "base/error.h"
+#include "gl/kernel.h"
 #include "swarm/bindings.glsl"
 
 namespace tidepool::sim {
@@ -25,6 +26,32 @@ std::string countText(std::size_t n) {
   if (n % (1 << 20) == 0) return std::to_string(n >> 20) + "M";
   return std::to_string(n);
 }
+
+struct InitUniforms {
+  GLuint count = 0, seed = 0;
+  static constexpr auto fields() {
+    return std::tuple{gl::field("uCount", &InitUniforms::count), gl::field("uSeed", &InitUniforms::seed)};
+  }
+};
+struct StepUniforms {
+  GLuint count = 0;
+  float dt = 0.0f;                                               // simulated seconds
+  float damping = 1.0f;                                          // exp(-friction * dt)
+  glm::vec2 aspect{1.0f};                                        // (width / height, 1)
+  GLint bounce = 0;                                              // 1: mirror walls at NDC +-1
+  glm::vec2 gravity{0.0f};                                       // world units/s^2
+  float epsilon = 0.0f;                                          // world units^2
+  GLint attractorCount = 0;                                      // per level
+  std::array<glm::vec4, 3 * SWARM_MAX_ATTRACTORS> attractors{};  // at the step's start, middle, end
+  static constexpr auto fields() {
+    using U = StepUniforms;
+    return std::tuple{gl::field("uCount", &U::count),          gl::field("uDt", &U::dt),
+                      gl::field("uDamping", &U::damping),      gl::field("uAspect", &U::aspect),
+                      gl::field("uBounce", &U::bounce),        gl::field("uGravity", &U::gravity),
+                      gl::field("uEpsilon", &U::epsilon),      gl::field("uAttractorCount", &U::attractorCount),
+                      gl::field("uAttractors", &U::attractors)};
+  }
+};
 
 }  // namespace
 
@@ -90,12 +117,10 @@ void Swarm::reset() {
   allocate(std::size_t(m_params.particles), m_params.storage);
   m_time = 0.0;
   restartWatch();
-  gl::Program& init = m_shaders.program({"swarm/swarm_init.comp"}, {{"STORAGE_FP16", storageDefine()}});
-  init.use();
-  init.set("uCount", unsigned(m_count));
-  init.set("uSeed", unsigned(m_params.seed));
+  const gl::Kernel<InitUniforms> init(m_shaders, "swarm/swarm_init.comp", {SWARM_STATE_BINDING},
+                                      {{"STORAGE_FP16", storageDefine()}});
   m_state.bindBase(GL_SHADER_STORAGE_BUFFER, SWARM_STATE_BINDING);
-  init.dispatchThreads(m_count);
+  init.dispatchThreads(m_count, {GLuint(m_count), GLuint(m_params.seed)});
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
@@ -131,36 +156,27 @@ std::vector<Attractor> Swarm::attractorsAt(double t) const {
   return all;
 }
 
-gl::Program& Swarm::stepProgram() const {
-  return m_shaders.program({"swarm/swarm_step.comp"}, {{"INTEGRATOR", std::to_string(int(m_params.integrator))},
-                                                       {"STORAGE_FP16", storageDefine()}});
-}
-
 void Swarm::stepOnce(double dt) {
   // Forces at the start, middle and end of the step: RK4 needs all three, Verlet the first and last.
   const double times[3] = {m_time, m_time + 0.5 * dt, m_time + dt};
-  std::vector<glm::vec4> attractors(3 * SWARM_MAX_ATTRACTORS, glm::vec4(0.0f));
-  int count = 0;
+  StepUniforms u{.count = GLuint(m_count),
+                 .dt = float(dt),
+                 .damping = float(std::exp(-double(m_params.friction) * dt)),
+                 .aspect = glm::vec2(float(m_aspect), 1.0f),
+                 .bounce = m_params.bounce ? 1 : 0,
+                 .gravity = glm::vec2(0.0f, -m_params.gravity),
+                 .epsilon = m_params.epsilon};
   for (int level = 0; level < 3; ++level) {
     const std::vector<Attractor> at = attractorsAt(times[level]);
-    count = int(at.size());
-    for (int k = 0; k < count; ++k)
-      attractors[std::size_t(level * SWARM_MAX_ATTRACTORS + k)] =
-          glm::vec4(glm::vec2(at[std::size_t(k)].pos), float(at[std::size_t(k)].strength), 0.0f);
+    u.attractorCount = int(at.size());
+    for (std::size_t k = 0; k < at.size(); ++k)
+      u.attractors[level * SWARM_MAX_ATTRACTORS + k] = glm::vec4(glm::vec2(at[k].pos), float(at[k].strength), 0.0f);
   }
-  gl::Program& p = stepProgram();
-  p.use();
-  p.set("uCount", unsigned(m_count));
-  p.set("uDt", float(dt));
-  p.set("uDamping", float(std::exp(-double(m_params.friction) * dt)));
-  p.set("uAspect", glm::vec2(float(m_aspect), 1.0f));
-  p.set("uBounce", m_params.bounce ? 1 : 0);
-  p.set("uGravity", glm::vec2(0.0f, -m_params.gravity));
-  p.set("uEpsilon", m_params.epsilon);
-  p.set("uAttractorCount", count);
-  glProgramUniform4fv(p.id(), p.uniform("uAttractors[0]"), GLsizei(attractors.size()), &attractors[0].x);
+  const gl::Kernel<StepUniforms> pass(
+      m_shaders, "swarm/swarm_step.comp", {SWARM_STATE_BINDING},
+      {{"INTEGRATOR", std::to_string(int(m_params.integrator))}, {"STORAGE_FP16", storageDefine()}});
   m_state.bindBase(GL_SHADER_STORAGE_BUFFER, SWARM_STATE_BINDING);
-  p.dispatchThreads(m_count);
+  pass.dispatchThreads(m_count, u);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   m_time += dt;
   m_lastDt = dt;

@@ -88,7 +88,6 @@ class Swarm final : public Model {
   void visitOwnState(StateVisitor& v) override;
 
   void allocate(std::size_t count, Storage storage);
-  gl::Program& stepProgram() const;
   const char* storageDefine() const { return m_storage == Storage::Fp16 ? "1" : "0"; }  // STORAGE_FP16
 
   gl::ShaderLibrary& m_shaders;
