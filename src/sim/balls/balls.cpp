@@ -8,9 +8,9 @@
 #include "balls/bindings.glsl"
 #include "balls/stats_layout.glsl"
 #include "base/error.h"
-#include "sim/balls/balls_init.h"
-#include "sim/balls/water_frame.h"
 #include "sim/particle_memory.h"
+#include "sim/water/water_frame.h"
+#include "sim/water/water_init.h"
 
 namespace tidepool::balls {
 namespace {
@@ -53,19 +53,19 @@ void Balls::allocate(std::size_t count, std::size_t capacity) {
 }
 
 void Balls::reset() {
-  const Params p = resolved(m_params);
+  const water::Setup p = resolved(m_params);
   if (glm::any(glm::lessThanEqual(p.domainMax, p.domainMin)))
     throw Error("balls: domain_max must exceed domain_min on every axis");
   // First the count, from the fill's volume: a radius that asks for 10^11 balls fails here, with
   // the numbers, before any array is built.
   char radius[48];
   std::snprintf(radius, sizeof radius, "particles.radius = %g m", double(p.radius));
-  checkWaterRequest("balls", "ball", radius, estimatedWater(m_params), m_params, cost());
+  water::checkWaterRequest("balls", "ball", radius, water::estimatedWater(p), p, cost());
   m_obstacles.build(m_params.obstacles, p.radius);  // a bad mesh fails before anything is allocated
   m_radius = p.radius;
   m_obstacles.place(m_params.obstacles, 0.0, p.domainMin, p.domainMax);
   const std::vector<glm::vec4> water =
-      waterParticles(m_params, [this](glm::vec3 q) { return m_obstacles.occupied(q); });
+      water::waterParticles(p, [this](glm::vec3 q) { return m_obstacles.occupied(q); });
   allocate(water.size(), water.size() + (m_params.tap ? std::size_t(m_params.tapMax) : 0));
   m_tapEmitted = 0;
   m_tapNextLayer = 0;
@@ -87,7 +87,8 @@ void Balls::emitFromTap() {
   const Params& p = m_params;
   if (!p.tap || m_tapEmitted >= std::size_t(p.tapMax) || m_time < m_tapNextLayer || p.tapSpeed <= 0) return;
   // One layer of the nozzle disc, then wait until the jet has moved on by a spacing.
-  const TapLayer layer = tapLayer(p, m_radius, std::min(std::size_t(p.tapMax) - m_tapEmitted, m_capacity - m_count));
+  const water::TapLayer layer =
+      water::tapLayer(p, m_radius, std::min(std::size_t(p.tapMax) - m_tapEmitted, m_capacity - m_count));
   if (layer.pos.empty()) return;
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);  // shader writes land before the uploads
   const std::size_t at = m_count * sizeof(glm::vec4), bytes = layer.pos.size() * sizeof(glm::vec4);
@@ -103,12 +104,12 @@ void Balls::emitFromTap() {
   m_tapNextLayer = m_time + layer.interval;
 }
 
-glm::vec3 Balls::gravity() const { return gravityAt(resolved(m_params), m_time); }
+glm::vec3 Balls::gravity() const { return water::gravityAt(resolved(m_params), m_time); }
 
-float Balls::domainRotation() const { return balls::domainRotation(m_params, m_time); }
+float Balls::domainRotation() const { return water::domainRotation(m_params, m_time); }
 
 void Balls::updateWalls() {
-  const Walls w = wallsAt(m_params, m_time);
+  const water::Walls w = water::wallsAt(m_params, m_time);
   m_wallMin = w.min;
   m_wallMax = w.max;
   m_wallMinVel = w.minVel;
@@ -243,7 +244,7 @@ std::vector<GLuint> Balls::lastOrder() const {
 void Balls::ensureGrid() {
   const float cell = 2.0f * m_radius;
   if (m_grid && m_grid->params().cellSize == cell) return;
-  const Params p = resolved(m_params);
+  const water::Setup p = resolved(m_params);
   grid::GridParams gp{.domainMin = p.domainMin, .domainMax = p.domainMax, .cellSize = cell, .stable = p.deterministic};
   m_grid = std::make_unique<grid::UniformGrid>(m_shaders, gp, m_capacity);
   m_countedAhead = {};

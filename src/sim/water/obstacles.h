@@ -1,5 +1,5 @@
-// The obstacles of the balls model: each one's fixed particles are built once in its own frame
-// (shape, size, mesh; balls_init.h) and placed every step by its rigid pose (centre, orientation,
+// The obstacles of the water (balls and fluid): each one's fixed particles are built once in its own frame
+// (shape, size, mesh; water_init.h) and placed every step by its rigid pose (centre, orientation,
 // spin, path; obstacle_pose.h), evaluated from the time. On the GPU:
 //   bodies    all obstacles' particles in their own frames, one after the other, w = obstacle index
 //   place     obstacle_place.comp: world = centre_k + R_k·body for particle of obstacle k
@@ -20,12 +20,12 @@
 #include "gl/shader_library.h"
 #include "grid/grid.h"
 #include "io/obj.h"
-#include "sim/balls/balls_params.h"
-#include "sim/balls/obstacle_pose.h"
+#include "sim/water/obstacle_pose.h"
+#include "sim/water/setup.h"
 
-namespace tidepool::balls {
+namespace tidepool::water {
 
-class Obstacle;  // balls_init.h
+class Obstacle;  // water_init.h
 
 // One obstacle's particles in its own frame, as built.
 struct ObstacleBody {
@@ -50,7 +50,7 @@ class Obstacles {
   // refused; `error` then says what was refused (empty: nothing).
   bool update(std::vector<ObstacleParams>& params, float radius, std::string& error);
   // Poses at `time`; when one changed (or the bodies did), the particles' world positions and the
-  // grid (bounded by the domain, where balls can be).
+  // grid (bounded by the domain, where particles can be).
   void place(const std::vector<ObstacleParams>& params, double time, glm::vec3 domainMin, glm::vec3 domainMax,
              gl::GpuProfiler* profiler = nullptr);
   bool occupied(glm::vec3 world) const;   // inside an obstacle at its placed pose
@@ -90,4 +90,4 @@ class Obstacles {
   std::unique_ptr<grid::UniformGrid> m_grid;
 };
 
-}  // namespace tidepool::balls
+}  // namespace tidepool::water

@@ -1,12 +1,15 @@
-#include "sim/balls/obstacles.h"
+#include "sim/water/obstacles.h"
 
 #include <algorithm>
 
+#include "balls/bindings.glsl"
 #include "base/error.h"
-#include "sim/balls/balls_init.h"
+#include "sim/water/water_init.h"
 
-namespace tidepool::balls {
+namespace tidepool::water {
 namespace {
+
+static_assert(kMaxObstacles == BALLS_MAX_OBSTACLES, "the pose block holds BALLS_MAX_OBSTACLES obstacles");
 
 // The uniform block of shaders/balls/obstacle_poses.glsl (std140: every array element a vec4).
 struct PoseBlock {
@@ -196,4 +199,4 @@ void Obstacles::bind(gl::Program& program) const {
   m_grid->cellStart().bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_OBST_CELL_START);
 }
 
-}  // namespace tidepool::balls
+}  // namespace tidepool::water
