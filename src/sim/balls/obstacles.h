@@ -55,7 +55,7 @@ class Obstacles {
   // grid (bounded by the domain, where balls can be).
   void place(const std::vector<ObstacleParams>& params, double time, glm::vec3 domainMin, glm::vec3 domainMax,
              gl::GpuProfiler* profiler = nullptr);
-  bool occupied(glm::vec3 world) const;   // inside an obstacle at its placed pose
+  bool occupied(glm::vec3 world) const;  // inside an obstacle at its placed pose
   // Uniforms, pose block and buffer textures of common/obstacle_grid.glsl (when active()).
   void bind(gl::Program& program) const;
 
