@@ -76,7 +76,6 @@ void Balls::reset() {
   m_posIndex = m_velIndex = 0;
   m_time = 0;
   m_accValid = false;
-  m_countedAhead = {};
   m_grid.reset();
   ensureGrid();
   m_obstacleError.clear();
@@ -100,7 +99,6 @@ void Balls::emitFromTap() {
   }
   m_count += layer.pos.size();
   m_tapEmitted += layer.pos.size();
-  m_countedAhead = {};
   m_tapNextLayer = m_time + layer.interval;
 }
 
@@ -126,7 +124,6 @@ std::string Balls::status() const {
 }
 
 std::vector<sim::StateBuffer> Balls::stateBuffers() {
-  m_countedAhead = {};  // the caller may write them (a restore)
   const std::size_t bytes = m_count * sizeof(glm::vec4);
   return {{"positions", &m_pos[m_posIndex], bytes}, {"velocities", &m_vel[m_velIndex], bytes}};
 }
@@ -161,7 +158,6 @@ void Balls::resume(const sim::StateStamp& good) {
   m_count = good.count;
   m_time = good.time;
   m_accValid = false;  // Verlet re-evaluates a(x) for the restored state
-  m_countedAhead = {};
   m_params.dt *= 0.5f;
   m_params.substeps = std::min(m_params.substeps * 2, 1000);  // same simulated time per frame
 }
@@ -186,7 +182,6 @@ void Balls::visitOwnState(sim::StateVisitor& v) {
   if (v.loading()) {
     ensureGrid();
     updateWalls();
-    m_countedAhead = {};
   }
 }
 
@@ -203,7 +198,6 @@ void Balls::upload(const std::vector<glm::vec4>& pos, const std::vector<glm::vec
   m_pos[0].upload(pos.data(), pos.size() * sizeof(glm::vec4));
   m_vel[0].upload(vel.data(), vel.size() * sizeof(glm::vec4));
   m_accValid = false;
-  m_countedAhead = {};
   ensureGrid();
   restartWatch();  // a new state: nothing judged yet
 }
@@ -247,7 +241,7 @@ void Balls::ensureGrid() {
   const water::Setup p = resolved(m_params);
   grid::GridParams gp{.domainMin = p.domainMin, .domainMax = p.domainMax, .cellSize = cell, .stable = p.deterministic};
   m_grid = std::make_unique<grid::UniformGrid>(m_shaders, gp, m_capacity);
-  m_countedAhead = {};
+  m_countedAhead = {};  // a new grid counted nothing (it may reuse the old one's address)
 }
 
 }  // namespace tidepool::balls

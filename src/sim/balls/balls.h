@@ -8,8 +8,8 @@
 // One step (stepOnce), a list of passes (balls_passes.cpp):
 //   symplectic / explicit Euler:  placeObstacles(t)      -> sortByCell -> collide (forces, integrate)
 //   velocity Verlet:              placeObstacles(t + dt) -> drift -> sortByCell -> collide (forces, kick)
-// Euler's collide, without obstacles, also counts each ball into the next step's grid as it
-// writes it (COUNT_CELLS), so the next sortByCell starts at the scan.
+// Euler's collide also counts each ball into the next step's grid as it writes it, so the next
+// sortByCell starts at the scan.
 #pragma once
 
 #include <memory>
@@ -134,21 +134,19 @@ class Balls final : public sim::Model, public water::ParticleWater {
   void planReachWindows(std::size_t windowSize = 0);  // 0: half a storage block of balls
   std::vector<ReachWindow> reachWindows();
   void ensureGrid();  // the grid of cells 2r for the current radius
-  std::vector<gl::ShaderDefine> defines(bool verlet, bool countCells = false) const;
+  std::vector<gl::ShaderDefine> defines(bool verlet) const;
   // In use, common uniforms set.
-  gl::Program& useKernel(const char* file, bool verlet, bool countCells = false);
-  // The grid's counts taken by the last collide (COUNT_CELLS) hold for the state it wrote: the
-  // next sortByCell skips its count pass while the key still matches (anything else that writes
-  // the balls clears it).
+  gl::Program& useKernel(const char* file, bool verlet);
+  // The grid's counts taken by the last Euler collide hold for the positions it wrote: the next
+  // sortByCell skips its count pass while the key still matches. Any other write of the positions
+  // (an upload, a restore, the tap) changes their buffer's version (gl::Buffer::version()).
   struct CountKey {
+    std::uint64_t positions = 0;  // version of the positions' buffer; 0: no counts
     std::size_t count = 0;
-    int posIndex = 0;
     const grid::UniformGrid* grid = nullptr;
-    bool valid = false;
     bool operator==(const CountKey&) const = default;
   };
   CountKey countKey() const;  // now
-  bool countsInCollide(Collide what) const;
 
   gl::ShaderLibrary& m_shaders;
   Params m_params;

@@ -6,14 +6,10 @@
 #include <cstddef>
 #include <numbers>
 
-#include "balls/bindings.glsl"
 #include "fluid/bindings.glsl"
 #include "fluid/stats_layout.glsl"
 #include "sim/fluid/rest_lattice.h"
 #include "sim/fluid/sph_kernels.h"
-
-static_assert(FLUID_OBST_POS == BALLS_OBST_POS && FLUID_OBST_CELL_START == BALLS_OBST_CELL_START,
-              "the fluid binds the obstacles where water::Obstacles::bind() puts them");
 
 namespace tidepool::fluid {
 namespace {
@@ -67,7 +63,6 @@ void bindBoundary(gl::Program& program, const water::Obstacles& obstacles, doubl
   if (!obstacles.active()) return;
   obstacles.bind(program);
   program.set("uObstacleReach", int(std::ceil(h / obstacles.cellSize() - 1e-6)));
-  if (const gl::Buffer* v = obstacles.volumes()) v->bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_OBST_VOLUME);
 }
 
 Stats DensityProbe::measure(const water::ParticleWater& water, const DensityKernel& kernel, glm::vec3 gravity,

@@ -4,6 +4,7 @@
 
 #include "balls/bindings.glsl"
 #include "base/error.h"
+#include "common/obstacle_bindings.glsl"
 #include "sim/water/water_init.h"
 
 namespace tidepool::water {
@@ -29,6 +30,12 @@ void copyBody(ObstacleParams& to, const ObstacleParams& from) {
 
 std::string at(std::size_t k) { return "obstacles[" + std::to_string(k) + "]"; }
 
+// The kernels read the obstacles' particles through buffer textures (common/obstacle_grid.glsl).
+std::string tooMany(std::size_t particles) {
+  return std::to_string(particles) + " fixed particles, over this GPU's buffer-texture limit of " +
+         std::to_string(gl::BufferTexture::maxTexels()) + ": make the obstacles smaller or the radius larger";
+}
+
 }  // namespace
 
 ObstacleBody Obstacles::buildOne(const ObstacleParams& o, float radius) {
@@ -53,6 +60,9 @@ void Obstacles::build(const std::vector<ObstacleParams>& params, float radius) {
     } catch (const Error& e) {
       throw Error(at(k) + ": " + e.what());
     }
+  std::size_t total = 0;
+  for (const ObstacleBody& b : bodies) total += b.particles.size();
+  if (total > gl::BufferTexture::maxTexels()) throw Error("obstacles: " + tooMany(total));
   m_bodies = std::move(bodies);
   m_radius = radius;
   upload();
@@ -93,6 +103,14 @@ bool Obstacles::update(std::vector<ObstacleParams>& params, float radius, std::s
     }
   }
   if (!changed) return false;
+  std::size_t total = 0;
+  for (const ObstacleBody& b : next) total += b.particles.size();
+  if (total > gl::BufferTexture::maxTexels()) {  // the whole edit refused: back to the bodies as built
+    error = "obstacles not changed: " + tooMany(total);
+    params.resize(m_bodies.size());
+    for (std::size_t k = 0; k < m_bodies.size(); ++k) params[k] = m_bodies[k].built;
+    return true;
+  }
   m_bodies = std::move(next);
   upload();
   return true;
@@ -162,8 +180,14 @@ void Obstacles::place(const std::vector<ObstacleParams>& params, double time, gl
   lo = glm::max(lo - margin, domainMin - margin);
   hi = glm::min(hi + margin, domainMax + margin);
   hi = glm::max(hi, lo + margin);  // all outside the domain: a token grid
-  if (!m_grid || m_grid->params().domainMin != lo || m_grid->params().domainMax != hi)
-    m_grid = std::make_unique<grid::UniformGrid>(m_shaders, grid::GridParams{lo, hi, 2.0f * m_radius}, m_particles);
+  if (!m_grid || m_grid->params().domainMin != lo || m_grid->params().domainMax != hi) {
+    auto grid = std::make_unique<grid::UniformGrid>(m_shaders, grid::GridParams{lo, hi, 2.0f * m_radius}, m_particles);
+    if (grid->cells() + 1 > gl::BufferTexture::maxTexels())
+      throw Error("obstacles: a grid of " + std::to_string(grid->cells()) +
+                  " cells around them, over this GPU's buffer-texture limit of " +
+                  std::to_string(gl::BufferTexture::maxTexels()) + ": make them smaller or the radius larger");
+    m_grid = std::move(grid);
+  }
 
   auto scope = profiler ? profiler->scope("balls.obstacles") : gl::GpuProfiler::Scope(nullptr);
   gl::Program& program = m_shaders.program({"balls/obstacle_place.comp"});
@@ -179,6 +203,7 @@ void Obstacles::place(const std::vector<ObstacleParams>& params, double time, gl
     m_grid->reorder(m_world, {{&m_world, &m_sorted}, {&m_volumeBody, &m_volumeSorted}});
   else
     m_grid->reorder(m_world, {{&m_world, &m_sorted}});
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);  // the kernels read them through buffer textures
 }
 
 bool Obstacles::occupied(glm::vec3 world) const {
@@ -190,13 +215,14 @@ bool Obstacles::occupied(glm::vec3 world) const {
 }
 
 void Obstacles::bind(gl::Program& program) const {
+  m_poseBlock.bindBase(GL_UNIFORM_BUFFER, BALLS_OBST_POSES);
   const grid::GridParams& g = m_grid->params();
   program.set("uObstacleOrigin", g.domainMin);
   program.set("uObstacleInvCell", 1.0f / g.cellSize);
   program.set("uObstacleDims", m_grid->dims());
-  m_poseBlock.bindBase(GL_UNIFORM_BUFFER, BALLS_OBST_POSES);
-  m_sorted.bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_OBST_POS);
-  m_grid->cellStart().bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_OBST_CELL_START);
+  m_textures[0].bind(OBSTACLE_POS_UNIT, m_sorted.id(), GL_RGBA32F);
+  m_textures[1].bind(OBSTACLE_CELL_START_UNIT, m_grid->cellStart().id(), GL_R32UI);
+  if (m_volumeFn) m_textures[2].bind(OBSTACLE_VOLUME_UNIT, m_volumeSorted.id(), GL_RGBA32F);
 }
 
 }  // namespace tidepool::water

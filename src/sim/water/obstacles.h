@@ -3,7 +3,8 @@
 // spin, path; obstacle_pose.h), evaluated from the time. On the GPU:
 //   bodies    all obstacles' particles in their own frames, one after the other, w = obstacle index
 //   place     obstacle_place.comp: world = centre_k + R_k·body for particle of obstacle k
-//   grid      the placed particles of every obstacle in one grid of cell 2r over their reach
+//   grid      the placed particles of every obstacle in one grid of cell 2r over their reach,
+//             read by the kernels through buffer textures (common/obstacle_grid.glsl)
 //   poses     a uniform block: each obstacle's pose and velocity, so a contact sees the moving
 //             particle's velocity v_k + ω_k × (x − c_k) (obstacle_poses.glsl)
 // Placing and the grid run only when a pose changed (animated obstacles: every step). Edits while
@@ -18,6 +19,7 @@
 #include "gl/buffer.h"
 #include "gl/gpu_profiler.h"
 #include "gl/shader_library.h"
+#include "gl/texture.h"
 #include "grid/grid.h"
 #include "io/obj.h"
 #include "sim/water/obstacle_pose.h"
@@ -53,8 +55,9 @@ class Obstacles {
   // grid (bounded by the domain, where particles can be).
   void place(const std::vector<ObstacleParams>& params, double time, glm::vec3 domainMin, glm::vec3 domainMax,
              gl::GpuProfiler* profiler = nullptr);
-  bool occupied(glm::vec3 world) const;   // inside an obstacle at its placed pose
-  void bind(gl::Program& program) const;  // uniforms, pose block and buffers of the contact search
+  bool occupied(glm::vec3 world) const;  // inside an obstacle at its placed pose
+  // Uniforms, pose block and buffer textures of common/obstacle_grid.glsl (when active()).
+  void bind(gl::Program& program) const;
 
   // Rest volumes of every obstacle particle (the fluid's boundary particles): `volumes` gives them
   // for one body at each (re)build; they are placed and sorted with the particles, and
@@ -85,6 +88,7 @@ class Obstacles {
   unsigned m_nextId = 1;
   bool m_dirty = true;  // bodies changed since the last place()
   gl::Buffer m_body, m_world, m_sorted, m_poseBlock;
+  mutable gl::BufferTexture m_textures[3];  // positions, cell starts, volumes (bind())
   VolumeFn m_volumeFn;
   gl::Buffer m_volumeBody, m_volumeSorted;  // with m_volumeFn: vec4 (x = m³) in body and grid order
   std::unique_ptr<grid::UniformGrid> m_grid;
