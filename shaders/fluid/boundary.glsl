@@ -8,6 +8,7 @@
 #define FLUID_BOUNDARY_GLSL
 
 #ifdef HAS_OBSTACLE
+#include "common/obstacle_bindings.glsl"
 #ifdef OBSTACLE_VOLUMES
 layout(binding = OBSTACLE_VOLUME_UNIT) uniform samplerBuffer obstacleVolume;  // x = m³
 #endif
