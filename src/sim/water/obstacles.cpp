@@ -30,10 +30,18 @@ void copyBody(ObstacleParams& to, const ObstacleParams& from) {
 
 std::string at(std::size_t k) { return "obstacles[" + std::to_string(k) + "]"; }
 
-// The kernels read the obstacles' particles through buffer textures (common/obstacle_grid.glsl).
-std::string tooMany(std::size_t particles) {
-  return std::to_string(particles) + " fixed particles, over this GPU's buffer-texture limit of " +
-         std::to_string(gl::BufferTexture::maxTexels()) + ": make the obstacles smaller or the radius larger";
+// The kernels read the obstacles' particles and their grid through buffer textures
+// (common/obstacle_grid.glsl): what passes the limit, or empty.
+std::string overTexelLimit(std::size_t texels, const std::string& what, const char* remedy) {
+  if (texels <= gl::BufferTexture::maxTexels()) return {};
+  return what + ", over this GPU's buffer-texture limit of " + std::to_string(gl::BufferTexture::maxTexels()) +
+         ": make " + remedy + " smaller or the radius larger";
+}
+
+std::string tooManyParticles(const std::vector<ObstacleBody>& bodies) {
+  std::size_t total = 0;
+  for (const ObstacleBody& b : bodies) total += b.particles.size();
+  return overTexelLimit(total, std::to_string(total) + " fixed particles", "the obstacles");
 }
 
 }  // namespace
@@ -60,9 +68,7 @@ void Obstacles::build(const std::vector<ObstacleParams>& params, float radius) {
     } catch (const Error& e) {
       throw Error(at(k) + ": " + e.what());
     }
-  std::size_t total = 0;
-  for (const ObstacleBody& b : bodies) total += b.particles.size();
-  if (total > gl::BufferTexture::maxTexels()) throw Error("obstacles: " + tooMany(total));
+  if (const std::string over = tooManyParticles(bodies); !over.empty()) throw Error("obstacles: " + over);
   m_bodies = std::move(bodies);
   m_radius = radius;
   upload();
@@ -103,10 +109,8 @@ bool Obstacles::update(std::vector<ObstacleParams>& params, float radius, std::s
     }
   }
   if (!changed) return false;
-  std::size_t total = 0;
-  for (const ObstacleBody& b : next) total += b.particles.size();
-  if (total > gl::BufferTexture::maxTexels()) {  // the whole edit refused: back to the bodies as built
-    error = "obstacles not changed: " + tooMany(total);
+  if (const std::string over = tooManyParticles(next); !over.empty()) {  // the whole edit refused
+    error = "obstacles not changed: " + over;
     params.resize(m_bodies.size());
     for (std::size_t k = 0; k < m_bodies.size(); ++k) params[k] = m_bodies[k].built;
     return true;
@@ -182,10 +186,9 @@ void Obstacles::place(const std::vector<ObstacleParams>& params, double time, gl
   hi = glm::max(hi, lo + margin);  // all outside the domain: a token grid
   if (!m_grid || m_grid->params().domainMin != lo || m_grid->params().domainMax != hi) {
     auto grid = std::make_unique<grid::UniformGrid>(m_shaders, grid::GridParams{lo, hi, 2.0f * m_radius}, m_particles);
-    if (grid->cells() + 1 > gl::BufferTexture::maxTexels())
-      throw Error("obstacles: a grid of " + std::to_string(grid->cells()) +
-                  " cells around them, over this GPU's buffer-texture limit of " +
-                  std::to_string(gl::BufferTexture::maxTexels()) + ": make them smaller or the radius larger");
+    const std::string cells = "a grid of " + std::to_string(grid->cells()) + " cells around them";
+    if (const std::string over = overTexelLimit(grid->cells() + 1, cells, "them"); !over.empty())
+      throw Error("obstacles: " + over);
     m_grid = std::move(grid);
   }
 
