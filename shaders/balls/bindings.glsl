@@ -1,16 +1,16 @@
 // Binding points and the work-group size of the balls model, shared by C++ (src/sim/balls) and
-// GLSL: only #define lines. At most 8 storage blocks per kernel (GL 4.3's guaranteed minimum).
+// GLSL: only #define lines. At most 8 storage blocks per kernel (GL 4.3's guaranteed minimum); the
+// obstacles' particles come through buffer textures (common/obstacle_bindings.glsl).
 #define BALLS_POS_IN 0         // vec4 (position m, w = 1), cell order
 #define BALLS_VEL_IN 1         // vec4 (velocity m/s, w = foam), cell order
 #define BALLS_POS_OUT 2        // vec4, written
 #define BALLS_VEL_OUT 3        // vec4, written
 #define BALLS_ACC 4            // vec4 acceleration m/s^2 (velocity Verlet)
 #define BALLS_CELL_START 5     // uint per grid cell + 1 (grid/bindings.glsl's layout)
-#define BALLS_OBST_POS 6       // vec4 obstacle particles (world, w = obstacle index), obstacle-grid cell order
-#define BALLS_OBST_CELL_START 7  // uint per obstacle-grid cell + 1
-#define BALLS_NEXT_CELL_COUNT 6      // collide with COUNT_CELLS (no obstacle): the grid's cellCount,
-#define BALLS_NEXT_INDEX_IN_CELL 7   // indexInCell
-#define BALLS_NEXT_PARTICLE_CELL 4   // and particleCell, counted at the new positions for the next step (Euler)
+#define BALLS_STEP_OUT 2       // collide: vec4 new positions (Euler) or accelerations (velocity Verlet)
+#define BALLS_NEXT_CELL_COUNT 6     // Euler's collide counts the balls into the next step's grid at the
+#define BALLS_NEXT_INDEX_IN_CELL 7  // positions it writes: the grid's cellCount, indexInCell
+#define BALLS_NEXT_PARTICLE_CELL 4  // and particleCell
 #define BALLS_OBST_POSES 0     // uniform block (std140): each obstacle's pose and velocity (obstacle_poses.glsl)
 #define BALLS_MAX_OBSTACLES 16
 #define BALLS_STATS 2          // stats pass: BALLS_STATS_VALUES floats per work group (stats_layout.glsl; reuses POS_OUT)

@@ -10,30 +10,19 @@ layout(local_size_x = BALLS_GROUP_SIZE) in;
 layout(std430, binding = BALLS_POS_IN) readonly buffer PosIn { vec4 posIn[]; };
 layout(std430, binding = BALLS_VEL_IN) readonly buffer VelIn { vec4 velIn[]; };
 layout(std430, binding = BALLS_VEL_OUT) writeonly buffer VelOut { vec4 velOut[]; };
-// The step's other output: the acceleration (velocity Verlet) or the new position (Euler). One
-// declaration keeps the kernel at 8 storage blocks with obstacles (GL 4.3's minimum).
+// The step's other output: the new position (Euler) or the acceleration (velocity Verlet).
+layout(std430, binding = BALLS_STEP_OUT) writeonly buffer StepOut { vec4 stepOut[]; };
 #ifdef INTEGRATOR_VERLET
-#define STEP_OUT_BINDING BALLS_ACC
 uniform float uKick;  // fraction of dt·a added to the (half-step) velocity: 0.5, or 0 to only evaluate a
 #else
-#define STEP_OUT_BINDING BALLS_POS_OUT
-#endif
-layout(std430, binding = STEP_OUT_BINDING) writeonly buffer StepOut { vec4 stepOut[]; };
-
-#include "balls/contact.glsl"
-// Bindings 6 and 7: the obstacles' or the next count's (included here, outside any #if:
-// the shader library inlines a file at its first #include only).
-#include "balls/shared_slots.glsl"
-
-#ifdef COUNT_CELLS
-// The next step's grid count (grid_count.comp) done here, at the positions this pass writes: no
-// count pass reading them again. Only without obstacles (8 storage blocks): the counts
-// and the slots take bindings 6 and 7 (balls/shared_slots.glsl), the cells Verlet's binding 4.
-#if defined(INTEGRATOR_VERLET)
-#error "COUNT_CELLS takes binding 4, Verlet's accelerations: Balls::countsInCollide() keeps it from Verlet"
-#endif
+// Euler writes the positions of the next step: it counts each ball into the next step's grid
+// there (grid_count.comp's work, src/grid/grid.h), so the next step starts at the scan.
+layout(std430, binding = BALLS_NEXT_CELL_COUNT) buffer NextCellCount { uint nextCellCount[]; };
+layout(std430, binding = BALLS_NEXT_INDEX_IN_CELL) writeonly buffer NextIndexInCell { uint nextIndexInCell[]; };
 layout(std430, binding = BALLS_NEXT_PARTICLE_CELL) writeonly buffer NextParticleCell { uint nextParticleCell[]; };
 #endif
+
+#include "balls/contact.glsl"
 
 vec3 gAccel;
 vec3 gVelocity = vec3(0.0);  // set in main(); initialised so that no compiler warns of its use in onContact()
@@ -78,11 +67,9 @@ void stepBall(uint i) {
   foam = min(1.0, (foam + uFoamGain * uDt * length(gVelocity)) * uFoamDecay);
   stepOut[o] = vec4(x, posIn[s].w);  // x
   velOut[o] = vec4(v, foam);
-#ifdef COUNT_CELLS
   const uint cell = cellOf(x);
   nextParticleCell[i] = cell;
   nextIndexInCell[i] = atomicAdd(nextCellCount[cell], 1u);
-#endif
 #endif
 }
 

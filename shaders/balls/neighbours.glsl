@@ -1,6 +1,7 @@
 // Every contact of the ball at p: the other balls within 2r in the 27 surrounding cells of the
 // uniform grid, and the obstacles' fixed particles, placed in the world this step and found
-// through their own grid; each moves with its obstacle (obstacle_poses.glsl, index k in w).
+// through their own grid (common/obstacle_grid.glsl); each moves with its obstacle
+// (obstacle_poses.glsl, index k in w).
 // The including kernel declares the cell-ordered posIn[] and velIn[] buffers and
 //   void onContact(vec3 n, float overlap, vec3 otherVelocity, float massRatio, float share);
 // before including this file (n points from the other body to the ball, world frame).
@@ -10,13 +11,6 @@
 #include "common/grid.glsl"
 
 layout(std430, binding = BALLS_CELL_START) readonly buffer CellStart { uint cellStart[]; };
-#include "balls/shared_slots.glsl"  // obstaclePos[], obstacleCellStart[] (HAS_OBSTACLE)
-#ifdef HAS_OBSTACLE
-uniform vec3 uObstacleOrigin;  // obstacle grid (world), cell 2r
-uniform float uObstacleInvCell;
-uniform uvec3 uObstacleDims;
-#include "balls/obstacle_poses.glsl"
-#endif
 
 uniform float uRadius;  // m
 // The first ball of the window posIn[] and velIn[] are bound from (src/gl/window.h): 0 when they
@@ -50,34 +44,33 @@ void forEachGridContact(vec3 p, float reach) {
     }
 }
 
-// Ball i at p: every ball within 2r, then every obstacle particle.
+#ifdef HAS_OBSTACLE
+// Scenes with obstacles only: compiled into every kernel, the search made the collide 12–15%
+// slower on obstacle-free scenes (docs/ARCHITECTURE.md, "Rejected designs").
+#include "balls/obstacle_poses.glsl"
+
+// An obstacle particle at q.xyz of obstacle q.w, within reach of the ball at gContactPos.
+vec3 gContactPos;
+float gContactReach;
+void onObstacleParticle(uint j, vec4 q) {
+  const vec3 d = gContactPos - q.xyz;
+  const float dist2 = dot(d, d);
+  if (dist2 >= gContactReach * gContactReach || dist2 == 0.0) return;
+  const float dist = sqrt(dist2);
+  onContact(d / dist, gContactReach - dist, obstacleVelocity(uint(q.w), q.xyz), 1.0, 1.0);
+}
+#include "common/obstacle_grid.glsl"
+#endif
+
+// Ball i at p: every ball within 2r, then every obstacle particle (the obstacle grid's cells are
+// 2r: the 27 around p's).
 void forEachContact(uint i, vec3 p) {
   const float reach = 2.0 * uRadius;
   forEachGridContact(p, reach);
 #ifdef HAS_OBSTACLE
-  // The grid covers every obstacle particle a ball can reach; balls more than a cell outside it
-  // touch none. Rows of three cells are contiguous, as above.
-  const vec3 g = (p - uObstacleOrigin) * uObstacleInvCell;
-  if (all(greaterThan(g, vec3(-1.0))) && all(lessThan(g, vec3(uObstacleDims) + 1.0))) {
-    const ivec3 last = ivec3(uObstacleDims) - 1;
-    const ivec3 oc = clamp(ivec3(floor(g)), ivec3(0), last);
-    const int ox0 = max(oc.x - 1, 0), ox1 = min(oc.x + 1, last.x);
-    for (int dz = -1; dz <= 1; ++dz)
-      for (int dy = -1; dy <= 1; ++dy) {
-        const ivec3 row = ivec3(ox0, oc.y + dy, oc.z + dz);
-        if (row.y < 0 || row.z < 0 || row.y > last.y || row.z > last.z) continue;
-        const uint first = uint(row.x) + uObstacleDims.x * (uint(row.y) + uObstacleDims.y * uint(row.z));
-        const uint end = obstacleCellStart[first + uint(ox1 - ox0) + 1u];
-        for (uint j = obstacleCellStart[first]; j < end; ++j) {
-          const vec4 q = obstaclePos[j];
-          const vec3 d = p - q.xyz;
-          const float dist2 = dot(d, d);
-          if (dist2 >= reach * reach || dist2 == 0.0) continue;
-          const float dist = sqrt(dist2);
-          onContact(d / dist, reach - dist, obstacleVelocity(uint(q.w), q.xyz), 1.0, 1.0);
-        }
-      }
-  }
+  gContactPos = p;
+  gContactReach = reach;
+  forEachObstacleParticle(p, 1);
 #endif
 }
 

@@ -1,5 +1,5 @@
 // Each obstacle's rigid pose this step (src/sim/balls/obstacle_pose.h evaluates it from the time,
-// src/sim/balls/obstacles.cpp fills the block): a fixed particle of obstacle k with own-frame
+// src/sim/water/obstacles.cpp fills the block): a fixed particle of obstacle k with own-frame
 // position b is at c_k + R_k·b and moves with v_k + ω_k × (x − c_k).
 #ifndef BALLS_OBSTACLE_POSES_GLSL
 #define BALLS_OBSTACLE_POSES_GLSL

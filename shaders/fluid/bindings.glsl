@@ -1,15 +1,12 @@
 // Binding points and the work-group size of the fluid model (src/sim/fluid), shared by C++ and
-// GLSL: only #define lines. At most 8 storage blocks per kernel (GL 4.3's minimum), so a slot
-// serves two arrays where no kernel binds both (see each line).
+// GLSL: only #define lines. At most 8 storage blocks per kernel (GL 4.3's minimum); the
+// obstacles' particles come through buffer textures (common/obstacle_bindings.glsl).
 #define FLUID_POS 0            // vec4 positions x (m, w = 1), cell order: predict, velocity
-#define FLUID_OBST_VOLUME 0    // vec4 (x = volume m³) per obstacle particle, obstacle-grid order: kernels with obstacles
 #define FLUID_VEL_IN 1         // vec4 velocities (m/s, w = foam)
 #define FLUID_PRED 2           // vec4 predicted positions p (m, w = foam until the velocity pass), cell order
 #define FLUID_OUT 3            // vec4, written: predicted positions, velocities, statistics
 #define FLUID_LAMBDA 4         // vec2 (lambda, rho/rho0) per particle; vec4 vorticity in the vorticity passes
 #define FLUID_CELL_START 5     // uint per grid cell + 1 (grid/bindings.glsl's layout), cell = h / 2
-#define FLUID_OBST_POS 6       // = BALLS_OBST_POS: obstacle particles (world, w = obstacle index)
-#define FLUID_OBST_CELL_START 7  // = BALLS_OBST_CELL_START
 #ifndef FLUID_GROUP_SIZE
 #define FLUID_GROUP_SIZE 128   // local size of every fluid kernel (one particle per invocation)
 #endif

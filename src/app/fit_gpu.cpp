@@ -12,6 +12,7 @@
 #include "gl/gpu_profiler.h"
 #include "render/target.h"
 #include "scene/scene.h"
+#include "sim/balls/balls_params.h"
 #include "sim/fluid/fluid_params.h"
 
 namespace tidepool {
@@ -32,7 +33,7 @@ io::Json atResolution(const io::Json& overrides, double resolution) {
 // The resolution the scene states (its file's, or the overrides'): where the search starts.
 double statedResolution(const Scene& scene) {
   if (scene.params.holds<balls::Params>()) return scene.params.model<balls::Params>().resolution;
-  if (scene.params.holds<fluid::Params>()) return scene.params.model<fluid::Params>().water.resolution;
+  if (scene.params.holds<fluid::Params>()) return scene.params.model<fluid::Params>().resolution;
   throw Error("--fit-gpu refines water (balls or fluid scenes, particles.resolution); '" + scene.name +
               "' runs model " + scene.model);
 }

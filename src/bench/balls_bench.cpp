@@ -20,7 +20,7 @@ struct Options {
 
 // The rows of the table: the scene's parameters once per size and grid order.
 std::vector<balls::Params> variants(const Options& o, const balls::Params& base) {
-  const bool lattice = base.fill == balls::Fill::Lattice;
+  const bool lattice = base.fill == water::Fill::Lattice;
   const std::vector<bool> orders =
       o.deterministic.empty() ? std::vector<bool>{base.deterministic} : parseOnOff(o.deterministic, "--deterministic");
   std::vector<balls::Params> out;

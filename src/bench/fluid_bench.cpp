@@ -31,7 +31,7 @@ std::vector<int> parseIterations(const std::string& text) {
 
 // The spacing that fills the scene's block with about n particles (one per d³).
 float spacingFor(const fluid::Params& p, std::size_t n) {
-  const balls::Params& w = p.water;
+  const water::Setup& w = p;
   const glm::vec3 extent = glm::max(glm::min(w.fillMax, w.domainMax) - glm::max(w.fillMin, w.domainMin), 0.0f);
   return float(std::cbrt(double(extent.x) * extent.y * extent.z / double(n)));
 }
@@ -41,11 +41,11 @@ int run(Env& env, const std::string& sceneName, const std::string& sizes, const 
   const Scene scene = loadScene(resolveScenePath(sceneName));
   const fluid::Params base = fluidScene(scene).model;
   const StepWindow w = parseStepWindow(window);
-  const bool block = base.water.fill == balls::Fill::Block;
+  const bool block = base.fill == water::Fill::Block;
   std::printf("fluid benchmark on %s: scene %s, steps %d..%d, medians per step\n", env.device.c_str(),
               scene.name.c_str(), w.first, w.last);
-  const std::vector<bool> orders = deterministic.empty() ? std::vector<bool>{base.water.deterministic}
-                                                         : parseOnOff(deterministic, "--deterministic");
+  const std::vector<bool> orders =
+      deterministic.empty() ? std::vector<bool>{base.deterministic} : parseOnOff(deterministic, "--deterministic");
   Table table({"particles", "spacing", "iters", "determ.", "cells", "predict ms", "count ms", "scan ms", "reorder ms",
                "lambda ms", "delta ms", "velocity ms", "viscosity ms", "ms/step", "steps/s", "bytes/particle"});
   const std::vector<std::size_t> counts = block ? parseSizes(sizes) : std::vector<std::size_t>{0};
@@ -53,16 +53,16 @@ int run(Env& env, const std::string& sceneName, const std::string& sizes, const 
     for (int k : parseIterations(iterations))
       for (bool stable : orders) {
         fluid::Params p = base;
-        p.water.deterministic = stable;
+        p.deterministic = stable;
         if (block) {
-          p.spacing = spacingFor(base, n);
-          if (p.water.maxParticles > 0) p.water.maxParticles = std::max(p.water.maxParticles, int(n + n / 8));
+          p.setSpacing(spacingFor(base, n));
+          if (p.maxParticles > 0) p.maxParticles = std::max(p.maxParticles, int(n + n / 8));
         }
         p.iterations = k;
         fluid::Fluid model(env.shaders, p);
         const PassTimes t = timePasses(w.first, w.last - w.first, [&](gl::GpuProfiler& g) { model.stepOnce(&g); });
         const double perStep = t.frameMs();
-        table.add({std::to_string(model.count()), fixed(p.spacing, 5), std::to_string(k), stable ? "on" : "off",
+        table.add({std::to_string(model.count()), fixed(p.spacing(), 5), std::to_string(k), stable ? "on" : "off",
                    std::to_string(model.cells()), fixed(t.median("fluid.predict"), 4),
                    fixed(t.median("fluid.count"), 4), fixed(t.median("fluid.scan"), 4),
                    fixed(t.median("fluid.reorder"), 4), fixed(t.median("fluid.lambda"), 4),

@@ -46,7 +46,7 @@ int run(Env& env, const Options& o) {
   const balls::Params& base = params.model;
   const glm::ivec2 image = parseImage(o.image);
   const std::vector<BallsRaster> rasters = parseRaster(o.raster);
-  const bool lattice = base.fill == balls::Fill::Lattice;
+  const bool lattice = base.fill == water::Fill::Lattice;
   std::printf("render benchmark on %s: scene %s, %dx%d, %d settling steps, medians of %d frames\n", env.device.c_str(),
               scene.name.c_str(), image.x, image.y, o.settle, env.common.repeats);
   Table table({"balls", "mode", "raster", "scene ms", "gbuffer ms", "thickness ms", "splat ms", "id ms", "resolve ms",

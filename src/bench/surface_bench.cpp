@@ -31,10 +31,10 @@ struct Options {
 // Overrides of a block-filled scene's params for about n particles (spacing for the fluid's
 // cubic lattice, radius for the balls' hexagonal packing: √2 per (2r)³).
 io::Json particleOverrides(const Scene& scene, std::size_t n) {
-  const balls::Params w = scene.model == "fluid"   ? fluid::resolvedWater(fluidScene(scene).model)
-                          : scene.model == "balls" ? ballsParams(scene)
-                                                   : throw Error("--particles needs a balls or fluid scene");
-  if (w.fill != balls::Fill::Block) throw Error("--particles needs a block-filled scene (e.g. bench-fluid)");
+  const water::Setup w = scene.model == "fluid"   ? water::Setup(fluidScene(scene).model)
+                         : scene.model == "balls" ? water::Setup(ballsParams(scene))
+                                                  : throw Error("--particles needs a balls or fluid scene");
+  if (w.fill != water::Fill::Block) throw Error("--particles needs a block-filled scene (e.g. bench-fluid)");
   const glm::vec3 extent = glm::max(glm::min(w.fillMax, w.domainMax) - glm::max(w.fillMin, w.domainMin), 0.0f);
   const double volume = double(extent.x) * extent.y * extent.z;
   if (scene.model == "fluid") return {{"particles", {{"spacing", std::cbrt(volume / double(n))}}}};

@@ -16,8 +16,8 @@
 #include "scene/balls_stage.h"
 #include "scene/fluid_stage.h"
 #include "sim/balls/balls.h"
-#include "sim/balls/balls_init.h"
 #include "sim/fluid/fluid.h"
+#include "sim/water/water_init.h"
 
 namespace tidepool::cli {
 namespace {
@@ -58,7 +58,7 @@ class Run {
       throw Error("validate runs balls and fluid scenes; '" + scene.name + "' is a " + scene.model + " scene");
     }
   }
-  const balls::Params& water() const { return m_water; }
+  const water::Setup& water() const { return m_water; }
   float radius() const { return m_balls ? m_balls->radius() : m_fluid->radius(); }
   double time() const { return m_balls ? m_balls->time() : m_fluid->time(); }
   void step() {
@@ -90,7 +90,7 @@ class Run {
  private:
   std::unique_ptr<balls::Balls> m_balls;
   std::unique_ptr<fluid::Fluid> m_fluid;
-  balls::Params m_water;
+  water::Setup m_water;
   fluid::DensityProbe m_probe;
 };
 
@@ -103,9 +103,9 @@ int validate(const std::string& sceneName, const std::string& probeText, int eve
   auto context = gl::createHeadlessContext({gl::parseBackend(backend), false});
   gl::ShaderLibrary shaders(gl::ShaderLibrary::findRoot());
   Run model(scene, shaders);
-  const balls::Params& params = model.water();
+  const water::Setup& params = model.water();
   // Scales of the dam-break probes: the initial column's width a and height h0.
-  const bool column = params.fill == balls::Fill::Block;
+  const bool column = params.fill == water::Fill::Block;
   const glm::vec3 lo = column ? glm::max(params.fillMin, params.domainMin) : params.domainMin;
   const glm::vec3 hi = column ? glm::min(params.fillMax, params.domainMax) : params.domainMax;
   const double a = hi.x - lo.x, h0 = hi.z - lo.z;

@@ -23,6 +23,12 @@ Buffer::Buffer(std::size_t bytes, const void* data, GLenum usage) : m_handle(Han
     throw GlError("the GL driver made a buffer of " + std::to_string(made) + " bytes when " + std::to_string(bytes) +
                   " were asked");
   m_size = bytes;
+  markWritten();
+}
+
+void Buffer::markWritten() {
+  static std::uint64_t versions = 0;  // GL objects live on one thread
+  m_version = ++versions;
 }
 
 void Buffer::resize(std::size_t bytes, GLenum usage) { *this = Buffer(bytes, nullptr, usage); }
@@ -33,6 +39,7 @@ void Buffer::upload(const void* data, std::size_t bytes, std::size_t offset) {
   glBindBuffer(GL_COPY_WRITE_BUFFER, id());
   glBufferSubData(GL_COPY_WRITE_BUFFER, GLintptr(offset), GLsizeiptr(bytes), data);
   glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+  markWritten();
 }
 
 void Buffer::download(void* data, std::size_t bytes, std::size_t offset) const {
@@ -50,6 +57,7 @@ void Buffer::fillZero() {
   glBindBuffer(GL_COPY_WRITE_BUFFER, id());
   glClearBufferData(GL_COPY_WRITE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
   glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+  markWritten();
 }
 
 void Buffer::copyTo(Buffer& dst, std::size_t bytes, std::size_t srcOffset, std::size_t dstOffset) const {
@@ -62,6 +70,7 @@ void Buffer::copyTo(Buffer& dst, std::size_t bytes, std::size_t srcOffset, std::
                       GLsizeiptr(bytes));
   glBindBuffer(GL_COPY_READ_BUFFER, 0);
   glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+  dst.markWritten();
 }
 
 void Buffer::bindBase(GLenum target, GLuint index) const { glBindBufferBase(target, index, id()); }

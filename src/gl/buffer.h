@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -20,6 +21,11 @@ class Buffer {
 
   GLuint id() const { return m_handle.get(); }
   std::size_t size() const { return m_size; }  // bytes
+  // Changes with every write made through this class or gl::BufferOps (made, uploaded, filled,
+  // copied into), never with a kernel's: whoever keeps something derived from the contents (the
+  // balls' grid counts) can tell that someone else wrote them since. Unique across buffers.
+  std::uint64_t version() const { return m_version; }
+  void markWritten();
   explicit operator bool() const { return bool(m_handle); }
 
   void resize(std::size_t bytes, GLenum usage = GL_DYNAMIC_COPY);  // contents are lost
@@ -48,6 +54,7 @@ class Buffer {
  private:
   Handle<Kind::Buffer> m_handle;
   std::size_t m_size = 0;
+  std::uint64_t m_version = 0;
 };
 
 }  // namespace tidepool::gl

@@ -36,6 +36,7 @@ void BufferOps::fill(Buffer& buffer, uint32_t value, std::size_t bytes) const {
     m_fill.dispatchThreads((n / 4 + 3) / 4, {.words = unsigned(n / 4), .value = value});
   }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  buffer.markWritten();
 }
 
 void BufferOps::copy(const Buffer& src, Buffer& dst, std::size_t bytes) const {
@@ -50,6 +51,7 @@ void BufferOps::copy(const Buffer& src, Buffer& dst, std::size_t bytes) const {
     m_copy.dispatchThreads((n / 4 + 3) / 4, {.words = unsigned(n / 4)});
   }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  dst.markWritten();
 }
 
 }  // namespace tidepool::gl

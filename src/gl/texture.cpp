@@ -83,4 +83,21 @@ void Texture2D::generateMipmaps() {
   glBindTexture(GL_TEXTURE_2D, 0);
 }
 
+std::size_t BufferTexture::maxTexels() {
+  static const std::size_t texels = [] {
+    GLint v = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &v);
+    return std::size_t(v);
+  }();
+  return texels;
+}
+
+void BufferTexture::bind(GLuint unit, GLuint buffer, GLenum internalFormat) {
+  if (!m_handle) m_handle = Handle<Kind::Texture>::generate();
+  glActiveTexture(GL_TEXTURE0 + unit);
+  glBindTexture(GL_TEXTURE_BUFFER, m_handle.get());
+  glTexBuffer(GL_TEXTURE_BUFFER, internalFormat, buffer);
+  glActiveTexture(GL_TEXTURE0);
+}
+
 }  // namespace tidepool::gl

@@ -94,16 +94,16 @@ BallsView::BallsView(gl::ShaderLibrary& shaders)
 
 const gl::Texture2D& BallsView::composedSurface() const { return m_blurred ? m_blur.result() : m_gbuffer.surface(); }
 
-BallsScene BallsView::sceneOf(const sim::ParticleWater& model) {
+BallsScene BallsView::sceneOf(const water::ParticleWater& model) {
   // The box turns on screen while gravity stays pointing down (water-webgpu's domain rotation).
-  const balls::Params& p = model.water();
+  const water::Setup& p = model.water();
   const glm::vec3 centre = 0.5f * (p.domainMin + p.domainMax);
   glm::mat4 world = glm::translate(glm::mat4(1.0f), centre);
   world = glm::rotate(world, -model.domainRotation(), glm::vec3(1, 0, 0));
   world = glm::translate(world, -centre);
   BallsScene s;
   s.water = {&model.positions(), &model.velocities(), model.count(), model.radius(), world};
-  const balls::Obstacles& obstacles = model.obstacles();
+  const water::Obstacles& obstacles = model.obstacles();
   if (m_params.showObstacle && obstacles.particles() > 0) {
     // Each obstacle's mesh (own frame) where the model placed its particles at the last step.
     m_meshes.update(obstacles, model.radius());
@@ -120,8 +120,8 @@ BallsScene BallsView::sceneOf(const sim::ParticleWater& model) {
   return s;
 }
 
-void BallsView::render(const sim::ParticleWater& model, RenderTarget& target, gl::GpuProfiler& profiler) {
-  const balls::Params& p = model.water();
+void BallsView::render(const water::ParticleWater& model, RenderTarget& target, gl::GpuProfiler& profiler) {
+  const water::Setup& p = model.water();
   const glm::vec3 centre = 0.5f * (p.domainMin + p.domainMax);
   m_camera.fit(centre, 0.5f * glm::length(p.domainMax - p.domainMin));
   const BallsCamera camera =

@@ -28,7 +28,7 @@
 #include "render/orbit_camera.h"
 #include "render/target.h"
 #include "render/water_blur.h"
-#include "sim/particle_water.h"
+#include "sim/water/particle_water.h"
 
 namespace tidepool {
 
@@ -44,7 +44,7 @@ class BallsView {
   BallsViewParams& params() { return m_params; }
   OrbitCamera& camera() { return m_camera; }
   // The model's particles (balls or fluid), obstacles and walls from the orbit camera (near/far fitted to the domain).
-  void render(const sim::ParticleWater& model, RenderTarget& target, gl::GpuProfiler& profiler);
+  void render(const water::ParticleWater& model, RenderTarget& target, gl::GpuProfiler& profiler);
   // Any spheres from any camera (tests, benchmarks); camera size = target size.
   void render(const BallsScene& scene, const BallsCamera& camera, RenderTarget& target, gl::GpuProfiler& profiler);
 
@@ -59,7 +59,7 @@ class BallsView {
   // Clears the target's depth and draws the obstacles inside the returned rectangle only (the
   // whole window for the fragment raster, whose passes test against the depth attachment).
   WindowRect drawScene(const BallsScene& scene, const BallsCamera& camera, RenderTarget& target);
-  BallsScene sceneOf(const sim::ParticleWater& model);  // builds the meshes of new or reshaped obstacles
+  BallsScene sceneOf(const water::ParticleWater& model);  // builds the meshes of new or reshaped obstacles
   gl::ShaderLibrary& m_shaders;
   BallsViewParams m_params;
   OrbitCamera m_camera;

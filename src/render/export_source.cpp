@@ -49,7 +49,7 @@ std::size_t ExportSource::bytes() const {
   return sum;
 }
 
-ExportSource waterSource(const sim::ParticleWater& water) {
+ExportSource waterSource(const water::ParticleWater& water) {
   const std::size_t n = water.count(), bytes = n * sizeof(glm::vec4);
   return {{{&water.positions(), bytes}, {&water.velocities(), bytes}},
           [n](std::span<const std::byte> copied) { return io::ExportFrame(decodeWater(copied, n)); }};
@@ -166,11 +166,11 @@ ExportSource ripplesSource(const ripples::Ripples& ripples) {
   return s;
 }
 
-io::TriangleMesh obstacleSurface(const balls::Obstacles& obstacles, float radius) {
+io::TriangleMesh obstacleSurface(const water::Obstacles& obstacles, float radius) {
   io::TriangleMesh out;
   for (std::size_t k = 0; k < obstacles.size(); ++k) {
-    const balls::ObstacleBody& body = obstacles.body(k);
-    const balls::ObstaclePose& pose = obstacles.pose(k);
+    const water::ObstacleBody& body = obstacles.body(k);
+    const water::ObstaclePose& pose = obstacles.pose(k);
     const auto first = unsigned(out.vertices.size());
     if (body.mesh) {
       for (const glm::vec3& v : body.mesh->vertices) out.vertices.push_back(pose.place(v));

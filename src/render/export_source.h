@@ -21,12 +21,12 @@
 #include "io/export_series.h"
 #include "io/obj.h"
 #include "io/point_cloud.h"
-#include "sim/balls/obstacles.h"
 #include "sim/fluid/fluid.h"
 #include "sim/life/life.h"
-#include "sim/particle_water.h"
 #include "sim/ripples/ripples.h"
 #include "sim/swarm/swarm.h"
+#include "sim/water/obstacles.h"
+#include "sim/water/particle_water.h"
 
 namespace tidepool {
 
@@ -38,7 +38,7 @@ struct ExportSource {
   std::size_t bytes() const;  // of all ranges
 };
 
-ExportSource waterSource(const sim::ParticleWater& water);  // balls (and the fluid without its densities)
+ExportSource waterSource(const water::ParticleWater& water);  // balls (and the fluid without its densities)
 ExportSource fluidSource(const fluid::Fluid& fluid);
 ExportSource lifeSource(const life::Life& life);
 // `colors`: the renderer's packUnorm4x8 colour per particle (image colour mode), or null.
@@ -48,6 +48,6 @@ ExportSource ripplesSource(const ripples::Ripples& ripples);
 // The obstacles as one triangle mesh where they were placed at the last step: a mesh obstacle's
 // file triangles, any other shape the surface around its fixed particles (render/obstacle_mesh.h),
 // vertices welded. Empty when there are none.
-io::TriangleMesh obstacleSurface(const balls::Obstacles& obstacles, float radius);
+io::TriangleMesh obstacleSurface(const water::Obstacles& obstacles, float radius);
 
 }  // namespace tidepool

@@ -221,10 +221,10 @@ std::pair<glm::vec3, glm::vec3> meshBounds(const std::vector<MeshVertex>& mesh) 
   return {lo, hi};
 }
 
-void ObstacleMeshes::update(const balls::Obstacles& obstacles, float radius) {
+void ObstacleMeshes::update(const water::Obstacles& obstacles, float radius) {
   std::vector<Entry> next(obstacles.size());
   for (std::size_t k = 0; k < obstacles.size(); ++k) {
-    const balls::ObstacleBody& body = obstacles.body(k);
+    const water::ObstacleBody& body = obstacles.body(k);
     const auto old = std::find_if(m_meshes.begin(), m_meshes.end(), [&](const Entry& e) { return e.id == body.id; });
     if (old != m_meshes.end()) {
       next[k] = std::move(*old);

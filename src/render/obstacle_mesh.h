@@ -42,7 +42,7 @@ std::pair<glm::vec3, glm::vec3> meshBounds(const std::vector<MeshVertex>& mesh);
 // (ObstacleBody::id), so moving, turning, adding or removing others rebuilds nothing.
 class ObstacleMeshes {
  public:
-  void update(const balls::Obstacles& obstacles, float radius);  // the meshes of the obstacles' bodies
+  void update(const water::Obstacles& obstacles, float radius);  // the meshes of the obstacles' bodies
   std::size_t size() const { return m_meshes.size(); }
   const gl::Buffer& vertices(std::size_t k) const { return m_meshes[k].vertices; }  // of obstacles.body(k)
   std::size_t count(std::size_t k) const { return m_meshes[k].count; }              // vertices

@@ -1,6 +1,7 @@
 #include "scene/scene.h"
 
 #include "scene/param_json.h"
+#include "sim/balls/balls_params.h"
 #include "sim/fluid/fluid_params.h"
 
 namespace tidepool {
@@ -55,16 +56,14 @@ fs::path resolveScenePath(const std::string& arg) {
 
 namespace {
 // A water scene states particles.resolution R beside its own spacing (or --resolution sets it): the
-// params read hold that spacing until here, then are refined R times (balls::refine), after method
+// params read hold that spacing until here, then are refined R times, after method
 // auto, which picks for the scene as measured. The params keep R as the record of what was done.
-float& resolutionOf(balls::Params& p) { return p.resolution; }
-float& resolutionOf(fluid::Params& p) { return p.water.resolution; }
-
+// (refine() is balls::refine for the balls, water::refine for the fluid.)
 template <class P>
 bool refineStated(SceneParams& params, const std::string& where) {
   if (!params.holds<P>()) return false;
   P& p = params.model<P>();
-  float& record = resolutionOf(p);
+  float& record = p.resolution;
   const double stated = record;
   if (stated == 1.0) return true;
   record = 1.0f;

@@ -44,7 +44,7 @@ balls::Params settleBlock(int across, const Method& m, double dt) {
   const float width = 2 * kRadius * float(across);
   p.domainMin = glm::vec3(0.0f);
   p.domainMax = glm::vec3(width, width, 6 * kRadius * kLayers);
-  p.fill = balls::Fill::None;
+  p.fill = water::Fill::None;
   p.contact = m.contact;
   p.integrator = m.integrator;
   p.dt = float(dt);

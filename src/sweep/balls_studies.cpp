@@ -16,7 +16,7 @@ namespace {
 // on dt, so a simulated second costs this / dt).
 double msPerStep(gl::ShaderLibrary& shaders, int n, balls::Integrator integrator) {
   balls::Params p;
-  p.fill = balls::Fill::Lattice;
+  p.fill = water::Fill::Lattice;
   p.latticeCount = n;
   p.latticeScaling = false;
   p.radius = 0.5f / std::cbrt(float(n)) * 0.98f;

@@ -49,7 +49,7 @@ struct Trial {
 };
 
 Trial trial(gl::ShaderLibrary& shaders, fluid::Params p, double dt, double duration) {
-  p.water.dt = float(dt);
+  p.dt = float(dt);
   WaterRun run(shaders, p);
   Trial t;
   for (int j = 1; j * kSampleEvery <= duration + 1e-9 && t.stable; ++j) {
@@ -74,15 +74,15 @@ struct Setup {
 
 Setup setup(const char* name, const char* file) {
   Setup s{name, file, fluidScene(loadScene(resolveScenePath(file))).model};
-  const balls::Params w = fluid::resolvedWater(s.params);
-  s.depth = w.fill == balls::Fill::Slab ? double(w.slabHeight) : balls::columnScales(w).height;
-  s.gradients = fluid::restLattice(s.params.spacing, s.params.h(), fluid::Packing::Cubic).gradients;
+  const water::Setup& w = s.params;
+  s.depth = w.fill == water::Fill::Slab ? double(w.slabHeight) : balls::columnScales(w).height;
+  s.gradients = fluid::restLattice(s.params.spacing(), s.params.h(), fluid::Packing::Cubic).gradients;
   return s;
 }
 
 // (1 + ε)·S·g·H: the floor compression is this × dt² / k.
 double compressionPerStep(const Setup& s) {
-  return (1.0 + double(s.params.relaxation)) * s.gradients * std::abs(double(s.params.water.gravity.z)) * s.depth;
+  return (1.0 + double(s.params.relaxation)) * s.gradients * std::abs(double(s.params.gravity.z)) * s.depth;
 }
 
 Row limitRow(const std::string& method, const Setup& s, int k, double dt, double cost, double speed) {
@@ -90,7 +90,7 @@ Row limitRow(const std::string& method, const Setup& s, int k, double dt, double
   row.method = method;
   row.dt = dt;
   char resolution[64];
-  std::snprintf(resolution, sizeof resolution, "%s, d = %.3g m", s.name, double(s.params.spacing));
+  std::snprintf(resolution, sizeof resolution, "%s, d = %.3g m", s.name, double(s.params.spacing()));
   row.resolution = resolution;
   row.stable = dt > 0;  // 0: unstable at the smallest dt tried
   row.costMsPerSimS = cost;
@@ -149,7 +149,7 @@ Result stability(Env& env) {
   for (const Row& row : measured) r.rows.push_back(row);
   // The theories: the front's CFL bound (the dam break), the floor compression C* (both scenes).
   for (const Setup& s : scenes) {
-    const double g = std::abs(double(s.params.water.gravity.z)), front = 2.0 * std::sqrt(g * s.depth);
+    const double g = std::abs(double(s.params.gravity.z)), front = 2.0 * std::sqrt(g * s.depth);
     const bool flows = std::string(s.name) == "dam break";
     if (flows)
       std::printf("  %s: theory: CFL of the front 2 sqrt(gH): dt <= %.4g ms\n", s.name, 1e3 * s.params.h() / front);

@@ -3,9 +3,9 @@
 #include <cmath>
 
 #include "sim/balls/balls.h"
-#include "sim/balls/balls_init.h"
 #include "sim/balls/measure/balls_measure.h"
 #include "sim/fluid/fluid.h"
+#include "sim/water/water_init.h"
 
 namespace tidepool::sweep {
 
@@ -22,11 +22,11 @@ WaterRun::WaterRun(gl::ShaderLibrary& shaders, const balls::Params& params) : m_
 
 WaterRun::WaterRun(gl::ShaderLibrary& shaders, const fluid::Params& params) : m_probe(shaders) {
   fluid::Params p = params;
-  p.water.substeps = 1;
+  p.substeps = 1;
   m_profiler.setEnabled(false);
   m_fluid = std::make_unique<fluid::Fluid>(shaders, p);
   m_water = m_fluid->water();
-  m_dt = double(p.water.dt);
+  m_dt = double(p.dt);
   m_radius = m_fluid->radius();
   m_width = balls::columnScales(m_water).width;
 }

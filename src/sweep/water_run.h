@@ -74,7 +74,7 @@ class WaterRun {
   std::unique_ptr<fluid::Fluid> m_fluid;
   fluid::DensityProbe m_probe;
   gl::GpuProfiler m_profiler;  // disabled: the watched steps' frames time nothing
-  balls::Params m_water;       // resolved: domain, fill, gravity
+  water::Setup m_water;        // resolved: domain, fill, gravity
   double m_dt = 0, m_radius = 0, m_width = 0, m_ms = 0;
   long m_steps = 0;
   bool m_stopped = false;  // the watch reported

@@ -96,10 +96,9 @@ Row densityRow(const std::string& model, const std::string& method, double dt, c
 
 Result fluidDensity(Env& env) {
   fluid::Params tank = fluidScene(loadScene(resolveScenePath("fluid-tank"))).model;
-  if (!env.quick) tank.water.domainMax.x = tank.water.domainMax.y = 1.6f;  // 64k particles, same depth
-  const balls::Params water = fluid::resolvedWater(tank);
-  const double depth = water.slabHeight, g = std::abs(double(water.gravity.z));
-  const double gradients = fluid::restLattice(tank.spacing, tank.h(), fluid::Packing::Cubic).gradients;
+  if (!env.quick) tank.domainMax.x = tank.domainMax.y = 1.6f;  // 64k particles, same depth
+  const double depth = tank.slabHeight, g = std::abs(double(tank.gravity.z));
+  const double gradients = fluid::restLattice(tank.spacing(), tank.h(), fluid::Packing::Cubic).gradients;
   const std::vector<int> iterations = env.quick ? std::vector<int>{1, 4} : std::vector<int>{1, 2, 3, 4, 6, 8, 12};
   const std::vector<double> fluidDts = env.quick ? std::vector<double>{2e-3} : std::vector<double>{1e-3, 2e-3, 4e-3};
   const std::vector<double> ballsDts =
@@ -110,10 +109,10 @@ Result fluidDensity(Env& env) {
     for (double dt : fluidDts) {
       fluid::Params p = tank;
       p.iterations = k;
-      p.water.dt = float(dt);
+      p.dt = float(dt);
       const Density d = restingDensity(env.shaders, p);
       const double theory = 0.5 * (1.0 + double(p.relaxation)) * gradients * g * dt * dt * depth / k;
-      addCostRow(r, densityRow("fluid", fluidMethod(k), dt, d, k, depth, tank.spacing), d.mean);
+      addCostRow(r, densityRow("fluid", fluidMethod(k), dt, d, k, depth, tank.spacing()), d.mean);
       std::printf(
           "  fluid, %2d iterations, dt = %.3g ms: density error mean %.3g (half the hydrostatic floor "
           "compression: %.3g), max %.3g, %.3g GPU ms per s, %s\n",
@@ -122,8 +121,10 @@ Result fluidDensity(Env& env) {
     }
   for (double dt : ballsDts) {
     // The same water as balls (asBalls: the radius of equal particles per volume), as model auto runs it.
-    const Density d = restingDensity(env.shaders, ballsOn(asBalls(tank, water), dt));
-    addCostRow(r, densityRow("balls", kBallsMethod, dt, d, 0, depth, tank.spacing), d.mean);
+    balls::Params own;
+    static_cast<water::Setup&>(own) = tank;  // the fluid's step, damping and foam too
+    const Density d = restingDensity(env.shaders, ballsOn(asBalls(tank, own), dt));
+    addCostRow(r, densityRow("balls", kBallsMethod, dt, d, 0, depth, tank.spacing()), d.mean);
     std::printf("  balls, dt = %.3g ms (t_c = %.3g ms): density error mean %.3g, max %.3g, %.3g GPU ms per s, %s\n",
                 1e3 * dt, 1e3 * kStepsPerContact * dt, d.mean, d.max, d.cost, d.stable ? "stable" : "UNSTABLE");
     std::fflush(stdout);
@@ -131,8 +132,8 @@ Result fluidDensity(Env& env) {
   r.chart.title = "fluid-density: density error of a resting tank against cost, fluid (per iterations) and balls";
   char label[160];
   std::snprintf(label, sizeof label, "GPU ms per simulated second (tank %.3g x %.3g m, %.3g m deep, d = 2r = %.3g m)",
-                double(water.domainMax.x - water.domainMin.x), double(water.domainMax.y - water.domainMin.y), depth,
-                double(tank.spacing));
+                double(tank.domainMax.x - tank.domainMin.x), double(tank.domainMax.y - tank.domainMin.y), depth,
+                double(tank.spacing()));
   r.chart.xLabel = label;
   r.chart.yLabel = "mean density error, mean of max(rho/rho_0 - 1, 0)";
   return r;
@@ -211,9 +212,9 @@ Result waterFront(Env& env) {
   std::vector<Run> runs;
   for (float d : spacings) {
     fluid::Params f = fluidBase;
-    f.spacing = d;
-    f.water.dt = 0.05f * d;  // 1 ms at d = 0.02 m, as the scene
-    runs.push_back({"fluid", fluidMethod(f.iterations), d, f.water.dt, frontCurve(env.shaders, f, end)});
+    f.setSpacing(d);
+    f.dt = 0.05f * d;  // 1 ms at d = 0.02 m, as the scene
+    runs.push_back({"fluid", fluidMethod(f.iterations), d, f.dt, frontCurve(env.shaders, f, end)});
     balls::Params b = ballsOn(ballsBase, 0.01 * d);  // 0.2 ms at r = 0.01 m, t_c = 4 ms: as the scene
     b.radius = asBalls(f, b).radius;                 // the same water volume as the fluid's, as model auto runs it
     runs.push_back({"balls", kBallsMethod, d, b.dt, frontCurve(env.shaders, b, end)});

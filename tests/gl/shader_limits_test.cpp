@@ -1,7 +1,7 @@
 // GL 4.3 guarantees 8 storage blocks per compute shader. Each kernel's text, with its #includes
 // pasted in and every #if branch counted, declares at most 8, so no variant can need more and a
-// reader sees the bound at a glance (bindings shared between uses are declared once: e.g.
-// shaders/balls/shared_slots.glsl). CPU only: the shader library's own assembly, no GL context.
+// reader sees the bound at a glance (read-only arrays beyond them come through buffer textures:
+// shaders/common/obstacle_grid.glsl). CPU only: the shader library's own assembly, no GL context.
 #include <gtest/gtest.h>
 
 #include <filesystem>

@@ -20,7 +20,7 @@
 
 #include "io/png.h"
 #include "render/balls_view.h"
-#include "sim/balls/balls_init.h"
+#include "sim/water/water_init.h"
 #include "support/gl_test.h"
 #include "support/image_diff.h"
 
@@ -50,10 +50,10 @@ std::ostream& operator<<(std::ostream& os, const Difference& d) {
 
 // A sphere obstacle's mesh (its balls' surface), radius about `size`.
 std::vector<MeshVertex> sphereMesh(float size) {
-  balls::ObstacleParams o;
-  o.shape = balls::Shape::Sphere;
+  water::ObstacleParams o;
+  o.shape = water::Shape::Sphere;
   o.size = glm::vec3(size);
-  return ballUnionMesh(balls::Obstacle(o, 0.02f).particles(), 0.02f);
+  return ballUnionMesh(water::Obstacle(o, 0.02f).particles(), 0.02f);
 }
 
 // A pool: three jittered layers of balls r = 2 cm in the unit box's lower part, foamy in one

@@ -8,6 +8,7 @@
 
 using namespace tidepool;
 using namespace tidepool::balls;
+using namespace tidepool::water;
 
 namespace {
 

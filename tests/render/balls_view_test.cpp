@@ -9,7 +9,7 @@
 #include <random>
 
 #include "render/balls_view.h"
-#include "sim/balls/balls_init.h"
+#include "sim/water/water_init.h"
 #include "support/gl_test.h"
 
 using namespace tidepool;
@@ -108,10 +108,10 @@ TEST_P(BallsRasterTest, ASphereBehindAnOpaqueMeshAddsNoThickness) {
   // The obstacle as a mesh: a sphere obstacle of balls r = 0.04 whose surface has radius 0.4,
   // centred 2 m away, behind one water ball and in front of another.
   const float r = 0.3f;
-  balls::ObstacleParams o;
-  o.shape = balls::Shape::Sphere;
+  water::ObstacleParams o;
+  o.shape = water::Shape::Sphere;
   o.size = glm::vec3(0.36f);
-  const std::vector<MeshVertex> sphere = ballUnionMesh(balls::Obstacle(o, 0.04f).particles(), 0.04f);
+  const std::vector<MeshVertex> sphere = ballUnionMesh(water::Obstacle(o, 0.04f).particles(), 0.04f);
   ASSERT_FALSE(sphere.empty());
   const gl::Buffer mesh{std::span<const MeshVertex>(sphere)}, water = ballsAt({3.0f, 1.2f});
   Frame f(shaders(), GetParam());

@@ -8,7 +8,7 @@
 #include <utility>
 
 #include "render/obstacle_mesh.h"
-#include "sim/balls/balls_init.h"
+#include "sim/water/water_init.h"
 
 using namespace tidepool;
 
@@ -16,9 +16,9 @@ namespace {
 
 constexpr float kRadius = 0.01f;
 
-balls::ObstacleParams sphereObstacle() {  // built about the origin, its own frame
-  balls::ObstacleParams o;
-  o.shape = balls::Shape::Sphere;
+water::ObstacleParams sphereObstacle() {  // built about the origin, its own frame
+  water::ObstacleParams o;
+  o.shape = water::Shape::Sphere;
   o.size = glm::vec3(0.1f);
   return o;
 }
@@ -29,7 +29,7 @@ TEST(ObstacleMesh, NoBallsNoTriangles) { EXPECT_TRUE(ballUnionMesh({}, 0.01f).em
 
 TEST(ObstacleMesh, SphereIsClosedOnTheBallsSurfaceWithOutwardNormals) {
   const float r = kRadius;
-  const std::vector<MeshVertex> mesh = ballUnionMesh(balls::Obstacle(sphereObstacle(), r).particles(), r);
+  const std::vector<MeshVertex> mesh = ballUnionMesh(water::Obstacle(sphereObstacle(), r).particles(), r);
   ASSERT_GT(mesh.size(), 300u);
   ASSERT_EQ(mesh.size() % 3, 0u);
   // Closed and consistently wound: each edge as often one way as the other (surface nets can

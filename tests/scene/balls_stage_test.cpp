@@ -40,11 +40,11 @@ TEST_F(BallsSceneObstacles, ObstacleListLoadsEveryItem) {
                        "s.json");
   const balls::Params p = ballsParams(s);
   ASSERT_EQ(p.obstacles.size(), 3u);
-  EXPECT_EQ(p.obstacles[0].shape, balls::Shape::Cup);
+  EXPECT_EQ(p.obstacles[0].shape, water::Shape::Cup);
   EXPECT_EQ(p.obstacles[1].spinAxis, glm::vec3(1, 0, 0));
-  EXPECT_EQ(p.obstacles[2].path.kind, balls::PathKind::Circle);
+  EXPECT_EQ(p.obstacles[2].path.kind, water::PathKind::Circle);
   EXPECT_FLOAT_EQ(p.obstacles[2].path.phase, 90.0f);
-  EXPECT_EQ(p.obstacles[2].centre, balls::ObstacleParams{}.centre) << "absent keys keep the defaults";
+  EXPECT_EQ(p.obstacles[2].centre, water::ObstacleParams{}.centre) << "absent keys keep the defaults";
   EXPECT_EQ(errorOf(withObstacles("[]")), "");
 }
 

@@ -9,7 +9,7 @@
 #include "scene/balls_stage.h"
 #include "scene/fluid_stage.h"
 #include "scene/scene.h"
-#include "sim/balls/balls_init.h"
+#include "sim/water/water_init.h"
 #include "support/gl_test.h"
 #include "support/null_visitor.h"
 
@@ -86,7 +86,7 @@ TEST(ResolutionRefine, KeepsTheSetupAndTheFrameAndScalesWhatDependsOnTheSpacing)
   EXPECT_EQ(b.randomCount, a.randomCount * 64);
   EXPECT_EQ(b.tapMax, a.tapMax * 64);
   // The water's volume is the same: 64 times the balls of a 64th of the volume each.
-  EXPECT_NEAR(balls::estimatedWater(b) / balls::estimatedWater(a), 64.0, 64.0 * 0.05);
+  EXPECT_NEAR(water::estimatedWater(b) / water::estimatedWater(a), 64.0, 64.0 * 0.05);
 }
 
 TEST(ResolutionRefine, RefiningAndCoarseningComeBack) {
@@ -105,10 +105,10 @@ TEST(ResolutionRefine, FluidScenesRefineTheirSpacing) {
   const Scene base = loadScene(resolveScenePath("dam-break-fluid"));
   const Scene fine = loadScene(resolveScenePath("dam-break-fluid"), atResolution(2));
   const fluid::Params &a = base.params.model<fluid::Params>(), &b = fine.params.model<fluid::Params>();
-  EXPECT_FLOAT_EQ(b.spacing, a.spacing / 2);
-  EXPECT_EQ(b.water.substeps, a.water.substeps * 2);
-  EXPECT_NEAR(double(b.water.dt) * b.water.substeps, double(a.water.dt) * a.water.substeps, 1e-9);
-  EXPECT_FLOAT_EQ(b.water.resolution, 2.0f);
+  EXPECT_FLOAT_EQ(b.spacing(), a.spacing() / 2);
+  EXPECT_EQ(b.substeps, a.substeps * 2);
+  EXPECT_NEAR(double(b.dt) * b.substeps, double(a.dt) * a.substeps, 1e-9);
+  EXPECT_FLOAT_EQ(b.resolution, 2.0f);
 }
 
 TEST(ResolutionRefine, PastALimitIsRefusedByName) {

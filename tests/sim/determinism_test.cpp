@@ -64,7 +64,7 @@ void expectReproducible(int frames, Args&... args) {
   }
 }
 
-Scene water(const char* model, const char* particles) {
+Scene waterScene(const char* model, const char* particles) {
   const std::string json = std::string(R"({"model": ")") + model + R"(", "params": {"particles": )" + particles + R"(,
       "tap": {"enabled": true, "position": [0.15, 0.2, 0.4], "direction": [0, 0, -1], "speed": 1.0,
               "radius": 0.05, "max": 600},
@@ -76,7 +76,7 @@ Scene water(const char* model, const char* particles) {
 }  // namespace
 
 TEST_F(Determinism, Balls) {
-  const Scene s = water("balls", R"({"radius": 0.012, "domain_max": [0.6, 0.4, 0.5], "fill": "block",
+  const Scene s = waterScene("balls", R"({"radius": 0.012, "domain_max": [0.6, 0.4, 0.5], "fill": "block",
                                      "fill_min": [0.3, 0, 0], "fill_max": [0.6, 0.4, 0.25]})");
   balls::Params p = s.params.model<balls::Params>();
   p.substeps = 8;
@@ -86,10 +86,10 @@ TEST_F(Determinism, Balls) {
 }
 
 TEST_F(Determinism, Fluid) {
-  const Scene s = water("fluid", R"({"spacing": 0.02, "domain_max": [0.6, 0.4, 0.5], "fill": "block",
+  const Scene s = waterScene("fluid", R"({"spacing": 0.02, "domain_max": [0.6, 0.4, 0.5], "fill": "block",
                                      "fill_min": [0.3, 0, 0], "fill_max": [0.6, 0.4, 0.2]})");
   fluid::Params p = s.params.model<fluid::Params>();
-  p.water.substeps = 4;
+  p.substeps = 4;
   p.vorticity = 0.01f;  // every pass of the step, XSPH and vorticity included
   expectReproducible<fluid::Fluid>(60, shaders(), p);
 }

@@ -66,7 +66,7 @@ TEST_F(DomainEdges, Balls) {
   p.radius = 0.01f;
   p.domainMin = glm::vec3(0.0f);
   p.domainMax = glm::vec3(0.4f, 0.2f, 0.3f);
-  p.fill = balls::Fill::None;
+  p.fill = water::Fill::None;
   p.substeps = 4;
   balls::Balls model(shaders(), p);
   const std::vector<glm::vec4> pos = edgePoints(p.domainMin, p.domainMax, 2 * p.radius, kOffsets);
@@ -79,17 +79,17 @@ TEST_F(DomainEdges, Balls) {
 
 TEST_F(DomainEdges, Fluid) {
   fluid::Params p;
-  p.spacing = 0.02f;
-  p.water.domainMin = glm::vec3(0.0f);
-  p.water.domainMax = glm::vec3(0.4f, 0.2f, 0.3f);
-  p.water.fill = balls::Fill::None;
-  p.water.substeps = 2;
+  p.setSpacing(0.02f);
+  p.domainMin = glm::vec3(0.0f);
+  p.domainMax = glm::vec3(0.4f, 0.2f, 0.3f);
+  p.fill = water::Fill::None;
+  p.substeps = 2;
   fluid::Fluid model(shaders(), p);
-  const std::vector<glm::vec4> pos = edgePoints(p.water.domainMin, p.water.domainMax, 0.5f * p.h(), kOffsets);
+  const std::vector<glm::vec4> pos = edgePoints(p.domainMin, p.domainMax, 0.5f * p.h(), kOffsets);
   model.upload(pos, std::vector<glm::vec4>(pos.size(), glm::vec4(0.0f)));
   gl::GpuProfiler profiler;
   for (int f = 0; f < 10; ++f) model.step(1.0 / 60, profiler);
-  expectInside(model.downloadPositions(), p.water.domainMin, p.water.domainMax, 1e-5f, pos.size());
+  expectInside(model.downloadPositions(), p.domainMin, p.domainMax, 1e-5f, pos.size());
 }
 
 TEST_F(DomainEdges, Life) {

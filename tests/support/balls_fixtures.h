@@ -10,7 +10,7 @@ namespace tidepool::test {
 // An empty box [0, size] for balls of radius r (the rest of the parameters at their defaults).
 inline balls::Params emptyBox(float radius, glm::vec3 size) {
   balls::Params p;
-  p.fill = balls::Fill::None;
+  p.fill = water::Fill::None;
   p.radius = radius;
   p.domainMin = glm::vec3(0.0f);
   p.domainMax = size;

@@ -179,8 +179,8 @@ bool ballsRow(const Rows& in, double frame, const io::CsvTable& t, std::size_t r
   if (!substeps || (springDashpot && !explicitEuler && dt > kStabilityMargin * 2.0 / std::numbers::pi * contactTime))
     return false;
   c.settings = {pick("engine.contact", &balls::Params::contact, balls::Contact(contactIndex)),
-                pick("engine.dt", &balls::Params::dt, float(frame / substeps), true),
-                pick("engine.substeps", &balls::Params::substeps, substeps, true)};
+                pick<balls::Params, float>("engine.dt", &balls::Params::dt, float(frame / substeps), true),
+                pick<balls::Params, int>("engine.substeps", &balls::Params::substeps, substeps, true)};
   if (!integrator.empty())
     c.settings.push_back(pick("engine.integrator", &balls::Params::integrator, balls::Integrator(integratorIndex)));
   if (stepsPerContact > 0 && springDashpot)
@@ -211,8 +211,8 @@ bool fluidRow(double frame, const io::CsvTable& t, std::size_t r, Candidate& c) 
             ms(frame / substeps);
   c.settings = {
       pick("solver.iterations", &fluid::Params::iterations, iterations),
-      {"engine.dt", true, [runDt](SceneParams& p) { p.model<fluid::Params>().water.dt = runDt; }},
-      {"engine.substeps", true, [substeps](SceneParams& p) { p.model<fluid::Params>().water.substeps = substeps; }}};
+      {"engine.dt", true, [runDt](SceneParams& p) { p.model<fluid::Params>().dt = runDt; }},
+      {"engine.substeps", true, [substeps](SceneParams& p) { p.model<fluid::Params>().substeps = substeps; }}};
   return true;
 }
 
@@ -236,7 +236,7 @@ bool sameSpacing(double a, double b) { return std::abs(a / b - 1.0) < 1e-3; }
 std::vector<Candidate> waterCandidates(const Rows& in) {
   const io::CsvTable& t = in.studies.at(0).second;
   const fluid::Params& scene = in.params.model<fluid::Params>();
-  const double spacing = decimal(scene.spacing), frame = decimal(scene.water.dt) * scene.water.substeps;
+  const double spacing = decimal(scene.spacing()), frame = decimal(scene.dt) * scene.substeps;
   std::vector<double> measured;  // the spacings rows name
   std::vector<Candidate> out;
   for (std::size_t r = 0; r < t.rows(); ++r) {

@@ -50,7 +50,8 @@ struct Setting {
 using Settings = std::vector<Setting>;
 void write(const Settings& settings, SceneParams& params);
 
-// pick("engine.contact", &balls::Params::contact, balls::Contact::SpringDashpot).
+// pick("engine.contact", &balls::Params::contact, balls::Contact::SpringDashpot); a field of the water setup
+// (dt, substeps) names the model: pick<balls::Params, float>("engine.dt", &balls::Params::dt, dt).
 template <class Model, class T>
 Setting pick(const char* key, T Model::*field, std::type_identity_t<T> value, bool rescaled = false) {
   return {key, rescaled, [field, value](SceneParams& p) { p.model<Model>().*field = value; }};

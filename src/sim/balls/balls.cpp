@@ -8,9 +8,9 @@
 #include "balls/bindings.glsl"
 #include "balls/stats_layout.glsl"
 #include "base/error.h"
-#include "sim/balls/balls_init.h"
-#include "sim/balls/water_frame.h"
 #include "sim/particle_memory.h"
+#include "sim/water/water_frame.h"
+#include "sim/water/water_init.h"
 
 namespace tidepool::balls {
 namespace {
@@ -53,19 +53,19 @@ void Balls::allocate(std::size_t count, std::size_t capacity) {
 }
 
 void Balls::reset() {
-  const Params p = resolved(m_params);
+  const water::Setup p = resolved(m_params);
   if (glm::any(glm::lessThanEqual(p.domainMax, p.domainMin)))
     throw Error("balls: domain_max must exceed domain_min on every axis");
   // First the count, from the fill's volume: a radius that asks for 10^11 balls fails here, with
   // the numbers, before any array is built.
   char radius[48];
   std::snprintf(radius, sizeof radius, "particles.radius = %g m", double(p.radius));
-  checkWaterRequest("balls", "ball", radius, estimatedWater(m_params), m_params, cost());
+  water::checkWaterRequest("balls", "ball", radius, water::estimatedWater(p), p, cost());
   m_obstacles.build(m_params.obstacles, p.radius);  // a bad mesh fails before anything is allocated
   m_radius = p.radius;
   m_obstacles.place(m_params.obstacles, 0.0, p.domainMin, p.domainMax);
   const std::vector<glm::vec4> water =
-      waterParticles(m_params, [this](glm::vec3 q) { return m_obstacles.occupied(q); });
+      water::waterParticles(p, [this](glm::vec3 q) { return m_obstacles.occupied(q); });
   allocate(water.size(), water.size() + (m_params.tap ? std::size_t(m_params.tapMax) : 0));
   m_tapEmitted = 0;
   m_tapNextLayer = 0;
@@ -76,7 +76,6 @@ void Balls::reset() {
   m_posIndex = m_velIndex = 0;
   m_time = 0;
   m_accValid = false;
-  m_countedAhead = {};
   m_grid.reset();
   ensureGrid();
   m_obstacleError.clear();
@@ -87,7 +86,8 @@ void Balls::emitFromTap() {
   const Params& p = m_params;
   if (!p.tap || m_tapEmitted >= std::size_t(p.tapMax) || m_time < m_tapNextLayer || p.tapSpeed <= 0) return;
   // One layer of the nozzle disc, then wait until the jet has moved on by a spacing.
-  const TapLayer layer = tapLayer(p, m_radius, std::min(std::size_t(p.tapMax) - m_tapEmitted, m_capacity - m_count));
+  const water::TapLayer layer =
+      water::tapLayer(p, m_radius, std::min(std::size_t(p.tapMax) - m_tapEmitted, m_capacity - m_count));
   if (layer.pos.empty()) return;
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);  // shader writes land before the uploads
   const std::size_t at = m_count * sizeof(glm::vec4), bytes = layer.pos.size() * sizeof(glm::vec4);
@@ -99,16 +99,15 @@ void Balls::emitFromTap() {
   }
   m_count += layer.pos.size();
   m_tapEmitted += layer.pos.size();
-  m_countedAhead = {};
   m_tapNextLayer = m_time + layer.interval;
 }
 
-glm::vec3 Balls::gravity() const { return gravityAt(resolved(m_params), m_time); }
+glm::vec3 Balls::gravity() const { return water::gravityAt(resolved(m_params), m_time); }
 
-float Balls::domainRotation() const { return balls::domainRotation(m_params, m_time); }
+float Balls::domainRotation() const { return water::domainRotation(m_params, m_time); }
 
 void Balls::updateWalls() {
-  const Walls w = wallsAt(m_params, m_time);
+  const water::Walls w = water::wallsAt(m_params, m_time);
   m_wallMin = w.min;
   m_wallMax = w.max;
   m_wallMinVel = w.minVel;
@@ -125,7 +124,6 @@ std::string Balls::status() const {
 }
 
 std::vector<sim::StateBuffer> Balls::stateBuffers() {
-  m_countedAhead = {};  // the caller may write them (a restore)
   const std::size_t bytes = m_count * sizeof(glm::vec4);
   return {{"positions", &m_pos[m_posIndex], bytes}, {"velocities", &m_vel[m_velIndex], bytes}};
 }
@@ -160,7 +158,6 @@ void Balls::resume(const sim::StateStamp& good) {
   m_count = good.count;
   m_time = good.time;
   m_accValid = false;  // Verlet re-evaluates a(x) for the restored state
-  m_countedAhead = {};
   m_params.dt *= 0.5f;
   m_params.substeps = std::min(m_params.substeps * 2, 1000);  // same simulated time per frame
 }
@@ -185,7 +182,6 @@ void Balls::visitOwnState(sim::StateVisitor& v) {
   if (v.loading()) {
     ensureGrid();
     updateWalls();
-    m_countedAhead = {};
   }
 }
 
@@ -202,7 +198,6 @@ void Balls::upload(const std::vector<glm::vec4>& pos, const std::vector<glm::vec
   m_pos[0].upload(pos.data(), pos.size() * sizeof(glm::vec4));
   m_vel[0].upload(vel.data(), vel.size() * sizeof(glm::vec4));
   m_accValid = false;
-  m_countedAhead = {};
   ensureGrid();
   restartWatch();  // a new state: nothing judged yet
 }
@@ -243,10 +238,10 @@ std::vector<GLuint> Balls::lastOrder() const {
 void Balls::ensureGrid() {
   const float cell = 2.0f * m_radius;
   if (m_grid && m_grid->params().cellSize == cell) return;
-  const Params p = resolved(m_params);
+  const water::Setup p = resolved(m_params);
   grid::GridParams gp{.domainMin = p.domainMin, .domainMax = p.domainMax, .cellSize = cell, .stable = p.deterministic};
   m_grid = std::make_unique<grid::UniformGrid>(m_shaders, gp, m_capacity);
-  m_countedAhead = {};
+  m_countedAhead = {};  // a new grid counted nothing (it may reuse the old one's address)
 }
 
 }  // namespace tidepool::balls

@@ -1,15 +1,15 @@
 // Water as N equal balls colliding (DEM), after water-webgpu: a uniform grid finds every pair
 // within 2r (27 cells), one of three contact laws acts on it, one of three integrators advances
 // it; box walls (one may be a piston; gravity rotates with the domain) and obstacles of fixed
-// particles (shapes or voxelised triangle meshes, each moving rigidly: obstacles.h) complete the
+// particles (shapes or voxelised triangle meshes, each moving rigidly: sim/water/obstacles.h) complete the
 // scene. The model owns its buffers and passes; renderers read positions() / velocities() (foam
 // in velocity w) and obstacles() (bodies, poses, meshes).
 //
 // One step (stepOnce), a list of passes (balls_passes.cpp):
 //   symplectic / explicit Euler:  placeObstacles(t)      -> sortByCell -> collide (forces, integrate)
 //   velocity Verlet:              placeObstacles(t + dt) -> drift -> sortByCell -> collide (forces, kick)
-// Euler's collide, without obstacles, also counts each ball into the next step's grid as it
-// writes it (COUNT_CELLS), so the next sortByCell starts at the scan.
+// Euler's collide also counts each ball into the next step's grid as it writes it, so the next
+// sortByCell starts at the scan.
 #pragma once
 
 #include <memory>
@@ -23,10 +23,10 @@
 #include "grid/grid.h"
 #include "io/obj.h"
 #include "sim/balls/balls_params.h"
-#include "sim/balls/obstacles.h"
 #include "sim/model.h"
 #include "sim/particle_memory.h"
-#include "sim/particle_water.h"
+#include "sim/water/obstacles.h"
+#include "sim/water/particle_water.h"
 
 namespace tidepool::balls {
 
@@ -45,7 +45,7 @@ struct Stats {
   double backHeight = 0;      // largest z of balls within 2r of the back (x min) wall, m (NaN: none)
 };
 
-class Balls final : public sim::Model, public sim::ParticleWater {
+class Balls final : public sim::Model, public water::ParticleWater {
  public:
   Balls(gl::ShaderLibrary& shaders, const Params& params);  // throws Error (size, memory)
 
@@ -56,7 +56,7 @@ class Balls final : public sim::Model, public sim::ParticleWater {
   void step(double frameSeconds, gl::GpuProfiler& profiler) override;
   void step(gl::GpuProfiler& profiler) { step(0.0, profiler); }  // the same frame
   double time() const override { return m_time; }
-  std::size_t count() const override { return m_count; }  // sim::Model and sim::ParticleWater
+  std::size_t count() const override { return m_count; }  // sim::Model and water::ParticleWater
   std::string status() const override;                    // counts and radius (and a refused obstacle edit above them)
   std::vector<sim::StateBuffer> stateBuffers() override;  // positions, velocities (m_count each)
 
@@ -69,15 +69,16 @@ class Balls final : public sim::Model, public sim::ParticleWater {
   glm::vec3 wallMin() const override { return m_wallMin; }
   glm::vec3 wallMax() const override { return m_wallMax; }
   float domainRotation() const override;  // radians about x
-  const Params& water() const override { return m_params; }
+  water::Packing packing() const override { return Params::kPacking; }
+  const water::Setup& water() const override { return m_params; }
   std::size_t bytesPerBall() const;                                   // GPU memory per ball, grid included
   std::size_t cells() const { return m_grid ? m_grid->cells() : 0; }  // of the neighbour grid
-  const grid::UniformGrid* neighbourGrid() const override { return m_grid.get(); }  // sim::ParticleWater
+  const grid::UniformGrid* neighbourGrid() const override { return m_grid.get(); }  // water::ParticleWater
   double speedBound() const;  // m/s: faster means more than 2r per step, balls can pass through each other
 
   const gl::Buffer& positions() const override { return m_pos[m_posIndex]; }   // vec4 (m, w = 1)
   const gl::Buffer& velocities() const override { return m_vel[m_velIndex]; }  // vec4 (m/s, w = foam)
-  const Obstacles& obstacles() const override { return m_obstacles; }          // as placed at the last step
+  const water::Obstacles& obstacles() const override { return m_obstacles; }   // as placed at the last step
   // Why the last edit of the obstacles was refused (e.g. a missing mesh file); empty if it was not.
   // A refused edit leaves that obstacle, and its parameters, as they were.
   const std::string& obstacleError() const { return m_obstacleError; }
@@ -133,21 +134,19 @@ class Balls final : public sim::Model, public sim::ParticleWater {
   void planReachWindows(std::size_t windowSize = 0);  // 0: half a storage block of balls
   std::vector<ReachWindow> reachWindows();
   void ensureGrid();  // the grid of cells 2r for the current radius
-  std::vector<gl::ShaderDefine> defines(bool verlet, bool countCells = false) const;
+  std::vector<gl::ShaderDefine> defines(bool verlet) const;
   // In use, common uniforms set.
-  gl::Program& useKernel(const char* file, bool verlet, bool countCells = false);
-  // The grid's counts taken by the last collide (COUNT_CELLS) hold for the state it wrote: the
-  // next sortByCell skips its count pass while the key still matches (anything else that writes
-  // the balls clears it).
+  gl::Program& useKernel(const char* file, bool verlet);
+  // The grid's counts taken by the last Euler collide hold for the positions it wrote: the next
+  // sortByCell skips its count pass while the key still matches. Any other write of the positions
+  // (an upload, a restore, the tap) changes their buffer's version (gl::Buffer::version()).
   struct CountKey {
+    std::uint64_t positions = 0;  // version of the positions' buffer; 0: no counts
     std::size_t count = 0;
-    int posIndex = 0;
     const grid::UniformGrid* grid = nullptr;
-    bool valid = false;
     bool operator==(const CountKey&) const = default;
   };
   CountKey countKey() const;  // now
-  bool countsInCollide(Collide what) const;
 
   gl::ShaderLibrary& m_shaders;
   Params m_params;
@@ -164,7 +163,7 @@ class Balls final : public sim::Model, public sim::ParticleWater {
   gl::Buffer m_pos[2], m_vel[2], m_acc, m_permutation, m_stats;
   int m_posIndex = 0, m_velIndex = 0;
   std::unique_ptr<grid::UniformGrid> m_grid;
-  Obstacles m_obstacles;
+  water::Obstacles m_obstacles;
   std::string m_obstacleError;
   glm::vec3 m_wallMin{0.0f}, m_wallMax{1.0f}, m_wallMinVel{0.0f}, m_wallMaxVel{0.0f};
   double m_time = 0;

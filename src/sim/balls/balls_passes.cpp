@@ -79,9 +79,8 @@ void Balls::placeObstacles(double time, gl::GpuProfiler* profiler) {
   m_obstacles.place(m_params.obstacles, time, m_params.domainMin, m_params.domainMax, profiler);
 }
 
-std::vector<gl::ShaderDefine> Balls::defines(bool verlet, bool countCells) const {
+std::vector<gl::ShaderDefine> Balls::defines(bool verlet) const {
   std::vector<gl::ShaderDefine> d;
-  if (countCells) d.push_back({"COUNT_CELLS", ""});
   switch (m_params.contact) {
     case Contact::Penalty: d.push_back({"CONTACT_PENALTY", ""}); break;
     case Contact::CudaSample: d.push_back({"CONTACT_CUDA", ""}); break;
@@ -95,8 +94,8 @@ std::vector<gl::ShaderDefine> Balls::defines(bool verlet, bool countCells) const
   return d;
 }
 
-gl::Program& Balls::useKernel(const char* file, bool verlet, bool countCells) {
-  gl::Program& p = m_shaders.program({file}, defines(verlet, countCells));
+gl::Program& Balls::useKernel(const char* file, bool verlet) {
+  gl::Program& p = m_shaders.program({file}, defines(verlet));
   const Params& q = m_params;
   p.use();
   p.set("uCount", GLuint(m_count));
@@ -126,7 +125,6 @@ gl::Program& Balls::useKernel(const char* file, bool verlet, bool countCells) {
 
 void Balls::drift(gl::GpuProfiler* profiler) {
   auto scope = timed(profiler, "balls.drift");
-  m_countedAhead = {};  // it moves the balls
   gl::Program& p = useKernel("balls/drift.comp", false);
   for (const gl::Window& w : gl::windows(m_count, kVec4)) {
     gl::bindWindow(m_pos[m_posIndex], BALLS_POS_OUT, w, kVec4);
@@ -161,13 +159,15 @@ void Balls::collide(gl::GpuProfiler* profiler, Collide what) {
   auto scope = timed(profiler, "balls.collide");
   const bool verlet = what != Collide::Integrate;
   const int p = m_posIndex, v = m_velIndex;
-  const bool countCells = countsInCollide(what);
+  // Euler writes the next step's positions and counts them into its grid on the way: the next
+  // sortByCell starts at the scan (velocity Verlet's positions move again before they are sorted).
+  const bool countCells = !verlet;
   m_countedAhead = {};                            // set again below when this pass counts
   if (countCells) m_grid->prepareCount(m_count);  // its fill binds and runs a kernel of its own: first
   // Read back before the kernel's bindings: one window of all balls when they fit one block.
   const std::vector<ReachWindow> windows = reachWindows();
   m_collideWindows = windows.size();
-  gl::Program& collide = useKernel("balls/collide.comp", verlet, countCells);
+  gl::Program& collide = useKernel("balls/collide.comp", verlet);
   // The cell-ordered copies in, the others out; a window at a time when they pass one storage block.
   const gl::Buffer &posIn = m_pos[1 - p], &velIn = m_vel[1 - v], &velOut = m_vel[v];
   const gl::Buffer& stepOut = verlet ? m_acc : m_pos[p];
@@ -184,7 +184,7 @@ void Balls::collide(gl::GpuProfiler* profiler, Collide what) {
     gl::bindWindow(posIn, BALLS_POS_IN, w.sources, kVec4);
     gl::bindWindow(velIn, BALLS_VEL_IN, w.sources, kVec4);
     gl::bindWindow(velOut, BALLS_VEL_OUT, w.balls, kVec4);
-    gl::bindWindow(stepOut, verlet ? BALLS_ACC : BALLS_POS_OUT, w.balls, kVec4);
+    gl::bindWindow(stepOut, BALLS_STEP_OUT, w.balls, kVec4);
     collide.set("uFirst", GLuint(w.balls.first));
     collide.set("uCount", GLuint(w.balls.end()));
     collide.set("uSourceFirst", GLuint(w.sources.first));
@@ -194,11 +194,7 @@ void Balls::collide(gl::GpuProfiler* profiler, Collide what) {
   if (countCells) m_countedAhead = countKey();
 }
 
-// The collide counts the balls into the next step's grid when it writes their positions in
-// place (Euler) and has two storage blocks to spare (no obstacle).
-bool Balls::countsInCollide(Collide what) const { return what == Collide::Integrate && !m_obstacles.active(); }
-
-Balls::CountKey Balls::countKey() const { return {m_count, m_posIndex, m_grid.get(), true}; }
+Balls::CountKey Balls::countKey() const { return {m_pos[m_posIndex].version(), m_count, m_grid.get()}; }
 
 Stats Balls::stats() {
   Stats st;
@@ -208,7 +204,7 @@ Stats Balls::stats() {
   // The stats pass needs the balls in cell order: sort copies into the scratch buffers, leaving
   // the state (and Verlet's accelerations, which follow its order) untouched.
   const int p = m_posIndex, v = m_velIndex;
-  m_countedAhead = {};  // the reorder below ranks over the slots
+  m_countedAhead = {};  // the reorder below ranks over the grid's slots
   m_grid->build(m_pos[p], m_count);
   planReachWindows();
   m_grid->reorder(m_pos[p], {{&m_pos[p], &m_pos[1 - p]}, {&m_vel[v], &m_vel[1 - v]}});

@@ -6,14 +6,10 @@
 #include <cstddef>
 #include <numbers>
 
-#include "balls/bindings.glsl"
 #include "fluid/bindings.glsl"
 #include "fluid/stats_layout.glsl"
 #include "sim/fluid/rest_lattice.h"
 #include "sim/fluid/sph_kernels.h"
-
-static_assert(FLUID_OBST_POS == BALLS_OBST_POS && FLUID_OBST_CELL_START == BALLS_OBST_CELL_START,
-              "the fluid binds the obstacles where balls::Obstacles::bind() puts them");
 
 namespace tidepool::fluid {
 namespace {
@@ -54,7 +50,7 @@ void setKernelUniforms(const gl::Program& program, double h, const RestLattice& 
   if (const GLint at = program.uniform("uEdgeTable[0]"); at >= 0) glUniform4fv(at, 73, padded.data());
 }
 
-std::vector<gl::ShaderDefine> kernelDefines(const balls::Obstacles& obstacles) {
+std::vector<gl::ShaderDefine> kernelDefines(const water::Obstacles& obstacles) {
   std::vector<gl::ShaderDefine> d;
   if (obstacles.active()) {
     d.push_back({"HAS_OBSTACLE", ""});
@@ -63,14 +59,13 @@ std::vector<gl::ShaderDefine> kernelDefines(const balls::Obstacles& obstacles) {
   return d;
 }
 
-void bindBoundary(gl::Program& program, const balls::Obstacles& obstacles, double h) {
+void bindBoundary(gl::Program& program, const water::Obstacles& obstacles, double h) {
   if (!obstacles.active()) return;
   obstacles.bind(program);
   program.set("uObstacleReach", int(std::ceil(h / obstacles.cellSize() - 1e-6)));
-  if (const gl::Buffer* v = obstacles.volumes()) v->bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_OBST_VOLUME);
 }
 
-Stats DensityProbe::measure(const sim::ParticleWater& water, const DensityKernel& kernel, glm::vec3 gravity,
+Stats DensityProbe::measure(const water::ParticleWater& water, const DensityKernel& kernel, glm::vec3 gravity,
                             double time) {
   Stats st;
   st.time = time;
@@ -84,7 +79,7 @@ Stats DensityProbe::measure(const sim::ParticleWater& water, const DensityKernel
     m_restFor = kernel;
   }
   const RestLattice& rest = m_rest;
-  const balls::Params& w = water.water();
+  const water::Setup& w = water.water();
   if (!m_grid || m_grid->params().domainMin != w.domainMin || m_grid->params().domainMax != w.domainMax ||
       m_grid->params().cellSize != float(h))
     m_grid = std::make_unique<grid::UniformGrid>(
@@ -99,7 +94,7 @@ Stats DensityProbe::measure(const sim::ParticleWater& water, const DensityKernel
   m_grid->build(water.positions(), n);
   m_grid->reorder(water.positions(), {{&water.positions(), &m_pos}, {&water.velocities(), &m_vel}});
 
-  const balls::Obstacles& obstacles = water.obstacles();
+  const water::Obstacles& obstacles = water.obstacles();
   gl::Program& prog = m_shaders.program({"fluid/stats.comp"}, kernelDefines(obstacles));
   prog.use();
   setKernelUniforms(prog, h, rest);

@@ -20,9 +20,9 @@
 #include "gl/program.h"
 #include "gl/shader_library.h"
 #include "grid/grid.h"
-#include "sim/balls/obstacles.h"
 #include "sim/fluid/rest_lattice.h"
-#include "sim/particle_water.h"
+#include "sim/water/obstacles.h"
+#include "sim/water/particle_water.h"
 
 namespace tidepool::fluid {
 
@@ -53,13 +53,13 @@ struct DensityKernel {
 // active, what fluid/neighbours.glsl's boundary loop reads (binds its buffers). Defines for these kernels: HAS_OBSTACLE
 // and OBSTACLE_VOLUMES from kernelDefines().
 void setKernelUniforms(const gl::Program& program, double h, const RestLattice& rest);
-void bindBoundary(gl::Program& program, const balls::Obstacles& obstacles, double h);
-std::vector<gl::ShaderDefine> kernelDefines(const balls::Obstacles& obstacles);
+void bindBoundary(gl::Program& program, const water::Obstacles& obstacles, double h);
+std::vector<gl::ShaderDefine> kernelDefines(const water::Obstacles& obstacles);
 
 class DensityProbe {
  public:
   explicit DensityProbe(gl::ShaderLibrary& shaders) : m_shaders(shaders) {}
-  Stats measure(const sim::ParticleWater& water, const DensityKernel& kernel, glm::vec3 gravity, double time);
+  Stats measure(const water::ParticleWater& water, const DensityKernel& kernel, glm::vec3 gravity, double time);
 
  private:
   gl::ShaderLibrary& m_shaders;

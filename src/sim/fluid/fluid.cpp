@@ -5,29 +5,28 @@
 #include <cstdio>
 #include <functional>
 
-#include "balls/bindings.glsl"
 #include "base/error.h"
 #include "fluid/bindings.glsl"
-#include "sim/balls/balls_init.h"
 #include "sim/particle_memory.h"
+#include "sim/water/water_init.h"
 
 namespace tidepool::fluid {
 namespace {
 constexpr std::size_t kMaxCheckpointParticles = std::size_t(4) << 20;  // larger runs keep no copy to go back to
 
 // Particles a fill would make, from its volume (one per d³), before making them.
-double estimatedParticles(const balls::Params& w, float spacing) {
-  if (w.fill == balls::Fill::None || w.fill == balls::Fill::Random || w.fill == balls::Fill::Lattice)
-    return balls::estimatedWater(w);
-  return balls::fillVolume(w) / std::pow(double(spacing), 3.0);
+double estimatedParticles(const water::Setup& w, float spacing) {
+  if (w.fill == water::Fill::None || w.fill == water::Fill::Random || w.fill == water::Fill::Lattice)
+    return water::estimatedWater(w);
+  return water::fillVolume(w) / std::pow(double(spacing), 3.0);
 }
 
 // The initial water: blocks and slabs on a cubic lattice that tiles the region exactly (particle
-// centres half a spacing inside its faces), the other fills as the balls make them.
-std::vector<glm::vec4> fill(const balls::Params& w, float spacing, const std::function<bool(glm::vec3)>& occupied) {
-  if (w.fill != balls::Fill::Block && w.fill != balls::Fill::Slab) return balls::waterParticles(w, occupied);
+// centres half a spacing inside its faces), the other fills as sim/water/water_init.h makes them.
+std::vector<glm::vec4> fill(const water::Setup& w, float spacing, const std::function<bool(glm::vec3)>& occupied) {
+  if (w.fill != water::Fill::Block && w.fill != water::Fill::Slab) return water::waterParticles(w, occupied);
   glm::vec3 lo = glm::max(w.fillMin, w.domainMin), hi = glm::min(w.fillMax, w.domainMax);
-  if (w.fill == balls::Fill::Slab) {
+  if (w.fill == water::Fill::Slab) {
     lo = w.domainMin;
     hi = glm::vec3(w.domainMax.x, w.domainMax.y, std::min(w.domainMax.z, w.domainMin.z + w.slabHeight));
   }
@@ -51,17 +50,17 @@ Fluid::Fluid(gl::ShaderLibrary& shaders, const Params& params)
       m_obstacles(shaders),
       m_probe(shaders) {
   // Obstacle particles weigh in the density sum with their rest volumes (rest_lattice.h).
-  m_obstacles.setVolumes([this](const balls::ObstacleBody& b) {
+  m_obstacles.setVolumes([this](const water::ObstacleBody& b) {
     return boundaryVolumes(b.particles, b.built.shell, m_params.h(), m_solidVolume);
   });
   reset();
 }
 
 void Fluid::calibrate() {
-  if (m_restSpacing == m_params.spacing && m_restSmoothing == m_params.smoothing) return;
-  m_rest = restLattice(m_params.spacing, m_params.h(), Packing::Cubic);
-  m_solidVolume = restLattice(m_params.spacing, m_params.h(), Packing::Hcp).volume;
-  m_restSpacing = m_params.spacing;
+  if (m_restSpacing == m_params.spacing() && m_restSmoothing == m_params.smoothing) return;
+  m_rest = restLattice(m_params.spacing(), m_params.h(), Packing::Cubic);
+  m_solidVolume = restLattice(m_params.spacing(), m_params.h(), Packing::Hcp).volume;
+  m_restSpacing = m_params.spacing();
   m_restSmoothing = m_params.smoothing;
   m_obstacles.refreshVolumes();
 }
@@ -70,7 +69,7 @@ void Fluid::calibrate() {
 // index in cell and stable members (a word each). Host: the initial water (vec4) and the lattice
 // it is cut from (vec4).
 sim::ParticleCost Fluid::cost() const {
-  return {.maxParticles = std::size_t(m_water.maxParticles),
+  return {.maxParticles = std::size_t(m_params.maxParticles),
           .arrayBytes = sizeof(glm::vec4),
           .gpuBytes = 5 * sizeof(glm::vec4) + 2 * sizeof(float) + 4 * sizeof(GLuint),
           .hostBytes = 2 * sizeof(glm::vec4)};
@@ -92,21 +91,20 @@ void Fluid::allocate(std::size_t count, std::size_t capacity) {
 }
 
 void Fluid::reset() {
-  m_water = resolvedWater(m_params);
-  const balls::Params& w = m_water;
+  const water::Setup& w = m_params;
   if (glm::any(glm::lessThanEqual(w.domainMax, w.domainMin)))
     throw Error("fluid: domain_max must exceed domain_min on every axis");
   // First the count, from the fill's volume: a spacing that asks for 10^11 particles fails here,
   // with the numbers, before any array is built.
   char spacing[48];
-  std::snprintf(spacing, sizeof spacing, "particles.spacing = %g m", double(m_params.spacing));
-  balls::checkWaterRequest("fluid", "particle", spacing, estimatedParticles(w, m_params.spacing), w, cost());
+  std::snprintf(spacing, sizeof spacing, "particles.spacing = %g m", double(m_params.spacing()));
+  water::checkWaterRequest("fluid", "particle", spacing, estimatedParticles(w, m_params.spacing()), w, cost());
   m_restSpacing = m_restSmoothing = 0;
   calibrate();
   m_obstacles.build(w.obstacles, w.radius);  // first: a bad mesh fails before anything is allocated
   m_obstacles.place(w.obstacles, 0.0, w.domainMin, w.domainMax);
   const std::vector<glm::vec4> water =
-      fill(w, m_params.spacing, [this](glm::vec3 q) { return m_obstacles.occupied(q); });
+      fill(w, m_params.spacing(), [this](glm::vec3 q) { return m_obstacles.occupied(q); });
   allocate(water.size(), water.size() + (w.tap ? std::size_t(w.tapMax) : 0));
   m_tapEmitted = 0;
   m_tapNextLayer = 0;
@@ -120,19 +118,19 @@ void Fluid::reset() {
       .domainMin = w.domainMin, .domainMax = w.domainMax, .cellSize = cellSize(), .stable = w.deterministic};
   m_grid = std::make_unique<grid::UniformGrid>(m_shaders, gp, m_capacity);
   m_obstacleError.clear();
-  m_walls = balls::wallsAt(w, 0.0);
+  m_walls = water::wallsAt(w, 0.0);
 }
 
 void Fluid::emitFromTap() {
-  const balls::Params& w = m_water;
+  const water::Setup& w = m_params;
   if (!w.tap || m_tapEmitted >= std::size_t(w.tapMax) || m_time < m_tapNextLayer || w.tapSpeed <= 0) return;
   // The jet at the fluid's rest density (one particle per d³): hexagonal layers of spacing s, one
   // every s of travel (a stack of hexagonal prisms, 2/√3 particles per s³), so s = d·(2/√3)^(1/3).
   // The balls' layers (s = 2r·1.02 at r = d/2, 0.82 s apart) would start the jet 60% compressed
   // and burst it into spray.
-  const float s = m_params.spacing * std::cbrt(2.0f / std::sqrt(3.0f));
-  const balls::TapLayer layer =
-      balls::tapLayer(w, s / 2.04f, std::min(std::size_t(w.tapMax) - m_tapEmitted, m_capacity - m_count));
+  const float s = m_params.spacing() * std::cbrt(2.0f / std::sqrt(3.0f));
+  const water::TapLayer layer =
+      water::tapLayer(w, s / 2.04f, std::min(std::size_t(w.tapMax) - m_tapEmitted, m_capacity - m_count));
   if (layer.pos.empty()) return;
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);  // shader writes land before the uploads
   const std::size_t at = m_count * sizeof(glm::vec4), bytes = layer.pos.size() * sizeof(glm::vec4);
@@ -143,16 +141,16 @@ void Fluid::emitFromTap() {
   m_tapNextLayer = m_time + s / w.tapSpeed;
 }
 
-float Fluid::domainRotation() const { return balls::domainRotation(m_water, m_time); }
+float Fluid::domainRotation() const { return water::domainRotation(m_params, m_time); }
 
-glm::vec3 Fluid::gravity() const { return balls::gravityAt(m_water, m_time); }
+glm::vec3 Fluid::gravity() const { return water::gravityAt(m_params, m_time); }
 
-double Fluid::speedBound() const { return m_params.h() / m_water.dt; }
+double Fluid::speedBound() const { return m_params.h() / m_params.dt; }
 
 std::string Fluid::status() const {
   char buf[200];
   std::snprintf(buf, sizeof buf, "%zu particles + %zu boundary, d = %.4g m, h = %.4g m, m = %.4g kg", m_count,
-                obstacleCount(), double(m_params.spacing), m_params.h(), mass());
+                obstacleCount(), double(m_params.spacing()), m_params.h(), mass());
   return m_obstacleError.empty() ? std::string(buf) : m_obstacleError + "\n" + buf;
 }
 
@@ -162,18 +160,17 @@ std::vector<sim::StateBuffer> Fluid::stateBuffers() {
 }
 
 Stats Fluid::stats() {
-  return m_probe.measure(*this, {m_params.spacing, m_params.smoothing, m_params.restDensity, Packing::Cubic}, gravity(),
-                         m_time);
+  return m_probe.measure(*this, {m_params.spacing(), m_params.smoothing, m_params.restDensity, Packing::Cubic},
+                         gravity(), m_time);
 }
 
 gl::Program& Fluid::healthKernel() {
-  // The water's check is the balls' (NaN, outside the walls, largest speed): same buffers, same meaning.
-  gl::Program& p = m_shaders.program({"balls/health.comp"});
+  gl::Program& p = m_shaders.program({"fluid/health.comp"});
   p.use();
   p.set("uWallMin", m_walls.min);
   p.set("uWallMax", m_walls.max);
-  m_x.bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_POS_IN);
-  m_v.bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VEL_IN);
+  m_x.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_POS);
+  m_v.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_VEL_IN);
   return p;
 }
 
@@ -183,7 +180,7 @@ std::optional<std::string> Fluid::unhealthy(const sim::DivergenceWatch::Words& w
 
 std::string Fluid::method() const {
   char method[160];
-  std::snprintf(method, sizeof method, "PBF, %d iterations, dt = %.3g s", m_params.iterations, m_water.dt);
+  std::snprintf(method, sizeof method, "PBF, %d iterations, dt = %.3g s", m_params.iterations, m_params.dt);
   return method;
 }
 
@@ -192,9 +189,8 @@ void Fluid::resume(const sim::StateStamp& good) {
   m_time = good.time;
   m_steps = good.steps;
   m_densitiesValid = false;
-  m_params.water.dt *= 0.5f;
-  m_params.water.substeps = std::min(m_params.water.substeps * 2, 1000);  // same simulated time per frame
-  m_water = resolvedWater(m_params);
+  m_params.dt *= 0.5f;
+  m_params.substeps = std::min(m_params.substeps * 2, 1000);  // same simulated time per frame
 }
 
 void Fluid::visitOwnState(sim::StateVisitor& v) {
@@ -211,7 +207,7 @@ void Fluid::visitOwnState(sim::StateVisitor& v) {
   v.count("model.count", m_count, m_capacity);
   v.count("model.tap_emitted", m_tapEmitted, m_capacity);
   v.value("model.tap_next_layer", m_tapNextLayer);
-  if (v.loading()) m_walls = balls::wallsAt(m_water, m_time);  // as the last step left them, for the watch
+  if (v.loading()) m_walls = water::wallsAt(m_params, m_time);  // as the last step left them, for the watch
 }
 
 std::size_t Fluid::bytesPerParticle() const {

@@ -11,7 +11,7 @@
 // Densities are ρ/ρ0 throughout (shaders/fluid/kernels.glsl); boundaries take part in the density
 // sum: the walls as half spaces at rest density (closed form, sph_kernels.h), the obstacles'
 // particles with their rest volumes (Akinci et al. 2012; rest_lattice.h). Renderers read it as
-// they read the balls (sim::ParticleWater).
+// they read the balls (water::ParticleWater).
 #pragma once
 
 #include <memory>
@@ -23,18 +23,18 @@
 #include "gl/gpu_profiler.h"
 #include "gl/shader_library.h"
 #include "grid/grid.h"
-#include "sim/balls/obstacles.h"
-#include "sim/balls/water_frame.h"
 #include "sim/fluid/density_probe.h"
 #include "sim/fluid/fluid_params.h"
 #include "sim/fluid/rest_lattice.h"
 #include "sim/model.h"
 #include "sim/particle_memory.h"
-#include "sim/particle_water.h"
+#include "sim/water/obstacles.h"
+#include "sim/water/particle_water.h"
+#include "sim/water/water_frame.h"
 
 namespace tidepool::fluid {
 
-class Fluid final : public sim::Model, public sim::ParticleWater {
+class Fluid final : public sim::Model, public water::ParticleWater {
  public:
   // The closest a particle comes to an obstacle particle, in spacings: more than the largest hole of
   // their HCP lattice (an octahedral hole, 1/√2 from its six particles), so none passes through a
@@ -49,7 +49,7 @@ class Fluid final : public sim::Model, public sim::ParticleWater {
   void reset() override;
   void step(double frameSeconds, gl::GpuProfiler& profiler) override;
   double time() const override { return m_time; }
-  std::size_t count() const override { return m_count; }  // sim::Model and sim::ParticleWater
+  std::size_t count() const override { return m_count; }  // sim::Model and water::ParticleWater
   std::string status() const override;
   std::uint64_t stepCount() const override { return m_steps; }
   std::vector<sim::StateBuffer> stateBuffers() override;  // positions, velocities
@@ -57,16 +57,17 @@ class Fluid final : public sim::Model, public sim::ParticleWater {
   void stepOnce(gl::GpuProfiler* profiler = nullptr);  // one step of water.dt
   Stats stats();                                       // the density probe and energies (blocking)
 
-  // sim::ParticleWater
+  // water::ParticleWater
   const gl::Buffer& positions() const override { return m_x; }
   const gl::Buffer& velocities() const override { return m_v; }
   // vec2 (λ, ρ/ρ0) per particle, in the order of positions(): the density of the last step's last
   // solver iteration. Valid once a step has run since reset, upload, restore or recovery.
   const gl::Buffer& densities() const { return m_lambda; }
   bool densitiesValid() const { return m_densitiesValid; }
-  float radius() const override { return 0.5f * m_params.spacing; }
-  const balls::Obstacles& obstacles() const override { return m_obstacles; }
-  const balls::Params& water() const override { return m_water; }
+  float radius() const override { return m_params.radius; }
+  water::Packing packing() const override { return Params::kPacking; }
+  const water::Obstacles& obstacles() const override { return m_obstacles; }
+  const water::Setup& water() const override { return m_params; }
   glm::vec3 wallMin() const override { return m_walls.min; }
   glm::vec3 wallMax() const override { return m_walls.max; }
   float domainRotation() const override;
@@ -77,7 +78,7 @@ class Fluid final : public sim::Model, public sim::ParticleWater {
   const RestLattice& rest() const { return m_rest; }
   std::size_t obstacleCount() const { return m_obstacles.particles(); }
   std::size_t cells() const { return m_grid ? m_grid->cells() : 0; }                // of the neighbour grid (cell h)
-  const grid::UniformGrid* neighbourGrid() const override { return m_grid.get(); }  // sim::ParticleWater
+  const grid::UniformGrid* neighbourGrid() const override { return m_grid.get(); }  // water::ParticleWater
   std::size_t bytesPerParticle() const;  // GPU memory of the state, the solver and the grid, per particle
   double speedBound() const;             // m/s: faster moves more than h per step (neighbours missed)
 
@@ -117,7 +118,6 @@ class Fluid final : public sim::Model, public sim::ParticleWater {
 
   gl::ShaderLibrary& m_shaders;
   Params m_params;
-  balls::Params m_water;                         // resolvedWater(m_params), refreshed every step
   RestLattice m_rest;                            // the fluid's cubic fill
   double m_solidVolume = 0;                      // V0 of a solid obstacle's particles (HCP lattice)
   float m_restSpacing = 0, m_restSmoothing = 0;  // what m_rest was measured for
@@ -127,9 +127,9 @@ class Fluid final : public sim::Model, public sim::ParticleWater {
   // iterations and the velocity passes; (λ, ρ/ρ0) per particle.
   gl::Buffer m_x, m_v, m_pred, m_scratch[2], m_lambda, m_permutation;
   std::unique_ptr<grid::UniformGrid> m_grid;
-  balls::Obstacles m_obstacles;
+  water::Obstacles m_obstacles;
   std::string m_obstacleError;
-  balls::Walls m_walls;
+  water::Walls m_walls;
   DensityProbe m_probe;
   double m_time = 0;
   std::uint64_t m_steps = 0;

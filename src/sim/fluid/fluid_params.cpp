@@ -2,19 +2,12 @@
 
 namespace tidepool::fluid {
 
-balls::Params Params::defaultWater() {
-  balls::Params w;
-  w.dt = 1.0f / 600.0f;
-  w.substeps = 10;
-  w.tapMax = 20000;
-  return w;
-}
-
 void visit(ParamVisitor& v, Params& p) {
-  balls::Params& w = p.water;
   if (v.beginGroup({"particles", "Particles", "spacing, domain and initial water (re-creates the particles)"})) {
-    v.real({"spacing", "Spacing", "d: particle distance at rest, m"}, p.spacing, 2e-4f, 1.0f);
-    balls::visitFill(v, w);
+    float spacing = p.spacing();
+    v.real({"spacing", "Spacing", "d: particle distance at rest, m"}, spacing, 2e-4f, 1.0f);
+    p.setSpacing(spacing);
+    water::visitFill(v, p);
     v.endGroup();
   }
   if (v.beginGroup({"solver", "Solver", "position-based fluid: density constraint, iterations, viscosity"})) {
@@ -32,37 +25,19 @@ void visit(ParamVisitor& v, Params& p) {
     v.endGroup();
   }
   if (v.beginGroup({"engine", "Engine", "time step, gravity"})) {
-    v.real({"dt", "Time step", "s"}, w.dt, 1e-6f, 0.1f);
-    v.integer({"substeps", "Substeps", "steps per frame"}, w.substeps, 1, 1000);
-    v.vector({"gravity", "Gravity", "m/s^2"}, w.gravity, -1000.0f, 1000.0f);
-    v.real({"damping", "Damping", "1/s, frame-rate independent"}, w.damping, 0.0f, 1000.0f);
-    v.real({"foam_gain", "Foam gain", "per m of travel"}, w.foamGain, 0.0f, 1000.0f);
-    v.real({"foam_decay", "Foam decay", "factor per 0.5 ms"}, w.foamDecay, 0.5f, 1.0f);
+    water::visitEngine(v, p, 0.1f);
+    water::visitFoam(v, p);
     v.endGroup();
   }
   if (v.beginGroup({"walls", "Walls", "piston and domain rotation"})) {
-    balls::visitWalls(v, w);
+    water::visitWalls(v, p);
     v.endGroup();
   }
   if (v.beginGroup({"tap", "Tap", "emits particles over time"})) {
-    balls::visitTap(v, w);
+    water::visitTap(v, p);
     v.endGroup();
   }
-  balls::visitObstacles(v, w);
-}
-
-balls::Params resolvedWater(const Params& p) {
-  balls::Params w = p.water;
-  w.radius = 0.5f * p.spacing;
-  w.latticeScaling = false;
-  return w;
-}
-
-void refine(Params& p, double factor) {
-  balls::Params water = p.water;
-  balls::refine(water, factor);
-  p.water = water;
-  p.spacing = float(double(p.spacing) / factor);
+  water::visitObstacles(v, p);
 }
 
 }  // namespace tidepool::fluid

@@ -1,22 +1,16 @@
 // Parameters of the fluid model (Position Based Fluids, Macklin & Müller, SIGGRAPH 2013): the
-// water it shares with the balls model (domain, fill, walls, tap, obstacles, time step; the balls'
-// radius is half the fluid's particle spacing) and the PBF solver's own keys, declared once for
-// JSON and UI. SI units throughout: metres, seconds, kg/m³.
+// water (sim/water/setup.h: domain, fill, walls, tap, obstacles, engine step; the particle size,
+// read and written as the spacing d = 2r) and the PBF solver's own keys, declared once for JSON
+// and UI. SI units throughout: metres, seconds, kg/m³.
 #pragma once
 
-#include <cmath>
-#include <cstddef>
-
 #include "base/param.h"
-#include "sim/balls/balls_params.h"
+#include "sim/water/setup.h"
 
 namespace tidepool::fluid {
 
-struct Params {
-  // What a fluid scene shares with a balls scene (the window switches between the two keeping it).
-  // water.radius is spacing / 2 (set from `spacing` by resolvedWater()); contact laws are unused.
-  balls::Params water = defaultWater();
-  float spacing = 0.02f;        // d: distance between neighbouring particles at rest (cubic fill), m
+// The water setup is a base (as balls::Params'), with a fluid's time step by default.
+struct Params : water::Setup {
   float restDensity = 1000.0f;  // ρ0, kg/m³
   float smoothing = 2.0f;       // h / d: the kernels' support in spacings
   int iterations = 4;           // solver iterations per step
@@ -27,17 +21,18 @@ struct Params {
   float viscosity = 0.01f;  // XSPH c: the fraction of the neighbourhood's mean velocity blended in per step
   float vorticity = 0.0f;   // vorticity confinement ε_v (m/s); 0: off
 
-  static balls::Params defaultWater();  // the balls defaults with a fluid's time step
-  float h() const { return smoothing * spacing; }
+  Params() {
+    dt = 1.0f / 600.0f;
+    substeps = 10;
+  }
+  // d: distance between neighbouring particles at rest (cubic fill), m
+  float spacing() const { return water::spacing(radius); }
+  void setSpacing(float d) { radius = water::radiusOfSpacing(d); }
+  float h() const { return smoothing * spacing(); }
+
+  static constexpr water::Packing kPacking = water::Packing::Cubic;  // the rest lattice (rest_lattice.h)
 };
 
 void visit(ParamVisitor& v, Params& p);
-
-// The water parameters with the radius of the spacing (what fills, obstacles and the tap use).
-balls::Params resolvedWater(const Params& p);
-
-// The fluid's spacing refined `factor` times (balls::refine for the rest: counts, dt, substeps,
-// the resolution record). Throws Error; `p` is then unchanged.
-void refine(Params& p, double factor);
 
 }  // namespace tidepool::fluid

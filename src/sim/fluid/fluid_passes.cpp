@@ -20,21 +20,19 @@ gl::GpuProfiler::Scope timed(gl::GpuProfiler* profiler, const char* name) {
 }  // namespace
 
 void Fluid::stepOnce(gl::GpuProfiler* profiler) {
-  m_water = resolvedWater(m_params);  // solver and engine edits apply now
   calibrate();
   if (m_grid->params().cellSize != cellSize()) {  // h or the grid cell edited
     grid::GridParams gp = m_grid->params();
     gp.cellSize = cellSize();
     m_grid = std::make_unique<grid::UniformGrid>(m_shaders, gp, m_capacity);
   }
-  if (std::string error; m_obstacles.update(m_params.water.obstacles, m_water.radius, error)) {
+  if (std::string error; m_obstacles.update(m_params.obstacles, m_params.radius, error)) {
     m_obstacleError = error;
-    m_water.obstacles = m_params.water.obstacles;
   }
   emitFromTap();
   // Placed where they are at the step's end, when the collisions see them (timed as "balls.obstacles").
-  m_obstacles.place(m_water.obstacles, m_time + m_water.dt, m_water.domainMin, m_water.domainMax, profiler);
-  m_walls = balls::wallsAt(m_water, m_time + m_water.dt);  // the collisions see the walls at the step's end
+  m_obstacles.place(m_params.obstacles, m_time + m_params.dt, m_params.domainMin, m_params.domainMax, profiler);
+  m_walls = water::wallsAt(m_params, m_time + m_params.dt);  // the collisions see the walls at the step's end
   if (m_count > 0) {
     predict(profiler);
     sortByCell(profiler);
@@ -42,12 +40,12 @@ void Fluid::stepOnce(gl::GpuProfiler* profiler) {
     updateVelocities(profiler);
   }
   m_densitiesValid = m_count > 0 && m_params.iterations > 0;
-  m_time += m_water.dt;
+  m_time += m_params.dt;
   ++m_steps;
 }
 
 void Fluid::step(double, gl::GpuProfiler& profiler) {
-  for (int i = 0; i < m_params.water.substeps; ++i) stepOnce(&profiler);
+  for (int i = 0; i < m_params.substeps; ++i) stepOnce(&profiler);
   watch();
 }
 
@@ -56,10 +54,10 @@ gl::Program& Fluid::useKernel(const char* file, std::vector<gl::ShaderDefine> de
   gl::Program& p = m_shaders.program({file}, defines);
   p.use();
   p.set("uCount", GLuint(m_count));
-  p.set("uDt", m_water.dt);
+  p.set("uDt", m_params.dt);
   p.set("uWallMin", m_walls.min);
   p.set("uWallMax", m_walls.max);
-  p.set("uWallInset", 0.5f * m_params.spacing);
+  p.set("uWallInset", 0.5f * m_params.spacing());
   setKernelUniforms(p, m_params.h(), m_rest);
   bindBoundary(p, m_obstacles, m_params.h());
   m_grid->setUniforms(p);
@@ -72,7 +70,7 @@ void Fluid::predict(gl::GpuProfiler* profiler) {
   auto scope = timed(profiler, "fluid.predict");
   gl::Program& p = useKernel("fluid/predict.comp");
   p.set("uGravity", gravity());
-  p.set("uDecay", std::exp(-m_water.damping * m_water.dt));
+  p.set("uDecay", std::exp(-m_params.damping * m_params.dt));
   m_x.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_POS);
   m_v.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_VEL_IN);
   m_pred.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_OUT);
@@ -90,7 +88,7 @@ void Fluid::sortByCell(gl::GpuProfiler* profiler) {
     m_grid->scanCells();
   }
   auto scope = timed(profiler, "fluid.reorder");
-  m_grid->setStable(m_water.deterministic);
+  m_grid->setStable(m_params.deterministic);
   m_grid->reorder(m_pred, {{&m_pred, &m_scratch[0]}, {&m_x, &m_scratch[1]}}, m_trackOrder ? &m_permutation : nullptr);
   std::swap(m_pred, m_scratch[0]);
   std::swap(m_x, m_scratch[1]);
@@ -119,7 +117,7 @@ void Fluid::solve(gl::GpuProfiler* profiler) {
     p.set("uScorrK", float(q.scorrK / m_rest.gradients));
     p.set("uScorrN", q.scorrN);
     p.set("uScorrInvQ", 1.0f / (1.0f - dq * dq));
-    p.set("uContact", kObstacleContact * q.spacing);
+    p.set("uContact", kObstacleContact * q.spacing());
     m_pred.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_PRED);
     m_lambda.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_LAMBDA);
     m_scratch[0].bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_OUT);
@@ -133,8 +131,8 @@ void Fluid::updateVelocities(gl::GpuProfiler* profiler) {
   {
     auto scope = timed(profiler, "fluid.velocity");
     gl::Program& p = useKernel("fluid/velocity.comp");
-    p.set("uFoamGain", m_water.foamGain);
-    p.set("uFoamDecay", std::pow(m_water.foamDecay, m_water.dt / 0.0005f));  // the seed's decay per 0.5 ms
+    p.set("uFoamGain", m_params.foamGain);
+    p.set("uFoamDecay", std::pow(m_params.foamDecay, m_params.dt / 0.0005f));  // the seed's decay per 0.5 ms
     m_x.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_POS);
     m_pred.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_PRED);
     m_v.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_OUT);

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <unordered_map>
 
-#include "sim/balls/balls_init.h"
 #include "sim/fluid/sph_kernels.h"
+#include "sim/water/water_init.h"
 
 namespace tidepool::fluid {
 
@@ -12,7 +12,7 @@ RestLattice restLattice(double spacing, double h, Packing packing) {
   const float d = float(spacing), reach = float(h) + 3.0f * d;
   std::vector<glm::vec3> lattice;
   if (packing == Packing::Hcp) {
-    lattice = balls::hcpLattice(glm::vec3(-reach), glm::vec3(reach), 0.5f * d);
+    lattice = water::hcpLattice(glm::vec3(-reach), glm::vec3(reach), 0.5f * d);
   } else {
     const int n = int(std::ceil(reach / d));
     for (int k = -n; k <= n; ++k)

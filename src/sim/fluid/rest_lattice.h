@@ -4,13 +4,18 @@
 // and the constraint-gradient sum Σ_j |V0 ∇W|² that scales the relaxation ε and s_corr.
 // The fluid fills blocks on a cubic lattice (it tiles a box exactly: the water's volume is the
 // block's, with no gaps at the walls to settle into); balls and obstacle particles sit on the HCP
-// lattice of balls_init.h (√2 particles per d³). Obstacle particles get boundary volumes (Akinci et al. 2012).
+// lattice of sim/water/water_init.h (√2 particles per d³). Obstacle particles get boundary volumes (Akinci et al.
+// 2012).
 #pragma once
 
 #include <glm/glm.hpp>
 #include <vector>
 
+#include "sim/water/setup.h"
+
 namespace tidepool::fluid {
+
+using water::Packing;  // the lattices of sim/water/setup.h's particle size
 
 struct RestLattice {
   double volume = 0;     // V0, m³
@@ -20,7 +25,6 @@ struct RestLattice {
   // this factor, which makes that layer read exactly ρ0 (0.88 at h = 2d, cubic).
   double wallScale = 1;
 };
-enum class Packing { Cubic, Hcp };
 RestLattice restLattice(double spacing, double h, Packing packing);  // h: smoothing radius, m
 
 // Rest volumes of one obstacle's particles (own frame, spacing d), for the density sum:

@@ -43,12 +43,12 @@ Scene load(const std::string& json) { return parseScene(io::parseJson(json, "s.j
 double statedFrame(const std::string& json) {
   const io::Json params = io::parseJson(json, "s.json").at("params");
   const fluid::Params p = readSceneParams<FluidSceneParams>(params, "s.json").as<FluidSceneParams>().model;
-  return double(p.water.dt) * p.water.substeps;
+  return double(p.dt) * p.substeps;
 }
 
 // The frame the scene runs: the picked model's dt x substeps (s).
 double frameOf(const Scene& s) {
-  if (s.model == "fluid") return double(fluidScene(s).model.water.dt) * fluidScene(s).model.water.substeps;
+  if (s.model == "fluid") return double(fluidScene(s).model.dt) * fluidScene(s).model.substeps;
   return double(ballsScene(s).model.dt) * ballsScene(s).model.substeps;
 }
 
@@ -75,10 +75,10 @@ TEST_F(ResolveAutoWater, PicksFluidWhenOnlyTheFluidMeetsATightDensityBound) {
   EXPECT_EQ(s.autoChoice->model, "fluid");
   const fluid::Params& p = fluidScene(s).model;
   EXPECT_EQ(p.iterations, 4);
-  EXPECT_EQ(p.water.substeps, 3);  // 5 ms in steps of at most 2 ms
-  EXPECT_NEAR(p.water.dt, 0.005 / 3, 1e-9);
-  EXPECT_EQ(p.spacing, 0.02f);  // the scene's own keys stay
-  EXPECT_EQ(p.water.domainMax, glm::vec3(0.2f, 0.1f, 0.2f));
+  EXPECT_EQ(p.substeps, 3);  // 5 ms in steps of at most 2 ms
+  EXPECT_NEAR(p.dt, 0.005 / 3, 1e-9);
+  EXPECT_EQ(p.spacing(), 0.02f);  // the scene's own keys stay
+  EXPECT_EQ(p.domainMax, glm::vec3(0.2f, 0.1f, 0.2f));
   EXPECT_EQ(s.autoChoice->headline(), "auto: fluid, 4 iterations, dt 1.67 ms (density error 0.4% <= 1%)");
   EXPECT_EQ(
       s.autoChoice->summary().rfind("auto: picked fluid, 4 iterations, dt 1.67 ms (density error 0.4% for "
@@ -127,7 +127,7 @@ TEST_F(ResolveAutoWater, PicksTheFewestIterationsAndTheLargestStepThatMeetTheBou
     ASSERT_EQ(s.model, "fluid");
     const fluid::Params& p = fluidScene(s).model;
     EXPECT_EQ(p.iterations, c.iterations);
-    EXPECT_EQ(p.water.substeps, int(std::ceil(0.005 / c.rowDt - 1e-9)));  // the largest step the row allows
+    EXPECT_EQ(p.substeps, int(std::ceil(0.005 / c.rowDt - 1e-9)));  // the largest step the row allows
   }
 }
 
@@ -143,8 +143,8 @@ TEST_F(ResolveAutoWater, TheFrameKeepsItsSimulatedTime) {
       ASSERT_EQ(s.model, model);
       const double stated = statedFrame(json);
       EXPECT_NEAR(frameOf(s), stated, 1e-6 * stated);
-      const double dt = s.model == "fluid" ? fluidScene(s).model.water.dt : ballsScene(s).model.dt;
-      const int substeps = s.model == "fluid" ? fluidScene(s).model.water.substeps : ballsScene(s).model.substeps;
+      const double dt = s.model == "fluid" ? fluidScene(s).model.dt : ballsScene(s).model.dt;
+      const int substeps = s.model == "fluid" ? fluidScene(s).model.substeps : ballsScene(s).model.substeps;
       EXPECT_LE(dt, rowDt * (1 + 1e-6));
       if (substeps > 1) EXPECT_GT(stated / (substeps - 1), rowDt);  // the fewest substeps that do
     }

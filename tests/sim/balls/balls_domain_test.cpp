@@ -6,13 +6,14 @@
 #include "scene/balls_stage.h"
 #include "scene/scene.h"
 #include "sim/balls/balls.h"
-#include "sim/balls/water_frame.h"
+#include "sim/water/water_frame.h"
 #include "support/balls_fixtures.h"
 #include "support/gl_test.h"
 #include "support/null_visitor.h"
 
 using namespace tidepool;
 using namespace tidepool::balls;
+using namespace tidepool::water;
 
 namespace {
 using BallsTest = test::GlTest;

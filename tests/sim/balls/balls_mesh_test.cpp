@@ -9,13 +9,14 @@
 
 #include "base/error.h"
 #include "sim/balls/balls.h"
-#include "sim/balls/balls_init.h"
-#include "sim/balls/balls_mesh.h"
-#include "sim/balls/obstacle_pose.h"
+#include "sim/water/mesh_solid.h"
+#include "sim/water/obstacle_pose.h"
+#include "sim/water/water_init.h"
 #include "support/gl_test.h"
 
 using namespace tidepool;
 using namespace tidepool::balls;
+using namespace tidepool::water;
 
 namespace {
 

@@ -9,12 +9,13 @@
 #include "base/error.h"
 #include "reference/balls_reference.h"
 #include "sim/balls/balls.h"
-#include "sim/balls/balls_init.h"
+#include "sim/water/water_init.h"
 #include "support/balls_fixtures.h"
 #include "support/gl_test.h"
 
 using namespace tidepool;
 using namespace tidepool::balls;
+using namespace tidepool::water;
 
 namespace {
 

@@ -1,4 +1,4 @@
-// Several obstacles, each moving rigidly (sim/balls/obstacles.h): the shipped scene's obstacles
+// Several obstacles, each moving rigidly (sim/water/obstacles.h): the shipped scene's obstacles
 // keep their particles and shape while they turn and travel, the GPU places them where the CPU
 // pose says and with that pose's velocity, one GPU step among moving obstacles equals the CPU
 // reference, a moving obstacle pushes the water its way without losing a ball, and obstacles are
@@ -15,6 +15,7 @@
 
 using namespace tidepool;
 using namespace tidepool::balls;
+using namespace tidepool::water;
 
 namespace {
 

@@ -34,8 +34,8 @@ double surface(Fluid& f) {
 
 // Every particle at least half a spacing inside each wall (the collision's inset), none NaN.
 void expectInsideTheWalls(Fluid& f) {
-  const glm::vec3 lo = f.wallMin() + 0.5f * f.params().spacing - 1e-5f;
-  const glm::vec3 hi = f.wallMax() - 0.5f * f.params().spacing + 1e-5f;
+  const glm::vec3 lo = f.wallMin() + 0.5f * f.params().spacing() - 1e-5f;
+  const glm::vec3 hi = f.wallMax() - 0.5f * f.params().spacing() + 1e-5f;
   std::size_t outside = 0;
   for (const glm::vec4& p : f.downloadPositions())
     if (!(glm::all(glm::greaterThanEqual(glm::vec3(p), lo)) && glm::all(glm::lessThanEqual(glm::vec3(p), hi))))
@@ -69,7 +69,7 @@ TEST_F(FluidTest, RestingTankKeepsItsSurfaceAndEveryParticleForTwoSeconds) {
   const Params p = sceneParams("fluid-tank");
   Fluid f(shaders(), p);
   const std::size_t count = f.count();
-  const double filled = p.water.slabHeight;  // the cubic fill tiles the slab: its surface is the fill height
+  const double filled = p.slabHeight;  // the cubic fill tiles the slab: its surface is the fill height
   EXPECT_NEAR(surface(f), filled, 1e-3 * filled);
   for (int k = 1; k <= 8; ++k) {
     run(f, 0.25 * k);
@@ -90,7 +90,7 @@ TEST_F(FluidTest, DamBreakRunsTwoSecondsStableWithEveryParticleAndAnAdvancingFro
   const Params p = sceneParams("dam-break-fluid");
   Fluid f(shaders(), p);
   const std::size_t count = f.count();
-  const double wall = p.water.domainMax.x - 0.5 * p.spacing;
+  const double wall = p.domainMax.x - 0.5 * p.spacing();
   double front = 0;
   for (int k = 1; k <= 40; ++k) {
     run(f, 0.05 * k);
@@ -111,14 +111,14 @@ TEST_F(FluidTest, DamBreakRunsTwoSecondsStableWithEveryParticleAndAnAdvancingFro
 // particles, where water touching the wall legitimately sits.
 TEST_F(FluidTest, NoParticleEntersAnObstacle) {
   Params p = sceneParams("fluid-cup");
-  p.spacing = 0.03f;
+  p.setSpacing(0.03f);
   Fluid f(shaders(), p);
   const std::size_t count = f.count();
   std::size_t inside = 0, worst = 0;
   for (int k = 1; k <= 6; ++k) {
     run(f, 0.1 * k);
     inside = 0;
-    const float r = 0.5f * p.spacing;
+    const float r = 0.5f * p.spacing();
     for (const glm::vec4& q : f.downloadPositions()) {
       bool deep = f.obstacles().occupied(glm::vec3(q));
       for (int axis = 0; axis < 3 && deep; ++axis)
@@ -141,15 +141,15 @@ TEST_F(FluidTest, NoParticleEntersAnObstacle) {
 // (layers at the balls' packing would start it 60% over ρ0 and burst it into spray).
 TEST_F(FluidTest, TapJetLeavesTheNozzleUncompressed) {
   Params p;
-  p.spacing = 0.02f;
-  p.water.domainMax = glm::vec3(0.4f, 0.4f, 0.6f);
-  p.water.fill = balls::Fill::None;
-  p.water.dt = 0.001f;
-  p.water.tap = true;
-  p.water.tapPosition = glm::vec3(0.2f, 0.2f, 0.5f);
-  p.water.tapDirection = glm::vec3(0.0f, 0.0f, -1.0f);
-  p.water.tapSpeed = 1.5f;
-  p.water.tapRadius = 0.05f;
+  p.setSpacing(0.02f);
+  p.domainMax = glm::vec3(0.4f, 0.4f, 0.6f);
+  p.fill = water::Fill::None;
+  p.dt = 0.001f;
+  p.tap = true;
+  p.tapPosition = glm::vec3(0.2f, 0.2f, 0.5f);
+  p.tapDirection = glm::vec3(0.0f, 0.0f, -1.0f);
+  p.tapSpeed = 1.5f;
+  p.tapRadius = 0.05f;
   Fluid f(shaders(), p);
   double worst = -1;
   for (int k = 1; k <= 10; ++k) {

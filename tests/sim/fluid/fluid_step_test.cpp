@@ -7,8 +7,8 @@
 #include <random>
 
 #include "reference/pbf_reference.h"
-#include "sim/balls/balls_init.h"
 #include "sim/fluid/fluid.h"
+#include "sim/water/water_init.h"
 #include "support/gl_test.h"
 
 using namespace tidepool;
@@ -20,11 +20,11 @@ using FluidTest = test::GlTest;
 
 Params box() {
   Params p;
-  p.spacing = 0.02f;
-  p.water.domainMin = glm::vec3(0.0f);
-  p.water.domainMax = glm::vec3(0.2f, 0.2f, 0.3f);
-  p.water.fill = balls::Fill::None;
-  p.water.dt = 1.0f / 600.0f;
+  p.setSpacing(0.02f);
+  p.domainMin = glm::vec3(0.0f);
+  p.domainMax = glm::vec3(0.2f, 0.2f, 0.3f);
+  p.fill = water::Fill::None;
+  p.dt = 1.0f / 600.0f;
   p.viscosity = 0.0f;
   return p;
 }
@@ -34,7 +34,7 @@ Params box() {
 void squeezed(std::vector<glm::vec4>& pos, std::vector<glm::vec4>& vel, const Params& p) {
   std::mt19937 rng(5);
   std::uniform_real_distribution<float> jitter(-0.002f, 0.002f), speed(-0.3f, 0.3f);
-  const float d = 0.96f * p.spacing;
+  const float d = 0.96f * p.spacing();
   for (int k = 0; k < 5; ++k)
     for (int j = 0; j < 6; ++j)
       for (int i = 0; i < 7; ++i) {
@@ -53,17 +53,17 @@ reference::Setup setupOf(const Fluid& f) {
   s.scorrK = p.scorrK / f.rest().gradients;
   s.scorrN = p.scorrN;
   s.scorrDq = p.scorrDq;
-  s.dt = p.water.dt;
-  s.decay = std::exp(-double(p.water.damping) * p.water.dt);
+  s.dt = p.dt;
+  s.decay = std::exp(-double(p.damping) * p.dt);
   s.viscosity = p.viscosity;
   s.vorticity = p.vorticity;
-  s.contact = Fluid::kObstacleContact * p.spacing;
-  s.inset = 0.5 * p.spacing;
+  s.contact = Fluid::kObstacleContact * p.spacing();
+  s.inset = 0.5 * p.spacing();
   s.wallScale = f.rest().wallScale;
   s.iterations = p.iterations;
-  s.gravity = glm::dvec3(p.water.gravity);
-  s.wallMin = glm::dvec3(p.water.domainMin);
-  s.wallMax = glm::dvec3(p.water.domainMax);
+  s.gravity = glm::dvec3(p.gravity);
+  s.wallMin = glm::dvec3(p.domainMin);
+  s.wallMax = glm::dvec3(p.domainMax);
   return s;
 }
 
@@ -88,12 +88,12 @@ double compare(const std::vector<glm::vec4>& before, const std::vector<glm::vec4
 
 double run(gl::ShaderLibrary& shaders, Params p, bool obstacle, double* velocityError) {
   if (obstacle) {
-    balls::ObstacleParams o;
-    o.shape = balls::Shape::Sphere;
+    water::ObstacleParams o;
+    o.shape = water::Shape::Sphere;
     o.centre = glm::vec3(0.07f, 0.06f, 0.125f);  // just above the block, within h of its top
     o.size = glm::vec3(0.03f);
     o.shell = true;
-    p.water.obstacles.push_back(o);
+    p.obstacles.push_back(o);
   }
   std::vector<glm::vec4> pos, vel;
   squeezed(pos, vel, p);
@@ -109,8 +109,8 @@ double run(gl::ShaderLibrary& shaders, Params p, bool obstacle, double* velocity
   x0 = cpu.x;
   reference::Setup s = setupOf(gpu);
   if (obstacle) {
-    const balls::ObstacleParams& o = p.water.obstacles[0];
-    const std::vector<glm::vec4> body = balls::Obstacle(o, 0.5f * p.spacing).particles();
+    const water::ObstacleParams& o = p.obstacles[0];
+    const std::vector<glm::vec4> body = water::Obstacle(o, 0.5f * p.spacing()).particles();
     const std::vector<float> volumes = boundaryVolumes(body, o.shell, gpu.h(), gpu.rest().volume);
     for (std::size_t b = 0; b < body.size(); ++b)
       s.boundary.push_back({glm::dvec3(o.centre) + glm::dvec3(glm::vec3(body[b])), double(volumes[b])});
@@ -137,7 +137,7 @@ TEST_F(FluidTest, IterationsViscosityVorticityAndObstacleEqualTheCpuReference) {
   p.iterations = 3;
   p.viscosity = 0.05f;
   p.vorticity = 0.5f;
-  p.water.damping = 0.3f;
+  p.damping = 0.3f;
   double velocityError = 0;
   const double error = run(shaders(), p, true, &velocityError);
   std::printf("3 iterations, XSPH, vorticity, sphere shell: displacement error %.3g, velocity error %.3g\n", error,

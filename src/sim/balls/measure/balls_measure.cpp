@@ -10,7 +10,7 @@ namespace {
 
 Params oneBall(Integrator integrator) {
   Params p;
-  p.fill = Fill::None;
+  p.fill = water::Fill::None;
   p.radius = 0.01f;
   p.domainMin = glm::vec3(0.0f);
   p.domainMax = glm::vec3(1.0f);
@@ -92,14 +92,14 @@ double stableStepLimit(gl::ShaderLibrary& shaders, Integrator integrator, double
   return largestStable(0.05, 2.0, tolerance, stable);
 }
 
-ColumnScales columnScales(const Params& p) {
-  const bool block = p.fill == Fill::Block;
+ColumnScales columnScales(const water::Setup& p) {
+  const bool block = p.fill == water::Fill::Block;
   const glm::vec3 lo = block ? glm::max(p.fillMin, p.domainMin) : p.domainMin;
   const glm::vec3 hi = block ? glm::min(p.fillMax, p.domainMax) : p.domainMax;
   return {hi.x - lo.x, hi.z - lo.z};
 }
 
-double frontOverWidth(const Params& p, const Stats& s, float radius) {
+double frontOverWidth(const water::Setup& p, const Stats& s, float radius) {
   return (s.front - p.domainMin.x + radius) / columnScales(p).width;
 }
 

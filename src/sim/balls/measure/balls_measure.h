@@ -40,10 +40,10 @@ double stableStepLimit(gl::ShaderLibrary& shaders, Integrator integrator, double
 struct ColumnScales {
   double width = 0, height = 0;
 };
-ColumnScales columnScales(const Params& p);
+ColumnScales columnScales(const water::Setup& p);
 
 // Surge front in units of a (as `tidepool validate --probe front`): the surface of the ball that is
 // farthest along x among those within 2r of the floor, measured from the back wall. NaN: none.
-double frontOverWidth(const Params& p, const Stats& s, float radius);
+double frontOverWidth(const water::Setup& p, const Stats& s, float radius);
 
 }  // namespace tidepool::balls

@@ -29,7 +29,7 @@ double stiffness(const Params& p) {
 // The resting contact's box and law, without its step, gravity and fixed body.
 Params restingBase(Contact law, Integrator integrator) {
   Params p;
-  p.fill = Fill::None;
+  p.fill = water::Fill::None;
   p.radius = kRadius;
   p.domainMin = glm::vec3(0.0f);
   p.domainMax = glm::vec3(2.0f * kCentre);
@@ -68,8 +68,8 @@ Params restingContact(Contact law, Integrator integrator, double omegaDt) {
   p.dt = float(restingStep(law, omegaDt));
   p.gravity = glm::vec3(0.0f, 0.0f, float(-kEquilibrium * stiffness(p)));
   // A sphere of radius r holds exactly one lattice particle, near its centre.
-  ObstacleParams body;
-  body.shape = Shape::Sphere;
+  water::ObstacleParams body;
+  body.shape = water::Shape::Sphere;
   body.centre = kCentre;
   body.size = glm::vec3(kRadius);
   p.obstacles = {body};

@@ -1,9 +1,10 @@
-// The obstacles of the balls model: each one's fixed particles are built once in its own frame
-// (shape, size, mesh; balls_init.h) and placed every step by its rigid pose (centre, orientation,
+// The obstacles of the water (balls and fluid): each one's fixed particles are built once in its own frame
+// (shape, size, mesh; water_init.h) and placed every step by its rigid pose (centre, orientation,
 // spin, path; obstacle_pose.h), evaluated from the time. On the GPU:
 //   bodies    all obstacles' particles in their own frames, one after the other, w = obstacle index
 //   place     obstacle_place.comp: world = centre_k + R_k·body for particle of obstacle k
-//   grid      the placed particles of every obstacle in one grid of cell 2r over their reach
+//   grid      the placed particles of every obstacle in one grid of cell 2r over their reach,
+//             read by the kernels through buffer textures (common/obstacle_grid.glsl)
 //   poses     a uniform block: each obstacle's pose and velocity, so a contact sees the moving
 //             particle's velocity v_k + ω_k × (x − c_k) (obstacle_poses.glsl)
 // Placing and the grid run only when a pose changed (animated obstacles: every step). Edits while
@@ -18,14 +19,15 @@
 #include "gl/buffer.h"
 #include "gl/gpu_profiler.h"
 #include "gl/shader_library.h"
+#include "gl/texture.h"
 #include "grid/grid.h"
 #include "io/obj.h"
-#include "sim/balls/balls_params.h"
-#include "sim/balls/obstacle_pose.h"
+#include "sim/water/obstacle_pose.h"
+#include "sim/water/setup.h"
 
-namespace tidepool::balls {
+namespace tidepool::water {
 
-class Obstacle;  // balls_init.h
+class Obstacle;  // water_init.h
 
 // One obstacle's particles in its own frame, as built.
 struct ObstacleBody {
@@ -50,11 +52,12 @@ class Obstacles {
   // refused; `error` then says what was refused (empty: nothing).
   bool update(std::vector<ObstacleParams>& params, float radius, std::string& error);
   // Poses at `time`; when one changed (or the bodies did), the particles' world positions and the
-  // grid (bounded by the domain, where balls can be).
+  // grid (bounded by the domain, where particles can be).
   void place(const std::vector<ObstacleParams>& params, double time, glm::vec3 domainMin, glm::vec3 domainMax,
              gl::GpuProfiler* profiler = nullptr);
-  bool occupied(glm::vec3 world) const;   // inside an obstacle at its placed pose
-  void bind(gl::Program& program) const;  // uniforms, pose block and buffers of the contact search
+  bool occupied(glm::vec3 world) const;  // inside an obstacle at its placed pose
+  // Uniforms, pose block and buffer textures of common/obstacle_grid.glsl (when active()).
+  void bind(gl::Program& program) const;
 
   // Rest volumes of every obstacle particle (the fluid's boundary particles): `volumes` gives them
   // for one body at each (re)build; they are placed and sorted with the particles, and
@@ -85,9 +88,10 @@ class Obstacles {
   unsigned m_nextId = 1;
   bool m_dirty = true;  // bodies changed since the last place()
   gl::Buffer m_body, m_world, m_sorted, m_poseBlock;
+  mutable gl::BufferTexture m_textures[3];  // positions, cell starts, volumes (bind())
   VolumeFn m_volumeFn;
   gl::Buffer m_volumeBody, m_volumeSorted;  // with m_volumeFn: vec4 (x = m³) in body and grid order
   std::unique_ptr<grid::UniformGrid> m_grid;
 };
 
-}  // namespace tidepool::balls
+}  // namespace tidepool::water

@@ -2,14 +2,14 @@
 // centred on the origin, unturned) into the world, evaluated from t each step (never integrated,
 // so the shape cannot drift), with the velocity field of that motion for the contact laws:
 //   x(t) = c(t) + R(t)·x_body,   R(t) = Rot(spin axis, spin·t) · R(orientation)
-//   v(x) = c'(t) + ω × (x − c(t)),  ω = spin · axis,  c(t) = centre + path offset (balls_params.h)
+//   v(x) = c'(t) + ω × (x − c(t)),  ω = spin · axis,  c(t) = centre + path offset (setup.h)
 #pragma once
 
 #include <glm/glm.hpp>
 
-#include "sim/balls/balls_params.h"
+#include "sim/water/setup.h"
 
-namespace tidepool::balls {
+namespace tidepool::water {
 
 struct ObstaclePose {
   glm::mat3 rotation{1.0f};  // own frame -> world
@@ -31,4 +31,4 @@ bool animated(const ObstacleParams& o);
 
 glm::mat3 orientationMatrix(glm::vec3 degrees);  // about x, then y, then z
 
-}  // namespace tidepool::balls
+}  // namespace tidepool::water

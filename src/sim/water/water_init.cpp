@@ -1,13 +1,13 @@
-#include "sim/balls/balls_init.h"
+#include "sim/water/water_init.h"
 
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <random>
 
 #include "base/error.h"
-#include "sim/balls/balls_mesh.h"
+#include "sim/water/mesh_solid.h"
 
-namespace tidepool::balls {
+namespace tidepool::water {
 namespace {
 
 constexpr float kPi = 3.14159265358979f;
@@ -42,18 +42,7 @@ std::vector<glm::vec3> hcpLattice(glm::vec3 lo, glm::vec3 hi, float r) {
   return out;
 }
 
-Params resolved(const Params& p) {
-  Params q = p;
-  if (p.fill != Fill::Lattice || !p.latticeScaling) return q;
-  const int side = int(std::ceil(std::cbrt(double(p.latticeCount)) - 1e-9));
-  int g = 1;
-  while (g < side) g *= 2;
-  q.radius = (p.domainMax.x - p.domainMin.x) / (2.0f * float(g));
-  q.gravity = p.gravity * (64.0f / float(g));
-  return q;
-}
-
-double fillVolume(const Params& p) {
+double fillVolume(const Setup& p) {
   if (p.fill != Fill::Block && p.fill != Fill::Slab) return 0;
   glm::vec3 lo = glm::max(p.fillMin, p.domainMin), hi = glm::min(p.fillMax, p.domainMax);
   if (p.fill == Fill::Slab) {
@@ -68,8 +57,7 @@ namespace {
 double hcpCell(double r) { return 4.0 * std::sqrt(2.0) * r * r * r; }  // volume per ball of the HCP lattice
 }  // namespace
 
-double estimatedWater(const Params& input) {
-  const Params p = resolved(input);
+double estimatedWater(const Setup& p) {
   switch (p.fill) {
     case Fill::Random: return p.randomCount;
     case Fill::Lattice: return p.latticeCount;
@@ -88,15 +76,14 @@ double obstacleBound(const std::vector<ObstacleParams>& obstacles, float radius)
 }
 
 void checkWaterRequest(const char* model, const char* particle, const std::string& size, double fillParticles,
-                       const Params& w, const sim::ParticleCost& cost) {
+                       const Setup& w, const sim::ParticleCost& cost) {
   const std::string key = size.substr(0, size.find(' '));  // "particles.radius"
   sim::checkParticleRequest(model, particle,
-                            fillParticles + (w.tap ? w.tapMax : 0) + obstacleBound(w.obstacles, resolved(w).radius),
-                            size, cost, "raise " + key + " or shrink the fill and the obstacles");
+                            fillParticles + (w.tap ? w.tapMax : 0) + obstacleBound(w.obstacles, w.radius), size, cost,
+                            "raise " + key + " or shrink the fill and the obstacles");
 }
 
-std::vector<glm::vec4> waterParticles(const Params& input, const std::function<bool(glm::vec3)>& occupied) {
-  const Params p = resolved(input);
+std::vector<glm::vec4> waterParticles(const Setup& p, const std::function<bool(glm::vec3)>& occupied) {
   const float r = p.radius;
   const glm::vec3 lo = p.domainMin + r, hi = p.domainMax - r;
   std::vector<glm::vec4> out;
@@ -219,4 +206,4 @@ std::vector<glm::vec4> Obstacle::particles() const {
   return out;
 }
 
-}  // namespace tidepool::balls
+}  // namespace tidepool::water

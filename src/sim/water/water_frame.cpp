@@ -1,13 +1,13 @@
-#include "sim/balls/water_frame.h"
+#include "sim/water/water_frame.h"
 
 #include <cmath>
 
-namespace tidepool::balls {
+namespace tidepool::water {
 namespace {
 constexpr float kPi = 3.14159265358979f;
 }
 
-Walls wallsAt(const Params& p, double time) {
+Walls wallsAt(const Setup& p, double time) {
   Walls w{p.domainMin, p.domainMax, glm::vec3(0.0f), glm::vec3(0.0f)};
   if (p.pistonAxis >= 1 && p.pistonAxis <= 3) {
     const int k = p.pistonAxis - 1;
@@ -25,17 +25,15 @@ Walls wallsAt(const Params& p, double time) {
   return w;
 }
 
-float domainRotation(const Params& p, double time) {
-  return (p.rotation + p.rotationRate * float(time)) * kPi / 180.0f;
-}
+float domainRotation(const Setup& p, double time) { return (p.rotation + p.rotationRate * float(time)) * kPi / 180.0f; }
 
-glm::vec3 gravityAt(const Params& p, double time) {
+glm::vec3 gravityAt(const Setup& p, double time) {
   const float a = domainRotation(p, time);
   const glm::vec3 g = p.gravity;
   return {g.x, std::cos(a) * g.y - std::sin(a) * g.z, std::sin(a) * g.y + std::cos(a) * g.z};
 }
 
-TapLayer tapLayer(const Params& p, float radius, std::size_t room) {
+TapLayer tapLayer(const Setup& p, float radius, std::size_t room) {
   TapLayer layer;
   const glm::vec3 dir = glm::length(p.tapDirection) > 0 ? glm::normalize(p.tapDirection) : glm::vec3(0, 0, 1);
   const glm::vec3 u = glm::normalize(std::abs(dir.z) < 0.9f ? glm::cross(dir, glm::vec3(0, 0, 1))
@@ -55,4 +53,4 @@ TapLayer tapLayer(const Params& p, float radius, std::size_t room) {
   return layer;
 }
 
-}  // namespace tidepool::balls
+}  // namespace tidepool::water

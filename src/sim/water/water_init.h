@@ -1,7 +1,7 @@
-// Initial states of the balls model, built on the CPU: water fills (block, slab, random, the CUDA
-// sample's benchmark lattice) and obstacle particles from shapes or triangle meshes, on a
-// hexagonal close-packed lattice (water-webgpu's strides: 2r, r·√3, 2r·√6/3) as a solid fill or a
-// surface shell.
+// Initial states of the water, built on the CPU: fills (block, slab, random, the CUDA sample's
+// benchmark lattice) and obstacle particles from shapes or triangle meshes, on a hexagonal
+// close-packed lattice (water-webgpu's strides: 2r, r·√3, 2r·√6/3) as a solid fill or a surface
+// shell. The fluid fills blocks and slabs on its own cubic lattice (sim/fluid/fluid.cpp).
 #pragma once
 
 #include <functional>
@@ -10,17 +10,13 @@
 #include <vector>
 
 #include "io/obj.h"
-#include "sim/balls/balls_params.h"
 #include "sim/particle_memory.h"
+#include "sim/water/setup.h"
 
-namespace tidepool::balls {
+namespace tidepool::water {
 
 // Points of the HCP lattice of spacing 2r inside [lo, hi].
 std::vector<glm::vec3> hcpLattice(glm::vec3 lo, glm::vec3 hi, float r);
-
-// The lattice fill's derived radius and gravity (CUDA sample: r = width/(2G), g x 64/G with G
-// the next power of two >= ceil(N^(1/3))). Other fills return the parameters unchanged.
-Params resolved(const Params& p);
 
 class MeshSolid;
 
@@ -43,19 +39,20 @@ class Obstacle {
   std::unique_ptr<MeshSolid> m_mesh;
 };
 
-// Before anything is built (sim/particle_memory.h checks these against what fits):
-double fillVolume(const Params& p);      // m³ of a block or slab fill's region (0 for other fills)
-double estimatedWater(const Params& p);  // balls a fill makes: volume / (4√2 r³) on the HCP lattice
+// Before anything is built (sim/particle_memory.h checks these against what fits; `p` as the model
+// runs it, balls::resolved for the balls):
+double fillVolume(const Setup& p);      // m³ of a block or slab fill's region (0 for other fills)
+double estimatedWater(const Setup& p);  // balls a fill makes: volume / (4√2 r³) on the HCP lattice
 // An upper bound on the obstacles' particles: each obstacle's box (2 size per axis) filled solid.
 double obstacleBound(const std::vector<ObstacleParams>& obstacles, float radius);
 // The water's count check (balls, fluid), before anything is built: `fillParticles` (the fill's
 // estimate), the tap's maximum and the obstacles' bound against what fits; `size` names the key
 // that sets the count ("particles.radius = 0.0001 m"). Throws Error (sim/particle_memory.h).
 void checkWaterRequest(const char* model, const char* particle, const std::string& size, double fillParticles,
-                       const Params& w, const sim::ParticleCost& cost);
+                       const Setup& w, const sim::ParticleCost& cost);
 
 // Water particles (vec4: position m, w = 1), none where `occupied` (inside an obstacle, say).
 // Deterministic: same parameters, same particles.
-std::vector<glm::vec4> waterParticles(const Params& p, const std::function<bool(glm::vec3)>& occupied);
+std::vector<glm::vec4> waterParticles(const Setup& p, const std::function<bool(glm::vec3)>& occupied);
 
-}  // namespace tidepool::balls
+}  // namespace tidepool::water

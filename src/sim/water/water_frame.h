@@ -7,9 +7,9 @@
 #include <glm/glm.hpp>
 #include <vector>
 
-#include "sim/balls/balls_params.h"
+#include "sim/water/setup.h"
 
-namespace tidepool::balls {
+namespace tidepool::water {
 
 struct Walls {
   glm::vec3 min{0.0f}, max{1.0f};        // wall positions, m
@@ -17,9 +17,10 @@ struct Walls {
 };
 // The piston's max wall of its axis travels in and out: offset = travel·extent·(1 − cos(2πt/T))/2;
 // the contraction holds the max z wall at min.z + contraction·height (the lower of the two wins).
-Walls wallsAt(const Params& p, double time);
-float domainRotation(const Params& p, double time);  // radians about x
-glm::vec3 gravityAt(const Params& p, double time);   // p.gravity turned with the domain (p already resolved)
+Walls wallsAt(const Setup& p, double time);
+float domainRotation(const Setup& p, double time);  // radians about x
+glm::vec3 gravityAt(const Setup& p,
+                    double time);  // p.gravity turned with the domain (p as the model runs it: balls::resolved)
 
 // One hexagonal layer of the tap's nozzle disc (spacing 2r·1.02), at most `room` particles
 // (vec4 position w = 1, velocity w = 0); `interval` is the time until the jet has moved on by the
@@ -28,6 +29,6 @@ struct TapLayer {
   std::vector<glm::vec4> pos, vel;
   double interval = 0;
 };
-TapLayer tapLayer(const Params& p, float radius, std::size_t room);
+TapLayer tapLayer(const Setup& p, float radius, std::size_t room);
 
-}  // namespace tidepool::balls
+}  // namespace tidepool::water

@@ -1,9 +1,9 @@
-#include "sim/balls/obstacle_pose.h"
+#include "sim/water/obstacle_pose.h"
 
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
-namespace tidepool::balls {
+namespace tidepool::water {
 namespace {
 constexpr double kTwoPi = 6.283185307179586;
 }  // namespace
@@ -54,4 +54,4 @@ ObstaclePose obstaclePose(const ObstacleParams& o, double time) {
   return pose;
 }
 
-}  // namespace tidepool::balls
+}  // namespace tidepool::water

@@ -1,12 +1,16 @@
-#include "sim/balls/obstacles.h"
+#include "sim/water/obstacles.h"
 
 #include <algorithm>
 
+#include "balls/bindings.glsl"
 #include "base/error.h"
-#include "sim/balls/balls_init.h"
+#include "common/obstacle_bindings.glsl"
+#include "sim/water/water_init.h"
 
-namespace tidepool::balls {
+namespace tidepool::water {
 namespace {
+
+static_assert(kMaxObstacles == BALLS_MAX_OBSTACLES, "the pose block holds BALLS_MAX_OBSTACLES obstacles");
 
 // The uniform block of shaders/balls/obstacle_poses.glsl (std140: every array element a vec4).
 struct PoseBlock {
@@ -25,6 +29,20 @@ void copyBody(ObstacleParams& to, const ObstacleParams& from) {
 }
 
 std::string at(std::size_t k) { return "obstacles[" + std::to_string(k) + "]"; }
+
+// The kernels read the obstacles' particles and their grid through buffer textures
+// (common/obstacle_grid.glsl): what passes the limit, or empty.
+std::string overTexelLimit(std::size_t texels, const std::string& what, const char* remedy) {
+  if (texels <= gl::BufferTexture::maxTexels()) return {};
+  return what + ", over this GPU's buffer-texture limit of " + std::to_string(gl::BufferTexture::maxTexels()) +
+         ": make " + remedy + " smaller or the radius larger";
+}
+
+std::string tooManyParticles(const std::vector<ObstacleBody>& bodies) {
+  std::size_t total = 0;
+  for (const ObstacleBody& b : bodies) total += b.particles.size();
+  return overTexelLimit(total, std::to_string(total) + " fixed particles", "the obstacles");
+}
 
 }  // namespace
 
@@ -50,6 +68,7 @@ void Obstacles::build(const std::vector<ObstacleParams>& params, float radius) {
     } catch (const Error& e) {
       throw Error(at(k) + ": " + e.what());
     }
+  if (const std::string over = tooManyParticles(bodies); !over.empty()) throw Error("obstacles: " + over);
   m_bodies = std::move(bodies);
   m_radius = radius;
   upload();
@@ -90,6 +109,12 @@ bool Obstacles::update(std::vector<ObstacleParams>& params, float radius, std::s
     }
   }
   if (!changed) return false;
+  if (const std::string over = tooManyParticles(next); !over.empty()) {  // the whole edit refused
+    error = "obstacles not changed: " + over;
+    params.resize(m_bodies.size());
+    for (std::size_t k = 0; k < m_bodies.size(); ++k) params[k] = m_bodies[k].built;
+    return true;
+  }
   m_bodies = std::move(next);
   upload();
   return true;
@@ -159,8 +184,13 @@ void Obstacles::place(const std::vector<ObstacleParams>& params, double time, gl
   lo = glm::max(lo - margin, domainMin - margin);
   hi = glm::min(hi + margin, domainMax + margin);
   hi = glm::max(hi, lo + margin);  // all outside the domain: a token grid
-  if (!m_grid || m_grid->params().domainMin != lo || m_grid->params().domainMax != hi)
-    m_grid = std::make_unique<grid::UniformGrid>(m_shaders, grid::GridParams{lo, hi, 2.0f * m_radius}, m_particles);
+  if (!m_grid || m_grid->params().domainMin != lo || m_grid->params().domainMax != hi) {
+    auto grid = std::make_unique<grid::UniformGrid>(m_shaders, grid::GridParams{lo, hi, 2.0f * m_radius}, m_particles);
+    const std::string cells = "a grid of " + std::to_string(grid->cells()) + " cells around them";
+    if (const std::string over = overTexelLimit(grid->cells() + 1, cells, "them"); !over.empty())
+      throw Error("obstacles: " + over);
+    m_grid = std::move(grid);
+  }
 
   auto scope = profiler ? profiler->scope("balls.obstacles") : gl::GpuProfiler::Scope(nullptr);
   gl::Program& program = m_shaders.program({"balls/obstacle_place.comp"});
@@ -176,6 +206,7 @@ void Obstacles::place(const std::vector<ObstacleParams>& params, double time, gl
     m_grid->reorder(m_world, {{&m_world, &m_sorted}, {&m_volumeBody, &m_volumeSorted}});
   else
     m_grid->reorder(m_world, {{&m_world, &m_sorted}});
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);  // the kernels read them through buffer textures
 }
 
 bool Obstacles::occupied(glm::vec3 world) const {
@@ -187,13 +218,14 @@ bool Obstacles::occupied(glm::vec3 world) const {
 }
 
 void Obstacles::bind(gl::Program& program) const {
+  m_poseBlock.bindBase(GL_UNIFORM_BUFFER, BALLS_OBST_POSES);
   const grid::GridParams& g = m_grid->params();
   program.set("uObstacleOrigin", g.domainMin);
   program.set("uObstacleInvCell", 1.0f / g.cellSize);
   program.set("uObstacleDims", m_grid->dims());
-  m_poseBlock.bindBase(GL_UNIFORM_BUFFER, BALLS_OBST_POSES);
-  m_sorted.bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_OBST_POS);
-  m_grid->cellStart().bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_OBST_CELL_START);
+  m_textures[0].bind(OBSTACLE_POS_UNIT, m_sorted.id(), GL_RGBA32F);
+  m_textures[1].bind(OBSTACLE_CELL_START_UNIT, m_grid->cellStart().id(), GL_R32UI);
+  if (m_volumeFn) m_textures[2].bind(OBSTACLE_VOLUME_UNIT, m_volumeSorted.id(), GL_RGBA32F);
 }
 
-}  // namespace tidepool::balls
+}  // namespace tidepool::water

@@ -18,7 +18,7 @@
 
 #include "io/obj.h"
 
-namespace tidepool::balls {
+namespace tidepool::water {
 
 // The mesh scaled uniformly so that its bounding box fits the half extents `size`, its box centre
 // moved to `centre`, then turned by `orientation` about it.
@@ -59,4 +59,4 @@ constexpr float kShellHalfWidth = 1.41421356f;
 // Distance from q to triangle abc (Ericson, Real-Time Collision Detection, 5.1.5).
 float pointTriangleDistance(glm::vec3 q, glm::vec3 a, glm::vec3 b, glm::vec3 c);
 
-}  // namespace tidepool::balls
+}  // namespace tidepool::water

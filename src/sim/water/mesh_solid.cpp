@@ -1,11 +1,11 @@
-#include "sim/balls/balls_mesh.h"
+#include "sim/water/mesh_solid.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "sim/balls/balls_init.h"
+#include "sim/water/water_init.h"
 
-namespace tidepool::balls {
+namespace tidepool::water {
 namespace {
 
 constexpr int kBinsPerAxis = 32;  // yz bins of triangles for the rows
@@ -144,4 +144,4 @@ float pointTriangleDistance(glm::vec3 p, glm::vec3 a, glm::vec3 b, glm::vec3 c) 
   return glm::length(p - (a + ab * (vb * denom) + ac * (vc * denom)));
 }
 
-}  // namespace tidepool::balls
+}  // namespace tidepool::water

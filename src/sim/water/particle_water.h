@@ -1,0 +1,38 @@
+// What a renderer, an exporter and a probe read of a particle-water model, balls or fluid alike:
+// the particles' buffers, their size, the obstacles, the walls and the domain's turn, and the
+// water setup. The water view (render/balls_view.h) draws either model through this, so the two
+// look the same.
+#pragma once
+
+#include <cstddef>
+#include <glm/glm.hpp>
+
+#include "gl/buffer.h"
+#include "sim/water/obstacles.h"
+#include "sim/water/setup.h"
+
+namespace tidepool::grid {
+class UniformGrid;
+}
+
+namespace tidepool::water {
+
+class ParticleWater {
+ public:
+  virtual ~ParticleWater() = default;
+  virtual const gl::Buffer& positions() const = 0;   // vec4 (m, w = 1), count() of them
+  virtual const gl::Buffer& velocities() const = 0;  // vec4 (m/s, w = foam)
+  virtual std::size_t count() const = 0;
+  virtual float radius() const = 0;                // m: r of setup.h's particle size, as the model runs it
+  virtual Packing packing() const = 0;             // how its particles pack at rest
+  virtual const Obstacles& obstacles() const = 0;  // as placed at the last step
+  virtual const Setup& water() const = 0;          // domain, fill, walls, tap, obstacles, engine
+  virtual glm::vec3 wallMin() const = 0;           // current walls (the piston moves one)
+  virtual glm::vec3 wallMax() const = 0;
+  virtual float domainRotation() const = 0;  // radians about x
+  // The neighbour grid in the particles' frame, its counts as of the last sort (debug views);
+  // null before the first step or for a model without one.
+  virtual const grid::UniformGrid* neighbourGrid() const { return nullptr; }
+};
+
+}  // namespace tidepool::water
