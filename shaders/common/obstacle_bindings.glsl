@@ -1,4 +1,4 @@
-// Sampler units of the obstacles' particles (src/sim/balls/obstacles.h), shared by C++ and GLSL:
+// Sampler units of the obstacles' particles (src/sim/water/obstacles.h), shared by C++ and GLSL:
 // only #define lines. Kernels read them through buffer textures (common/obstacle_grid.glsl), so
 // the obstacles take none of a kernel's 8 storage blocks (GL 4.3's minimum).
 #define OBSTACLE_POS_UNIT 0         // vec4 per obstacle particle (world, w = obstacle index), grid order

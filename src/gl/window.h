@@ -2,13 +2,12 @@
 // may see (16 MiB at GL 4.3's minimum, 128 MiB on llvmpipe, 2 GiB on an H100), not the size of a
 // buffer: an array of particles larger than that is bound a window at a time (glBindBufferRange)
 // and a pass over it runs one dispatch per window. Kernels take the window's first element as a
-// uniform and index the bound range with the particle index less it (shaders/common/window.glsl).
+// uniform and index the bound range with the particle index less it (uFirst and uCount in
+// shaders/balls/drift.comp):
 //
 //   for (const gl::Window& w : gl::windows(count, sizeof(glm::vec4))) {
 //     gl::bindWindow(positions, BINDING, w, sizeof(glm::vec4));
-//     program.set("uFirst", GLuint(w.first));
-//     program.set("uEnd", GLuint(w.end()));
-//     program.dispatchThreads(w.count);
+//     kernel.dispatchThreads(w.count, {.first = GLuint(w.first), .count = GLuint(w.end())});
 //   }
 //
 // Windows start at multiples of kWindowGrain elements, so offsets of 4- and 16-byte elements are

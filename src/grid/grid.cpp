@@ -78,12 +78,6 @@ UniformGrid::UniformGrid(gl::ShaderLibrary& shaders, const GridParams& params, s
   if (particleCapacity && params.stable) m_members = gl::Buffer(particleCapacity * kWord);
 }
 
-void UniformGrid::setUniforms(const gl::Program& program) const {
-  program.set("uGridOrigin", m_shape.origin);
-  program.set("uGridInvCellSize", m_shape.invCellSize);
-  program.set("uGridDims", m_shape.dims);
-}
-
 void UniformGrid::build(const gl::Buffer& positions, std::size_t count) {
   countParticles(positions, count);
   scanCells();

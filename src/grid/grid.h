@@ -34,7 +34,7 @@
 // packHalf2x16 of xy, y = any word), and then every reordered array has 8-byte elements. Positions outside the domain
 // are clamped into the border cells (never dropped, never written out of bounds); a position exactly on a cell border
 // belongs to the cell above it, one exactly on the domain max to the last cell. The cell math is
-// shaders/common/grid.glsl (setUniforms() feeds it to any kernel) and its CPU twin
+// shaders/common/grid.glsl (uniforms() feeds it to any kernel) and its CPU twin
 // grid_reference.h. Every pass ends with GL_SHADER_STORAGE_BARRIER_BIT, so later kernels may read
 // its output (Buffer::download adds its own read-back barrier); callers make their own writes to
 // the positions visible the same way, and add GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT if they draw the
@@ -118,7 +118,6 @@ class UniformGrid {
   }
 
   GridUniforms uniforms() const { return {m_shape.origin, m_shape.invCellSize, m_shape.dims}; }
-  void setUniforms(const gl::Program& program) const;        // the same, set by name on an untyped program
   void setStable(bool stable) { m_params.stable = stable; }  // for the next reorder()
 
   const GridParams& params() const { return m_params; }

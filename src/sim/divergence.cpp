@@ -4,8 +4,6 @@
 #include <cstdio>
 #include <cstring>
 
-#include "common/health_layout.glsl"
-
 namespace tidepool {
 
 DivergenceReport divergenceReport(const std::string& model, double time, const std::string& what,
@@ -72,14 +70,8 @@ void DivergenceWatch::frame(Subject& s) {
 
 void DivergenceWatch::reduce(Subject& s, std::size_t count, gl::Buffer& words) {
   words.fillZero();
-  gl::Program& kernel = s.healthKernel();
   words.bindBase(GL_SHADER_STORAGE_BUFFER, HEALTH_BINDING);
-  for (const gl::Window& w : s.healthWindows(count)) {
-    s.bindHealthWindow(w);
-    kernel.set("uFirst", GLuint(w.first));
-    kernel.set("uCount", GLuint(w.end()));
-    kernel.dispatchThreads(w.count);
-  }
+  for (const gl::Window& w : s.healthWindows(count)) s.checkHealth(w);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 

@@ -20,10 +20,11 @@
 #include <string>
 #include <vector>
 
+#include "common/health_layout.glsl"
 #include "gl/async_readback.h"
 #include "gl/buffer.h"
 #include "gl/buffer_ops.h"
-#include "gl/program.h"
+#include "gl/kernel.h"
 #include "gl/shader_library.h"
 #include "gl/window.h"
 #include "sim/model_state.h"
@@ -48,6 +49,16 @@ struct StateBuffer {
   const char* name;    // "positions", "velocities", "state"
   gl::Buffer* buffer;  // the live buffer (of double-buffered state: the current one)
   std::size_t bytes;   // in use, from the start (the buffer may hold spare capacity)
+};
+
+// The uniforms of common/health.glsl: the elements [first, count) of the window checked.
+struct HealthUniforms {
+  GLuint first = 0, count = 0;
+  HealthUniforms() = default;
+  explicit HealthUniforms(const gl::Window& w) : first(GLuint(w.first)), count(GLuint(w.end())) {}
+  static constexpr auto fields() {
+    return std::tuple{gl::field("uFirst", &HealthUniforms::first), gl::field("uCount", &HealthUniforms::count)};
+  }
 };
 
 // The scalars that go with a copy of the state buffers.
@@ -75,13 +86,13 @@ class DivergenceWatch {
    public:
     virtual StateStamp stamp() const = 0;                 // now
     virtual std::vector<StateBuffer> stateBuffers() = 0;  // what a check copies and recovery restores
-    // Its health.comp in use, with its state bound and its own uniforms set (the watch sets
-    // uFirst and uCount and binds the words at HEALTH_BINDING, then dispatches one invocation per element).
-    virtual gl::Program& healthKernel() = 0;
+    // Runs its health.comp over the elements of window w: binds that window of its state and
+    // dispatches one invocation per element, HealthUniforms{w} among its uniforms (the watch has
+    // bound the words at HEALTH_BINDING).
+    virtual void checkHealth(const gl::Window& w) = 0;
     // State larger than one storage block is checked a window at a time (gl/window.h): these
-    // windows, each bound by bindHealthWindow() before its dispatch. By default all of it at once.
+    // windows. By default all of it at once.
     virtual std::vector<gl::Window> healthWindows(std::size_t count) const { return {{0, count}}; }
-    virtual void bindHealthWindow(const gl::Window&) {}
     virtual std::optional<std::string> unhealthy(const Words& words) = 0;  // what failed; nullopt: healthy
     virtual std::string method() const = 0;                                // method and time step, for a report
     virtual void resume(const StateStamp& good) = 0;  // after the copies are back: its clock, half its dt

@@ -1,10 +1,18 @@
 // gl::Kernel: a kernel's uniform struct and storage bindings are checked against the program at
-// build and on reload; a correct kernel sets every field and dispatches.
+// build and on reload; a correct kernel sets every field and dispatches; the models' kernels are
+// checked the same way.
 #include "gl/kernel.h"
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <iterator>
+
 #include "gl/buffer.h"
+#include "sim/balls/balls.h"
+#include "sim/fluid/fluid.h"
+#include "support/balls_fixtures.h"
+#include "support/error_of.h"
 #include "support/gl_test.h"
 
 using namespace tidepool;
@@ -164,4 +172,50 @@ TEST_F(KernelTest, ReloadChecksAgainAndKeepsTheOldProgramOnFailure) {
   kernel.dispatchThreads(4, {.count = 4, .scale = 1.0f, .offset = {2}});  // locations of the new program
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   EXPECT_EQ(out.read<GLuint>(4), (std::vector<GLuint>{2, 3, 4, 5}));
+}
+
+namespace {
+
+// The shader folder copied into dir with `from` replaced by `to` everywhere in `file`.
+void copyShadersRenaming(const std::filesystem::path& shaders, const TempDir& dir, const std::string& file,
+                         const std::string& from, const std::string& to) {
+  std::filesystem::copy(shaders, dir.path(), std::filesystem::copy_options::recursive);
+  std::ifstream in(dir / file);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_NE(text.find(from), std::string::npos) << file << " has no " << from;
+  for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+    text.replace(at, from.size(), to);
+  dir.write(file, text);
+}
+
+}  // namespace
+
+// The models' own kernels are typed: a uniform renamed in a shader (it still compiles) is an
+// error naming the kernel and the uniform the first time the pass runs, not a silent zero.
+TEST_F(KernelTest, ABallsOrFluidUniformRenamedInItsShaderIsAnError) {
+  {
+    TempDir dir;
+    copyShadersRenaming(shaderDir(), dir, "balls/contact.glsl", "uFriction", "uFrictionRenamed");
+    ShaderLibrary lib(dir.path());
+    balls::Params p = test::emptyTank();
+    p.contact = balls::Contact::SpringDashpot;
+    balls::Balls b(lib, p);
+    b.upload({glm::vec4(0.2f, 0.15f, 0.1f, 1.0f)}, {glm::vec4(0.0f)});
+    const std::string msg = test::errorOf([&] { b.stepOnce(); });
+    EXPECT_TRUE(has(msg, "balls/collide.comp") && has(msg, "'uFriction'") && has(msg, "not declared")) << msg;
+  }
+  {
+    TempDir dir;
+    copyShadersRenaming(shaderDir(), dir, "fluid/viscosity.comp", "uViscosity", "uViscosityRenamed");
+    ShaderLibrary lib(dir.path());
+    fluid::Params p;
+    p.setSpacing(0.02f);
+    p.domainMax = glm::vec3(0.2f, 0.2f, 0.3f);
+    p.fill = water::Fill::None;
+    p.viscosity = 0.01f;
+    fluid::Fluid f(lib, p);
+    f.upload({glm::vec4(0.1f, 0.1f, 0.1f, 1.0f)}, {glm::vec4(0.0f)});
+    const std::string msg = test::errorOf([&] { f.stepOnce(); });
+    EXPECT_TRUE(has(msg, "fluid/viscosity.comp") && has(msg, "'uViscosity'") && has(msg, "not declared")) << msg;
+  }
 }

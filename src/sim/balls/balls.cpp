@@ -128,19 +128,14 @@ std::vector<sim::StateBuffer> Balls::stateBuffers() {
   return {{"positions", &m_pos[m_posIndex], bytes}, {"velocities", &m_vel[m_velIndex], bytes}};
 }
 
-gl::Program& Balls::healthKernel() {
-  gl::Program& p = m_shaders.program({"balls/health.comp"});
-  p.use();
-  p.set("uWallMin", m_wallMin);
-  p.set("uWallMax", m_wallMax);
-  return p;
-}
-
 std::vector<gl::Window> Balls::healthWindows(std::size_t count) const { return gl::windows(count, sizeof(glm::vec4)); }
 
-void Balls::bindHealthWindow(const gl::Window& w) {
+void Balls::checkHealth(const gl::Window& w) {
+  const gl::Kernel<water::HealthUniforms> health(m_shaders, "balls/health.comp",
+                                                 {HEALTH_BINDING, BALLS_POS_IN, BALLS_VEL_IN});
   gl::bindWindow(positions(), BALLS_POS_IN, w, sizeof(glm::vec4));
   gl::bindWindow(velocities(), BALLS_VEL_IN, w, sizeof(glm::vec4));
+  health.dispatchThreads(w.count, {sim::HealthUniforms(w), m_wallMin, m_wallMax});
 }
 
 std::optional<std::string> Balls::unhealthy(const sim::DivergenceWatch::Words& w) {

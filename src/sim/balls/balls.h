@@ -22,6 +22,7 @@
 #include "gl/window.h"
 #include "grid/grid.h"
 #include "io/obj.h"
+#include "sim/balls/balls_kernels.h"
 #include "sim/balls/balls_params.h"
 #include "sim/model.h"
 #include "sim/particle_memory.h"
@@ -97,9 +98,8 @@ class Balls final : public sim::Model, public water::ParticleWater {
 
  private:
   // The divergence watch (sim::Model): NaN balls, balls outside the walls, speed above speedBound().
-  gl::Program& healthKernel() override;
+  void checkHealth(const gl::Window& w) override;
   std::vector<gl::Window> healthWindows(std::size_t count) const override;
-  void bindHealthWindow(const gl::Window& w) override;
   std::optional<std::string> unhealthy(const sim::DivergenceWatch::Words& words) override;
   std::string method() const override;
   void resume(const sim::StateStamp& good) override;
@@ -135,8 +135,11 @@ class Balls final : public sim::Model, public water::ParticleWater {
   std::vector<ReachWindow> reachWindows();
   void ensureGrid();  // the grid of cells 2r for the current radius
   std::vector<gl::ShaderDefine> defines(bool verlet) const;
-  // In use, common uniforms set.
-  gl::Program& useKernel(const char* file, bool verlet);
+  // What the kernels share (balls_kernels.h); bindNeighbours() binds the grids' buffers for a
+  // window of inputs starting at sources.first.
+  WallUniforms wallUniforms() const;
+  float foamDecayPerStep() const;
+  NeighbourUniforms bindNeighbours(const gl::Window& sources) const;
   // The grid's counts taken by the last Euler collide hold for the positions it wrote: the next
   // sortByCell skips its count pass while the key still matches. Any other write of the positions
   // (an upload, a restore, the tap) changes their buffer's version (gl::Buffer::version()).

@@ -6,6 +6,7 @@
 #include "balls/bindings.glsl"
 #include "balls/stats_layout.glsl"
 #include "sim/balls/balls.h"
+#include "sim/balls/balls_kernels.h"
 
 namespace tidepool::balls {
 namespace {
@@ -94,45 +95,36 @@ std::vector<gl::ShaderDefine> Balls::defines(bool verlet) const {
   return d;
 }
 
-gl::Program& Balls::useKernel(const char* file, bool verlet) {
-  gl::Program& p = m_shaders.program({file}, defines(verlet));
-  const Params& q = m_params;
-  p.use();
-  p.set("uCount", GLuint(m_count));
-  p.set("uRadius", m_radius);
-  p.set("uDt", q.dt);
-  p.set("uGravity", gravity());
-  p.set("uDecay", std::exp(-q.damping * q.dt));
-  p.set("uPenaltyFactor", q.penaltyFactor);
-  p.set("uSpringK1", springPerMass(q));
-  p.set("uDashpotG1", dashpotPerMass(q));
-  p.set("uFriction", q.friction);
-  p.set("uCudaSpring", q.cudaSpring);
-  p.set("uCudaDamping", q.cudaDamping);
-  p.set("uCudaShear", q.cudaShear);
-  p.set("uBoundaryDamping", q.cudaBoundaryDamping);
-  p.set("uWallMin", m_wallMin);
-  p.set("uWallMax", m_wallMax);
-  p.set("uWallMinVel", m_wallMinVel);
-  p.set("uWallMaxVel", m_wallMaxVel);
-  p.set("uFoamGain", q.foamGain);
-  p.set("uFoamDecay", std::pow(q.foamDecay, q.dt / 0.0005f));  // the seed's decay per 0.5 ms
-  m_grid->setUniforms(p);
-  if (m_obstacles.active()) m_obstacles.bind(p);
+WallUniforms Balls::wallUniforms() const {
+  return {m_wallMin, m_wallMax, m_wallMinVel, m_wallMaxVel, m_params.cudaBoundaryDamping};
+}
+
+float Balls::foamDecayPerStep() const {
+  return std::pow(m_params.foamDecay, m_params.dt / 0.0005f);  // the seed's decay per 0.5 ms
+}
+
+NeighbourUniforms Balls::bindNeighbours(const gl::Window& sources) const {
+  m_obstacles.bind();
   m_grid->cellStart().bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_CELL_START);
-  return p;
+  return {m_radius, GLuint(sources.first), m_grid->uniforms(), m_obstacles.uniforms()};
 }
 
 void Balls::drift(gl::GpuProfiler* profiler) {
   auto scope = timed(profiler, "balls.drift");
-  gl::Program& p = useKernel("balls/drift.comp", false);
+  const gl::Kernel<DriftUniforms> drift(m_shaders, "balls/drift.comp", {BALLS_POS_OUT, BALLS_VEL_OUT, BALLS_ACC},
+                                        defines(false));
+  const Params& q = m_params;
   for (const gl::Window& w : gl::windows(m_count, kVec4)) {
     gl::bindWindow(m_pos[m_posIndex], BALLS_POS_OUT, w, kVec4);
     gl::bindWindow(m_vel[m_velIndex], BALLS_VEL_OUT, w, kVec4);
     gl::bindWindow(m_acc, BALLS_ACC, w, kVec4);
-    p.set("uFirst", GLuint(w.first));
-    p.set("uCount", GLuint(w.end()));
-    p.dispatchThreads(w.count);
+    drift.dispatchThreads(w.count, {.first = GLuint(w.first),
+                                    .count = GLuint(w.end()),
+                                    .dt = q.dt,
+                                    .radius = m_radius,
+                                    .foamGain = q.foamGain,
+                                    .foamDecay = foamDecayPerStep(),
+                                    .walls = wallUniforms()});
   }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
@@ -167,15 +159,26 @@ void Balls::collide(gl::GpuProfiler* profiler, Collide what) {
   // Read back before the kernel's bindings: one window of all balls when they fit one block.
   const std::vector<ReachWindow> windows = reachWindows();
   m_collideWindows = windows.size();
-  gl::Program& collide = useKernel("balls/collide.comp", verlet);
+  const gl::Kernel<CollideUniforms> collide(
+      m_shaders, "balls/collide.comp",
+      {BALLS_POS_IN, BALLS_VEL_IN, BALLS_VEL_OUT, BALLS_STEP_OUT, BALLS_NEXT_CELL_COUNT, BALLS_NEXT_INDEX_IN_CELL,
+       BALLS_NEXT_PARTICLE_CELL, BALLS_CELL_START},
+      defines(verlet));
+  const Params& q = m_params;
+  CollideUniforms u{.gravity = gravity(),
+                    .decay = std::exp(-q.damping * q.dt),
+                    .foamGain = q.foamGain,
+                    .foamDecay = foamDecayPerStep(),
+                    .kick = what == Collide::VerletKick ? 0.5f : 0.0f,
+                    .contact = {q.dt, q.penaltyFactor, springPerMass(q), dashpotPerMass(q), q.friction, q.cudaSpring,
+                                q.cudaDamping, q.cudaShear},
+                    .walls = wallUniforms(),
+                    .neighbours = {}};  // per window, below
   // The cell-ordered copies in, the others out; a window at a time when they pass one storage block.
   const gl::Buffer &posIn = m_pos[1 - p], &velIn = m_vel[1 - v], &velOut = m_vel[v];
   const gl::Buffer& stepOut = verlet ? m_acc : m_pos[p];
-  if (verlet) {
-    collide.set("uKick", what == Collide::VerletKick ? 0.5f : 0.0f);
-    m_posIndex = 1 - p;  // positions stay in cell order; velocities come back to v
-  }
-  if (countCells) {  // the counts for the next step's grid, at the positions written here
+  if (verlet) m_posIndex = 1 - p;  // positions stay in cell order; velocities come back to v
+  if (countCells) {                // the counts for the next step's grid, at the positions written here
     m_grid->cellCount().bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_NEXT_CELL_COUNT);
     m_grid->indexInCell().bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_NEXT_INDEX_IN_CELL);
     m_grid->particleCell().bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_NEXT_PARTICLE_CELL);
@@ -185,10 +188,10 @@ void Balls::collide(gl::GpuProfiler* profiler, Collide what) {
     gl::bindWindow(velIn, BALLS_VEL_IN, w.sources, kVec4);
     gl::bindWindow(velOut, BALLS_VEL_OUT, w.balls, kVec4);
     gl::bindWindow(stepOut, BALLS_STEP_OUT, w.balls, kVec4);
-    collide.set("uFirst", GLuint(w.balls.first));
-    collide.set("uCount", GLuint(w.balls.end()));
-    collide.set("uSourceFirst", GLuint(w.sources.first));
-    collide.dispatchThreads(w.balls.count);
+    u.first = GLuint(w.balls.first);
+    u.count = GLuint(w.balls.end());
+    u.neighbours = bindNeighbours(w.sources);
+    collide.dispatchThreads(w.balls.count, u);
   }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   if (countCells) m_countedAhead = countKey();
@@ -209,8 +212,8 @@ Stats Balls::stats() {
   planReachWindows();
   m_grid->reorder(m_pos[p], {{&m_pos[p], &m_pos[1 - p]}, {&m_vel[v], &m_vel[1 - v]}});
   const std::vector<ReachWindow> windows = reachWindows();  // before the kernel's bindings
-  gl::Program& prog = useKernel("balls/stats.comp", false);
-  prog.set("uDomainMin", m_params.domainMin);
+  const gl::Kernel<StatsUniforms> kernel(m_shaders, "balls/stats.comp",
+                                         {BALLS_POS_IN, BALLS_VEL_IN, BALLS_STATS, BALLS_CELL_START}, defines(false));
   constexpr std::size_t kGroupBytes = sizeof(GroupStats);
   for (const ReachWindow& w : windows) {  // the partials of each window's groups from its first group on
     gl::bindWindow(m_pos[1 - p], BALLS_POS_IN, w.sources, kVec4);
@@ -218,10 +221,13 @@ Stats Balls::stats() {
     const std::size_t firstGroup = w.balls.first / BALLS_GROUP_SIZE;
     const std::size_t groups = (w.balls.count + BALLS_GROUP_SIZE - 1) / BALLS_GROUP_SIZE;
     m_stats.bindRange(GL_SHADER_STORAGE_BUFFER, BALLS_STATS, firstGroup * kGroupBytes, groups * kGroupBytes);
-    prog.set("uFirst", GLuint(w.balls.first));
-    prog.set("uCount", GLuint(w.balls.end()));
-    prog.set("uSourceFirst", GLuint(w.sources.first));
-    prog.dispatchThreads(w.balls.count);
+    kernel.dispatchThreads(w.balls.count, {.first = GLuint(w.balls.first),
+                                           .count = GLuint(w.balls.end()),
+                                           .gravity = gravity(),
+                                           .domainMin = m_params.domainMin,
+                                           .wallMin = m_wallMin,
+                                           .wallMax = m_wallMax,
+                                           .neighbours = bindNeighbours(w.sources)});
   }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   const std::size_t groups = (m_count + BALLS_GROUP_SIZE - 1) / BALLS_GROUP_SIZE;

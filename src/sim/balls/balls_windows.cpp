@@ -30,16 +30,14 @@ void Balls::planReachWindows(std::size_t windowSize) {
   const std::size_t windows = (m_count + windowSize - 1) / windowSize;
   if (m_reachBounds.size() < windows * sizeof(glm::uvec2)) m_reachBounds = gl::Buffer(windows * sizeof(glm::uvec2));
   const glm::uvec3 dims = m_grid->dims();
-  gl::Program& plan = m_shaders.program({"balls/reach_windows.comp"});
-  plan.use();
-  plan.set("uWindows", GLuint(windows));
-  plan.set("uWindowSize", GLuint(windowSize));
-  plan.set("uCount", GLuint(m_count));
-  plan.set("uCells", GLuint(m_grid->cells()));
-  plan.set("uReach", GLuint(dims.x * dims.y + dims.x + 1));
+  const gl::Kernel<ReachUniforms> plan(m_shaders, "balls/reach_windows.comp", {BALLS_CELL_START, BALLS_REACH_BOUNDS});
   m_grid->cellStart().bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_CELL_START);
   m_reachBounds.bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_REACH_BOUNDS);
-  plan.dispatchThreads(windows);
+  plan.dispatchThreads(windows, {.windows = GLuint(windows),
+                                 .windowSize = GLuint(windowSize),
+                                 .count = GLuint(m_count),
+                                 .cells = GLuint(m_grid->cells()),
+                                 .reach = GLuint(dims.x * dims.y + dims.x + 1)});
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   m_reachSize = windowSize;
   m_reachCount = m_count;

@@ -32,25 +32,20 @@ static_assert(offsetof(GroupStats, backHeight) == FLUID_STATS_BACK_HEIGHT * size
 
 }  // namespace
 
-void setKernelUniforms(const gl::Program& program, double h, const RestLattice& rest) {
-  const double volume = rest.volume;
+SphUniforms sphUniforms(double h, const RestLattice& rest) {
   const double pi = std::numbers::pi;
-  program.set("uH", float(h));
-  program.set("uPoly6Coef", float(315.0 / (64.0 * pi * h * h * h)));
-  program.set("uSpikyCoef", float(-45.0 / (pi * h * h * h * h)));
-  program.set("uVolume", float(volume));
-  program.set("uWallScale", float(rest.wallScale));
   // Q(a, b) of the walls' shared quarter spaces, padded to whole vec4s (kernels.glsl).
-  static const std::array<float, 292> padded = [] {
-    std::array<float, 292> out{};
+  static const std::array<glm::vec4, 73> padded = [] {
+    std::array<glm::vec4, 73> out{};
     const EdgeTable& t = edgeTable();
-    std::copy(t.begin(), t.end(), out.begin());
+    std::copy(t.begin(), t.end(), &out[0].x);
     return out;
   }();
-  if (const GLint at = program.uniform("uEdgeTable[0]"); at >= 0) glUniform4fv(at, 73, padded.data());
+  return {float(h), float(315.0 / (64.0 * pi * h * h * h)), float(-45.0 / (pi * h * h * h * h)), float(rest.volume),
+          padded};
 }
 
-std::vector<gl::ShaderDefine> kernelDefines(const water::Obstacles& obstacles) {
+std::vector<gl::ShaderDefine> boundaryDefines(const water::Obstacles& obstacles) {
   std::vector<gl::ShaderDefine> d;
   if (obstacles.active()) {
     d.push_back({"HAS_OBSTACLE", ""});
@@ -59,10 +54,10 @@ std::vector<gl::ShaderDefine> kernelDefines(const water::Obstacles& obstacles) {
   return d;
 }
 
-void bindBoundary(gl::Program& program, const water::Obstacles& obstacles, double h) {
-  if (!obstacles.active()) return;
-  obstacles.bind(program);
-  program.set("uObstacleReach", int(std::ceil(h / obstacles.cellSize() - 1e-6)));
+BoundaryUniforms bindBoundary(const water::Obstacles& obstacles, double h) {
+  if (!obstacles.active()) return {};
+  obstacles.bind();
+  return {.reach = int(std::ceil(h / obstacles.cellSize() - 1e-6)), .obstacles = obstacles.uniforms()};
 }
 
 Stats DensityProbe::measure(const water::ParticleWater& water, const DensityKernel& kernel, glm::vec3 gravity,
@@ -95,23 +90,21 @@ Stats DensityProbe::measure(const water::ParticleWater& water, const DensityKern
   m_grid->reorder(water.positions(), {{&water.positions(), &m_pos}, {&water.velocities(), &m_vel}});
 
   const water::Obstacles& obstacles = water.obstacles();
-  gl::Program& prog = m_shaders.program({"fluid/stats.comp"}, kernelDefines(obstacles));
-  prog.use();
-  setKernelUniforms(prog, h, rest);
-  bindBoundary(prog, obstacles, h);
-  m_grid->setUniforms(prog);
-  prog.set("uReach", 1);  // cells of h
-  prog.set("uCount", GLuint(n));
-  prog.set("uGravity", gravity);
-  prog.set("uDomainMin", w.domainMin);
-  prog.set("uSpacing", kernel.spacing);
-  prog.set("uWallMin", water.wallMin());
-  prog.set("uWallMax", water.wallMax());
+  const gl::Kernel<StatsUniforms> stats(m_shaders, "fluid/stats.comp",
+                                        {FLUID_CELL_START, FLUID_PRED, FLUID_VEL_IN, FLUID_OUT},
+                                        boundaryDefines(obstacles));
   m_grid->cellStart().bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_CELL_START);
   m_pos.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_PRED);
   m_vel.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_VEL_IN);
   m_stats.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_OUT);
-  prog.dispatchThreads(n);
+  stats.dispatchThreads(n, {.count = GLuint(n),
+                            .gravity = gravity,
+                            .domainMin = w.domainMin,
+                            .spacing = kernel.spacing,
+                            .sph = sphUniforms(h, rest),
+                            .walls = {water.wallMin(), water.wallMax(), float(rest.wallScale), 0.5f * kernel.spacing},
+                            .neighbours = {1, m_grid->uniforms()},  // cells of h
+                            .boundary = bindBoundary(obstacles, h)});
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
   double front = -1e30, height = -1e30, compression = 0, density = 0, maxCompression = -1e30;

@@ -20,6 +20,7 @@
 #include "gl/program.h"
 #include "gl/shader_library.h"
 #include "grid/grid.h"
+#include "sim/fluid/fluid_kernels.h"
 #include "sim/fluid/rest_lattice.h"
 #include "sim/water/obstacles.h"
 #include "sim/water/particle_water.h"
@@ -48,13 +49,6 @@ struct DensityKernel {
   double restDensity = 1000.0;     // ρ0, kg/m³ (energies in J)
   Packing packing = Packing::Hcp;  // the rest lattice V0 is measured on: balls HCP, fluid cubic
 };
-
-// Sets what fluid/kernels.glsl reads (h, V0, the coefficients, the walls' scale and table) and, when `obstacles` is
-// active, what fluid/neighbours.glsl's boundary loop reads (binds its buffers). Defines for these kernels: HAS_OBSTACLE
-// and OBSTACLE_VOLUMES from kernelDefines().
-void setKernelUniforms(const gl::Program& program, double h, const RestLattice& rest);
-void bindBoundary(gl::Program& program, const water::Obstacles& obstacles, double h);
-std::vector<gl::ShaderDefine> kernelDefines(const water::Obstacles& obstacles);
 
 class DensityProbe {
  public:

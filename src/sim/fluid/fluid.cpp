@@ -164,14 +164,12 @@ Stats Fluid::stats() {
                          gravity(), m_time);
 }
 
-gl::Program& Fluid::healthKernel() {
-  gl::Program& p = m_shaders.program({"fluid/health.comp"});
-  p.use();
-  p.set("uWallMin", m_walls.min);
-  p.set("uWallMax", m_walls.max);
+void Fluid::checkHealth(const gl::Window& w) {
+  const gl::Kernel<water::HealthUniforms> health(m_shaders, "fluid/health.comp",
+                                                 {HEALTH_BINDING, FLUID_POS, FLUID_VEL_IN});
   m_x.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_POS);
   m_v.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_VEL_IN);
-  return p;
+  health.dispatchThreads(w.count, {sim::HealthUniforms(w), m_walls.min, m_walls.max});
 }
 
 std::optional<std::string> Fluid::unhealthy(const sim::DivergenceWatch::Words& words) {

@@ -92,7 +92,7 @@ class Fluid final : public sim::Model, public water::ParticleWater {
 
  private:
   // The divergence watch: NaN particles, particles outside the walls, speed above speedBound().
-  gl::Program& healthKernel() override;
+  void checkHealth(const gl::Window& w) override;
   std::optional<std::string> unhealthy(const sim::DivergenceWatch::Words& words) override;
   std::string method() const override;
   void resume(const sim::StateStamp& good) override;
@@ -113,8 +113,10 @@ class Fluid final : public sim::Model, public water::ParticleWater {
   void sortByCell(gl::GpuProfiler* profiler);
   void solve(gl::GpuProfiler* profiler);  // the iterations
   void updateVelocities(gl::GpuProfiler* profiler);
-  // In use, with the common uniforms and the neighbour grid bound.
-  gl::Program& useKernel(const char* file, std::vector<gl::ShaderDefine> defines = {});
+  // What the kernels share (fluid_kernels.h); bindNeighbours() binds the grid's cell starts.
+  SphUniforms sph() const;
+  WallUniforms walls() const;
+  NeighbourUniforms bindNeighbours() const;
 
   gl::ShaderLibrary& m_shaders;
   Params m_params;

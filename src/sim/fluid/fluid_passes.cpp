@@ -49,32 +49,29 @@ void Fluid::step(double, gl::GpuProfiler& profiler) {
   watch();
 }
 
-gl::Program& Fluid::useKernel(const char* file, std::vector<gl::ShaderDefine> defines) {
-  for (const gl::ShaderDefine& d : kernelDefines(m_obstacles)) defines.push_back(d);
-  gl::Program& p = m_shaders.program({file}, defines);
-  p.use();
-  p.set("uCount", GLuint(m_count));
-  p.set("uDt", m_params.dt);
-  p.set("uWallMin", m_walls.min);
-  p.set("uWallMax", m_walls.max);
-  p.set("uWallInset", 0.5f * m_params.spacing());
-  setKernelUniforms(p, m_params.h(), m_rest);
-  bindBoundary(p, m_obstacles, m_params.h());
-  m_grid->setUniforms(p);
-  p.set("uReach", kGridReach);
+SphUniforms Fluid::sph() const { return sphUniforms(m_params.h(), m_rest); }
+
+WallUniforms Fluid::walls() const {
+  return {m_walls.min, m_walls.max, float(m_rest.wallScale), 0.5f * m_params.spacing()};
+}
+
+NeighbourUniforms Fluid::bindNeighbours() const {
   m_grid->cellStart().bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_CELL_START);
-  return p;
+  return {kGridReach, m_grid->uniforms()};
 }
 
 void Fluid::predict(gl::GpuProfiler* profiler) {
   auto scope = timed(profiler, "fluid.predict");
-  gl::Program& p = useKernel("fluid/predict.comp");
-  p.set("uGravity", gravity());
-  p.set("uDecay", std::exp(-m_params.damping * m_params.dt));
+  const gl::Kernel<PredictUniforms> predict(m_shaders, "fluid/predict.comp", {FLUID_POS, FLUID_VEL_IN, FLUID_OUT});
   m_x.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_POS);
   m_v.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_VEL_IN);
   m_pred.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_OUT);
-  p.dispatchThreads(m_count);
+  predict.dispatchThreads(m_count, {.count = GLuint(m_count),
+                                    .dt = m_params.dt,
+                                    .gravity = gravity(),
+                                    .decay = std::exp(-m_params.damping * m_params.dt),
+                                    .sph = sph(),
+                                    .walls = walls()});
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
@@ -97,31 +94,42 @@ void Fluid::sortByCell(gl::GpuProfiler* profiler) {
 void Fluid::solve(gl::GpuProfiler* profiler) {
   const Params& q = m_params;
   const float dq = q.scorrDq;
+  const std::vector<gl::ShaderDefine> boundary = boundaryDefines(m_obstacles);
+  std::vector<gl::ShaderDefine> deltaDefines = boundary;
+  if (q.scorrN == 4.0f) deltaDefines.push_back({"SCORR_N4", ""});
+  const gl::Kernel<LambdaUniforms> lambda(m_shaders, "fluid/lambda.comp", {FLUID_CELL_START, FLUID_PRED, FLUID_LAMBDA},
+                                          boundary);
+  const gl::Kernel<DeltaUniforms> delta(m_shaders, "fluid/delta.comp",
+                                        {FLUID_CELL_START, FLUID_PRED, FLUID_LAMBDA, FLUID_OUT}, deltaDefines);
   for (int k = 0; k < q.iterations; ++k) {
     {
       auto scope = timed(profiler, "fluid.lambda");
-      gl::Program& p = useKernel("fluid/lambda.comp");
-      p.set("uEpsilon", float(q.relaxation * m_rest.gradients));
       m_pred.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_PRED);
       m_lambda.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_LAMBDA);
-      p.dispatchThreads(m_count);
+      lambda.dispatchThreads(m_count, {.count = GLuint(m_count),
+                                       .epsilon = float(q.relaxation * m_rest.gradients),
+                                       .sph = sph(),
+                                       .walls = walls(),
+                                       .neighbours = bindNeighbours(),
+                                       .boundary = bindBoundary(m_obstacles, q.h())});
       glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     }
     auto scope = timed(profiler, "fluid.delta");
-    std::vector<gl::ShaderDefine> defines;
-    if (q.scorrN == 4.0f) defines.push_back({"SCORR_N4", ""});
-    gl::Program& p = useKernel("fluid/delta.comp", defines);
-    // s_corr in the units of λ (m²): k times the λ a unit compression gives a resting particle, so k
-    // is the compression one close pair pushes with (Macklin's k = 0.1 is dimensionless only in the
-    // paper's units, where the mass is 1 and ρ0 sets the scale).
-    p.set("uScorrK", float(q.scorrK / m_rest.gradients));
-    p.set("uScorrN", q.scorrN);
-    p.set("uScorrInvQ", 1.0f / (1.0f - dq * dq));
-    p.set("uContact", kObstacleContact * q.spacing());
     m_pred.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_PRED);
     m_lambda.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_LAMBDA);
     m_scratch[0].bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_OUT);
-    p.dispatchThreads(m_count);
+    // s_corr in the units of λ (m²): k times the λ a unit compression gives a resting particle, so k
+    // is the compression one close pair pushes with (Macklin's k = 0.1 is dimensionless only in the
+    // paper's units, where the mass is 1 and ρ0 sets the scale).
+    delta.dispatchThreads(m_count, {.count = GLuint(m_count),
+                                    .scorrK = float(q.scorrK / m_rest.gradients),
+                                    .scorrN = q.scorrN,
+                                    .scorrInvQ = 1.0f / (1.0f - dq * dq),
+                                    .contact = kObstacleContact * q.spacing(),
+                                    .sph = sph(),
+                                    .walls = walls(),
+                                    .neighbours = bindNeighbours(),
+                                    .boundary = bindBoundary(m_obstacles, q.h())});
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     std::swap(m_pred, m_scratch[0]);
   }
@@ -130,13 +138,15 @@ void Fluid::solve(gl::GpuProfiler* profiler) {
 void Fluid::updateVelocities(gl::GpuProfiler* profiler) {
   {
     auto scope = timed(profiler, "fluid.velocity");
-    gl::Program& p = useKernel("fluid/velocity.comp");
-    p.set("uFoamGain", m_params.foamGain);
-    p.set("uFoamDecay", std::pow(m_params.foamDecay, m_params.dt / 0.0005f));  // the seed's decay per 0.5 ms
+    const gl::Kernel<VelocityUniforms> velocity(m_shaders, "fluid/velocity.comp", {FLUID_POS, FLUID_PRED, FLUID_OUT});
     m_x.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_POS);
     m_pred.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_PRED);
     m_v.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_OUT);
-    p.dispatchThreads(m_count);
+    velocity.dispatchThreads(m_count, {.count = GLuint(m_count),
+                                       .dt = m_params.dt,
+                                       .foamGain = m_params.foamGain,
+                                       // the seed's decay per 0.5 ms
+                                       .foamDecay = std::pow(m_params.foamDecay, m_params.dt / 0.0005f)});
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   }
   std::swap(m_x, m_pred);  // the corrected positions are the new state (w = 1)
@@ -145,25 +155,26 @@ void Fluid::updateVelocities(gl::GpuProfiler* profiler) {
     auto scope = timed(profiler, "fluid.viscosity");
     std::vector<gl::ShaderDefine> defines;
     if (vorticity) defines.push_back({"VORTICITY", ""});
-    gl::Program& p = useKernel("fluid/viscosity.comp", defines);
-    p.set("uViscosity", m_params.viscosity);
+    const gl::Kernel<ViscosityUniforms> viscosity(m_shaders, "fluid/viscosity.comp",
+                                                  {FLUID_CELL_START, FLUID_PRED, FLUID_VEL_IN, FLUID_OUT, FLUID_LAMBDA},
+                                                  defines);
     m_x.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_PRED);
     m_v.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_VEL_IN);
     m_scratch[0].bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_OUT);
     if (vorticity) m_scratch[1].bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_LAMBDA);
-    p.dispatchThreads(m_count);
+    viscosity.dispatchThreads(m_count, {GLuint(m_count), m_params.viscosity, sph(), bindNeighbours()});
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     std::swap(m_v, m_scratch[0]);
   }
   if (vorticity) {
     auto scope = timed(profiler, "fluid.vorticity");
-    gl::Program& p = useKernel("fluid/vorticity.comp");
-    p.set("uVorticity", m_params.vorticity);
+    const gl::Kernel<VorticityUniforms> kernel(m_shaders, "fluid/vorticity.comp",
+                                               {FLUID_CELL_START, FLUID_PRED, FLUID_VEL_IN, FLUID_LAMBDA, FLUID_OUT});
     m_x.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_PRED);
     m_v.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_VEL_IN);
     m_scratch[1].bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_LAMBDA);
     m_scratch[0].bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_OUT);
-    p.dispatchThreads(m_count);
+    kernel.dispatchThreads(m_count, {GLuint(m_count), m_params.dt, m_params.vorticity, sph(), bindNeighbours()});
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     std::swap(m_v, m_scratch[0]);
   }

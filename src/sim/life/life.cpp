@@ -302,12 +302,12 @@ std::vector<sim::StateBuffer> Life::stateBuffers() {
           {"velocities", &m_vel[m_current], m_vel[m_current].size()}};
 }
 
-gl::Program& Life::healthKernel() {
-  gl::Program& p = m_shaders.program({"life/health.comp"}, defines());
-  p.use();
+void Life::checkHealth(const gl::Window& w) {
+  const gl::Kernel<sim::HealthUniforms> health(m_shaders, "life/health.comp",
+                                               {HEALTH_BINDING, LIFE_POSITIONS, LIFE_VELOCITIES}, defines());
   positions().bindBase(GL_SHADER_STORAGE_BUFFER, LIFE_POSITIONS);
   velocities().bindBase(GL_SHADER_STORAGE_BUFFER, LIFE_VELOCITIES);
-  return p;
+  health.dispatchThreads(w.count, sim::HealthUniforms(w));
 }
 
 std::optional<std::string> Life::unhealthy(const sim::DivergenceWatch::Words& w) {

@@ -100,7 +100,7 @@ class Life final : public sim::Model {
 
  private:
   // The divergence watch (sim::Model): NaN particles, speed above speedBound().
-  gl::Program& healthKernel() override;
+  void checkHealth(const gl::Window& w) override;
   std::optional<std::string> unhealthy(const sim::DivergenceWatch::Words& words) override;
   std::string method() const override;
   void resume(const sim::StateStamp& good) override;

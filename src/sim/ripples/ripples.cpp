@@ -165,11 +165,10 @@ std::vector<sim::StateBuffer> Ripples::stateBuffers() {
   return {{"state", &m_state[m_current], m_state[m_current].size()}};
 }
 
-gl::Program& Ripples::healthKernel() {
-  gl::Program& p = m_shaders.program({"ripples/health.comp"});
-  p.use();
+void Ripples::checkHealth(const gl::Window& w) {
+  const gl::Kernel<sim::HealthUniforms> health(m_shaders, "ripples/health.comp", {HEALTH_BINDING, RIPPLES_STATE_IN});
   m_state[m_current].bindBase(GL_SHADER_STORAGE_BUFFER, RIPPLES_STATE_IN);
-  return p;
+  health.dispatchThreads(w.count, sim::HealthUniforms(w));
 }
 
 std::optional<std::string> Ripples::unhealthy(const sim::DivergenceWatch::Words& w) {

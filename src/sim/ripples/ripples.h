@@ -53,7 +53,7 @@ class Ripples final : public sim::Model {
 
  private:
   // The divergence watch (sim::Model): NaN cells, |h| above heightBound().
-  gl::Program& healthKernel() override;
+  void checkHealth(const gl::Window& w) override;
   std::optional<std::string> unhealthy(const sim::DivergenceWatch::Words& words) override;
   std::string method() const override;
   void resume(const sim::StateStamp& good) override;

@@ -210,11 +210,11 @@ std::string Swarm::status() const {
 
 std::vector<StateBuffer> Swarm::stateBuffers() { return {{"state", &m_state, stateBytes()}}; }
 
-gl::Program& Swarm::healthKernel() {
-  gl::Program& p = m_shaders.program({"swarm/health.comp"}, {{"STORAGE_FP16", storageDefine()}});
-  p.use();
+void Swarm::checkHealth(const gl::Window& w) {
+  const gl::Kernel<sim::HealthUniforms> health(m_shaders, "swarm/health.comp", {HEALTH_BINDING, SWARM_STATE_BINDING},
+                                               {{"STORAGE_FP16", storageDefine()}});
   m_state.bindBase(GL_SHADER_STORAGE_BUFFER, SWARM_STATE_BINDING);
-  return p;
+  health.dispatchThreads(w.count, sim::HealthUniforms(w));
 }
 
 std::optional<std::string> Swarm::unhealthy(const DivergenceWatch::Words& w) {

@@ -80,7 +80,7 @@ class Swarm final : public Model {
 
  private:
   // The divergence watch (sim::Model): NaN particles, speed above speedBound().
-  gl::Program& healthKernel() override;
+  void checkHealth(const gl::Window& w) override;
   std::optional<std::string> unhealthy(const DivergenceWatch::Words& words) override;
   std::string method() const override;
   void resume(const StateStamp& good) override;

@@ -4,11 +4,15 @@
 
 #include "balls/bindings.glsl"
 #include "base/error.h"
-#include "common/obstacle_bindings.glsl"
 #include "sim/water/water_init.h"
 
 namespace tidepool::water {
 namespace {
+
+struct PlaceUniforms {
+  GLuint count = 0;  // obstacle particles
+  static constexpr auto fields() { return std::tuple{gl::field("uCount", &PlaceUniforms::count)}; }
+};
 
 static_assert(kMaxObstacles == BALLS_MAX_OBSTACLES, "the pose block holds BALLS_MAX_OBSTACLES obstacles");
 
@@ -193,13 +197,11 @@ void Obstacles::place(const std::vector<ObstacleParams>& params, double time, gl
   }
 
   auto scope = profiler ? profiler->scope("balls.obstacles") : gl::GpuProfiler::Scope(nullptr);
-  gl::Program& program = m_shaders.program({"balls/obstacle_place.comp"});
-  program.use();
-  program.set("uCount", GLuint(m_particles));
+  const gl::Kernel<PlaceUniforms> place(m_shaders, "balls/obstacle_place.comp", {BALLS_POS_IN, BALLS_POS_OUT});
   m_poseBlock.bindBase(GL_UNIFORM_BUFFER, BALLS_OBST_POSES);
   m_body.bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_POS_IN);
   m_world.bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_POS_OUT);
-  program.dispatchThreads(m_particles);
+  place.dispatchThreads(m_particles, {GLuint(m_particles)});
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   m_grid->build(m_world, m_particles);
   if (m_volumeFn)
@@ -217,12 +219,15 @@ bool Obstacles::occupied(glm::vec3 world) const {
   return false;
 }
 
-void Obstacles::bind(gl::Program& program) const {
-  m_poseBlock.bindBase(GL_UNIFORM_BUFFER, BALLS_OBST_POSES);
+ObstacleUniforms Obstacles::uniforms() const {
+  if (!m_grid) return {};
   const grid::GridParams& g = m_grid->params();
-  program.set("uObstacleOrigin", g.domainMin);
-  program.set("uObstacleInvCell", 1.0f / g.cellSize);
-  program.set("uObstacleDims", m_grid->dims());
+  return {.origin = g.domainMin, .invCell = 1.0f / g.cellSize, .dims = m_grid->dims()};
+}
+
+void Obstacles::bind() const {
+  if (!m_grid) return;
+  m_poseBlock.bindBase(GL_UNIFORM_BUFFER, BALLS_OBST_POSES);
   m_textures[0].bind(OBSTACLE_POS_UNIT, m_sorted.id(), GL_RGBA32F);
   m_textures[1].bind(OBSTACLE_CELL_START_UNIT, m_grid->cellStart().id(), GL_R32UI);
   if (m_volumeFn) m_textures[2].bind(OBSTACLE_VOLUME_UNIT, m_volumeSorted.id(), GL_RGBA32F);

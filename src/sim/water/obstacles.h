@@ -16,8 +16,10 @@
 #include <string>
 #include <vector>
 
+#include "common/obstacle_bindings.glsl"
 #include "gl/buffer.h"
 #include "gl/gpu_profiler.h"
+#include "gl/kernel.h"
 #include "gl/shader_library.h"
 #include "gl/texture.h"
 #include "grid/grid.h"
@@ -40,6 +42,21 @@ struct ObstacleBody {
   unsigned id = 0;                               // new with every build: renderers cache by it
 };
 
+// The uniforms of common/obstacle_grid.glsl: the obstacles' grid and the sampler units of their
+// particles and cell starts. Kernels built without HAS_OBSTACLE read none of them.
+struct ObstacleUniforms {
+  glm::vec3 origin{0.0f};  // world, m
+  float invCell = 0;       // 1/m
+  glm::uvec3 dims{0u};
+  GLint particles = OBSTACLE_POS_UNIT, cellStarts = OBSTACLE_CELL_START_UNIT;
+  static constexpr auto fields() {
+    using U = ObstacleUniforms;
+    return std::tuple{gl::field("uObstacleOrigin", &U::origin), gl::field("uObstacleInvCell", &U::invCell),
+                      gl::field("uObstacleDims", &U::dims), gl::field("obstaclePos", &U::particles),
+                      gl::field("obstacleCellStart", &U::cellStarts)};
+  }
+};
+
 class Obstacles {
  public:
   explicit Obstacles(gl::ShaderLibrary& shaders) : m_shaders(shaders) {}
@@ -56,8 +73,10 @@ class Obstacles {
   void place(const std::vector<ObstacleParams>& params, double time, glm::vec3 domainMin, glm::vec3 domainMax,
              gl::GpuProfiler* profiler = nullptr);
   bool occupied(glm::vec3 world) const;  // inside an obstacle at its placed pose
-  // Uniforms, pose block and buffer textures of common/obstacle_grid.glsl (when active()).
-  void bind(gl::Program& program) const;
+  // What common/obstacle_grid.glsl reads: its uniforms (defaults when none is active()), and
+  // bind() binds its pose block and buffer textures (when active()).
+  ObstacleUniforms uniforms() const;
+  void bind() const;
 
   // Rest volumes of every obstacle particle (the fluid's boundary particles): `volumes` gives them
   // for one body at each (re)build; they are placed and sorted with the particles, and

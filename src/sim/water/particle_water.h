@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "gl/buffer.h"
+#include "sim/divergence.h"
 #include "sim/water/obstacles.h"
 #include "sim/water/setup.h"
 
@@ -16,6 +17,16 @@ class UniformGrid;
 }
 
 namespace tidepool::water {
+
+// The uniforms of a water model's health.comp (common/health.glsl, water/health.glsl).
+struct HealthUniforms {
+  sim::HealthUniforms window;
+  glm::vec3 wallMin{0.0f}, wallMax{0.0f};  // m: particles outside are flagged
+  static constexpr auto fields() {
+    using U = HealthUniforms;
+    return std::tuple{gl::field(&U::window), gl::field("uWallMin", &U::wallMin), gl::field("uWallMax", &U::wallMax)};
+  }
+};
 
 class ParticleWater {
  public:
