@@ -5,7 +5,7 @@
 // any order) and needs no cell lists sized for the surface's kernel. GL 4.3 has no float
 // atomics, so each weight is rounded to fixed point (SURFACE_FIXED_ONE per 1) and added with
 // atomicAdd on uint: integer sums do not depend on the order, so the grid is the same bit for bit
-// on every run (the CPU twin in surface_reference.cpp rounds the same way).
+// on every run (the CPU twin in tests/reference/surface_reference.cpp rounds the same way).
 layout(local_size_x = 128) in;
 #include "common/index.glsl"
 #include "surface/cube.glsl"

@@ -1,9 +1,16 @@
 #include "gl/texture.h"
 
+#include <algorithm>
+#include <cstdlib>
 #include <cstring>
 #include <string>
 
 namespace tidepool::gl {
+namespace {
+// GL 4.3's minimum GL_MAX_TEXTURE_BUFFER_SIZE. TIDEPOOL_TEXTURE_BUFFER_TEXELS (at least this)
+// lowers BufferTexture::maxTexels() to meet a small GPU's limit on a big one.
+constexpr std::size_t kMinBufferTexels = 65536;
+}  // namespace
 
 Texture2D::Texture2D(int width, int height, GLenum internalFormat, int levels)
     : m_handle(Handle<Kind::Texture>::generate()), m_width(width), m_height(height), m_format(internalFormat) {
@@ -87,8 +94,17 @@ std::size_t BufferTexture::maxTexels() {
   static const std::size_t texels = [] {
     GLint v = 0;
     glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &v);
-    return std::size_t(v);
-  }();
+    std::size_t limit = std::size_t(v);
+    if (const char* text = std::getenv("TIDEPOOL_TEXTURE_BUFFER_TEXELS"); text && *text) {
+      char* end = nullptr;
+      const unsigned long long n = std::strtoull(text, &end, 10);
+      if (*end != '\0' || text[0] == '-' || n < kMinBufferTexels)
+        throw Error("TIDEPOOL_TEXTURE_BUFFER_TEXELS = '" + std::string(text).substr(0, 40) +
+                    "' is not a texel count of at least " + std::to_string(kMinBufferTexels));
+      limit = std::min<std::size_t>(limit, n);
+    }
+    return limit;
+  }();  // a bad override throws again on every call
   return texels;
 }
 

@@ -1,7 +1,7 @@
 // Marching cubes (Lorensen & Cline 1987) with a case table built here, not typed in: for each of the
 // 256 inside/outside patterns of a cube's corners, walk the six faces, cut each face between its
 // inside and outside corners, chain the cuts into loops and fan each loop into triangles. Both
-// the CPU reference (surface_reference.h) and the GPU kernels (shaders/surface/) read this table.
+// the CPU reference (tests/reference/surface_reference.h) and the GPU kernels (shaders/surface/) read this table.
 //
 // Numbering (the same formulas in shaders/surface/cube.glsl):
 //   corner k (0..7) sits at (k & 1, (k >> 1) & 1, (k >> 2) & 1) in the cell

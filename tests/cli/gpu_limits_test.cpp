@@ -99,3 +99,22 @@ TEST(GpuLimits, StorageBlockOverrideIsChecked) {
                      "runs with, 65536 bytes",
                      1, {"TIDEPOOL_STORAGE_BLOCK_BYTES=1000"});
 }
+
+// Obstacles are read through buffer textures (GL 4.3 guarantees 65,536 texels): a scene whose
+// obstacle particles pass the device's limit is refused with the count and the limit. With the
+// limit lowered to GL 4.3's minimum, a sphere of about 150,000 particles is refused; the same
+// scene runs at the device's own limit.
+TEST(GpuLimits, ObstaclesPastTheBufferTextureLimitAreRefused) {
+  test::TempDir dir;
+  const std::vector<std::string> args =
+      render(dir, "sphere.json", R"({"model": "balls", "params": {"particles": {"radius": 0.002, "fill": "none",
+             "domain_max": [0.3, 0.3, 0.3]},
+             "obstacles": [{"shape": "sphere", "centre": [0.15, 0.15, 0.15], "size": [0.2, 0.2, 0.2]}]}})");
+  expectOneLineError(args,
+                     " fixed particles, over this GPU's buffer-texture limit of 65536: make the obstacles smaller or "
+                     "the radius larger",
+                     1, {"TIDEPOOL_TEXTURE_BUFFER_TEXELS=65536"});
+  EXPECT_EQ(test::runTidepool(args).exitCode, 0);
+  expectOneLineError(args, "TIDEPOOL_TEXTURE_BUFFER_TEXELS = '1000' is not a texel count of at least 65536", 1,
+                     {"TIDEPOOL_TEXTURE_BUFFER_TEXELS=1000"});
+}

@@ -13,7 +13,7 @@
 
 #include "render/marching_cubes.h"
 #include "render/particle_exporter.h"
-#include "render/surface_reference.h"
+#include "reference/surface_reference.h"
 #include "support/error_of.h"
 #include "support/gl_test.h"
 #include "support/one_line_error.h"

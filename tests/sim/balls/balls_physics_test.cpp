@@ -7,6 +7,7 @@
 
 #include "sim/balls/balls.h"
 #include "sim/balls/measure/balls_measure.h"
+#include "sim/measure/bisect.h"
 #include "support/balls_fixtures.h"
 #include "support/gl_test.h"
 
@@ -24,6 +25,70 @@ Params oneBallBox() {
   p.integrator = Integrator::SymplecticEuler;
   p.substeps = 1;
   return p;
+}
+
+// An undamped contact (e = 1) oscillates with ω0 = π/t_c; symplectic Euler and Verlet are stable
+// while ω0·dt < 2, i.e. dt < 2·t_c/π ≈ 0.64·t_c; explicit Euler gains energy at any dt.
+Params oneBall(Integrator integrator) {
+  Params p = oneBallBox();
+  p.integrator = integrator;
+  p.contactTime = 0.01f;
+  return p;
+}
+
+// Largest |overlap − equilibrium| / equilibrium over `periods` periods of an undamped contact
+// oscillation (a ball on the floor under gravity pushed in to twice its equilibrium overlap, so
+// 1 means the amplitude is kept; more is energy gained). dtOverTc = dt / t_c.
+double contactAmplitudeGrowth(gl::ShaderLibrary& shaders, Integrator integrator, double dtOverTc, int periods) {
+  Params p = oneBall(integrator);
+  p.restitution = 1.0f;
+  p.dt = float(dtOverTc * p.contactTime);
+  const double equilibrium = 9.81 / springPerMass(p);  // wall: m_eff = m
+  Balls b(shaders, p);
+  b.upload({glm::vec4(0.5f, 0.5f, float(p.radius - 2 * equilibrium), 1.0f)}, {glm::vec4(0.0f)});
+  const int steps = int(std::ceil(periods * 2.0 / dtOverTc));  // a period is 2 t_c
+  double worst = 0;
+  for (int i = 0; i < steps; ++i) {
+    b.stepOnce();
+    const double z = b.downloadPositions()[0].z;
+    if (!std::isfinite(z)) return INFINITY;
+    worst = std::max(worst, std::abs((p.radius - z) - equilibrium) / equilibrium);
+    if (worst > 10) break;  // clearly unstable
+  }
+  return worst;
+}
+
+// Growth of a small undamped contact oscillation: its amplitude over the last period divided by
+// that over the first (1: kept; more: energy gained; infinity: blown up).
+double contactGrowthRatio(gl::ShaderLibrary& shaders, Integrator integrator, double dtOverTc, int periods) {
+  // A small oscillation (0.2 x the equilibrium overlap) so that even the amplitude distortion of
+  // symplectic Euler near its limit, 1/sqrt(1 − (ω0·dt/2)²), keeps the ball in contact.
+  Params p = oneBall(integrator);
+  p.restitution = 1.0f;
+  p.dt = float(dtOverTc * p.contactTime);
+  const double equilibrium = 9.81 / springPerMass(p);
+  Balls b(shaders, p);
+  b.upload({glm::vec4(0.5f, 0.5f, float(p.radius - 1.2 * equilibrium), 1.0f)}, {glm::vec4(0.0f)});
+  const int perPeriod = int(std::ceil(2.0 / dtOverTc));  // a period is 2 t_c
+  const int steps = periods * perPeriod;
+  double first = 0, late = 0;
+  for (int i = 0; i < steps; ++i) {
+    b.stepOnce();
+    const double z = b.downloadPositions()[0].z;
+    if (!std::isfinite(z)) return INFINITY;
+    const double deviation = std::abs((p.radius - z) - equilibrium);
+    if (i < perPeriod) first = std::max(first, deviation);
+    if (i >= steps - perPeriod) late = std::max(late, deviation);
+    if (deviation > 50 * equilibrium) return INFINITY;  // clearly unstable
+  }
+  return late / std::max(first, 1e-30);
+}
+
+// Largest dt / t_c at which the undamped contact's amplitude grows less than 1.5x over 12
+// periods, by bisection to a relative width of `tolerance` (0 when t_c/20 already fails).
+double stableStepLimit(gl::ShaderLibrary& shaders, Integrator integrator, double tolerance) {
+  auto stable = [&](double dtOverTc) { return contactGrowthRatio(shaders, integrator, dtOverTc, 12) < 1.5; };
+  return largestStable(0.05, 2.0, tolerance, stable);
 }
 
 }  // namespace

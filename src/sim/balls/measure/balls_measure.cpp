@@ -3,7 +3,6 @@
 #include <cmath>
 
 #include "sim/balls/balls.h"
-#include "sim/measure/bisect.h"
 
 namespace tidepool::balls {
 namespace {
@@ -42,54 +41,6 @@ Bounce measureBounce(gl::ShaderLibrary& shaders, Integrator integrator, float e,
     }
   }
   return result;
-}
-
-double contactAmplitudeGrowth(gl::ShaderLibrary& shaders, Integrator integrator, double dtOverTc, int periods) {
-  Params p = oneBall(integrator);
-  p.restitution = 1.0f;
-  p.dt = float(dtOverTc * p.contactTime);
-  const double equilibrium = 9.81 / springPerMass(p);  // wall: m_eff = m
-  Balls b(shaders, p);
-  b.upload({glm::vec4(0.5f, 0.5f, float(p.radius - 2 * equilibrium), 1.0f)}, {glm::vec4(0.0f)});
-  const int steps = int(std::ceil(periods * 2.0 / dtOverTc));  // a period is 2 t_c
-  double worst = 0;
-  for (int i = 0; i < steps; ++i) {
-    b.stepOnce();
-    const double z = b.downloadPositions()[0].z;
-    if (!std::isfinite(z)) return INFINITY;
-    worst = std::max(worst, std::abs((p.radius - z) - equilibrium) / equilibrium);
-    if (worst > 10) break;  // clearly unstable
-  }
-  return worst;
-}
-
-double contactGrowthRatio(gl::ShaderLibrary& shaders, Integrator integrator, double dtOverTc, int periods) {
-  // A small oscillation (0.2 x the equilibrium overlap) so that even the amplitude distortion of
-  // symplectic Euler near its limit, 1/sqrt(1 − (ω0·dt/2)²), keeps the ball in contact.
-  Params p = oneBall(integrator);
-  p.restitution = 1.0f;
-  p.dt = float(dtOverTc * p.contactTime);
-  const double equilibrium = 9.81 / springPerMass(p);
-  Balls b(shaders, p);
-  b.upload({glm::vec4(0.5f, 0.5f, float(p.radius - 1.2 * equilibrium), 1.0f)}, {glm::vec4(0.0f)});
-  const int perPeriod = int(std::ceil(2.0 / dtOverTc));  // a period is 2 t_c
-  const int steps = periods * perPeriod;
-  double first = 0, late = 0;
-  for (int i = 0; i < steps; ++i) {
-    b.stepOnce();
-    const double z = b.downloadPositions()[0].z;
-    if (!std::isfinite(z)) return INFINITY;
-    const double deviation = std::abs((p.radius - z) - equilibrium);
-    if (i < perPeriod) first = std::max(first, deviation);
-    if (i >= steps - perPeriod) late = std::max(late, deviation);
-    if (deviation > 50 * equilibrium) return INFINITY;  // clearly unstable
-  }
-  return late / std::max(first, 1e-30);
-}
-
-double stableStepLimit(gl::ShaderLibrary& shaders, Integrator integrator, double tolerance) {
-  auto stable = [&](double dtOverTc) { return contactGrowthRatio(shaders, integrator, dtOverTc, 12) < 1.5; };
-  return largestStable(0.05, 2.0, tolerance, stable);
 }
 
 ColumnScales columnScales(const water::Setup& p) {

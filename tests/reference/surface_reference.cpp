@@ -1,4 +1,4 @@
-#include "render/surface_reference.h"
+#include "reference/surface_reference.h"
 
 #include <cmath>
 
