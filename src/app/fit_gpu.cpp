@@ -54,13 +54,12 @@ FitTrial measure(const std::filesystem::path& file, const io::Json& overrides, g
   t.particles = stage->model() ? stage->model()->count() : 0;
   RenderTarget target(o.width, o.height);
   gl::GpuProfiler profiler;
-  const double frameSeconds = 1.0 / scene.clip.fps;
   std::vector<double> ms;
   for (int i = 0; i < o.frames + 2; ++i) {
     glFinish();
     const auto start = std::chrono::steady_clock::now();
     profiler.beginFrame();
-    stage->step(frameSeconds, profiler);
+    stage->step(profiler);
     stage->render(target, profiler);
     profiler.endFrame();
     glFinish();

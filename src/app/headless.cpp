@@ -90,7 +90,7 @@ int renderHeadless(const RenderJob& request) {
   for (int i = 0; i < frames; ++i) {
     // Frame i shows the state after i steps: frame 0 is the initial state.
     profiler.beginFrame();
-    if (i > 0) stage->step(1.0 / scene.clip.fps, profiler);
+    if (i > 0) stage->step(profiler);
     if (const auto d = stage->divergence()) throw Error(d->message);
     if (checkpoints && i + 1 < frames && schedule.due(stage->simTime())) {
       saveCheckpoint(*stage, scene, checkpoint);

@@ -146,9 +146,6 @@ int runWindow(const WindowJob& job) {
   };
   Keys keys(window);
   glm::vec2 lastCursor{0.0f};
-  // Simulated time per displayed frame: the scene's, as `tidepool render` advances it (README,
-  // "What a frame is"), whatever the display's refresh rate.
-  const double frameSeconds = 1.0 / scene.clip.fps;
   gl::FramePacer pacer(job.framesInFlight);
   Indicators counters;
   double lastTime = glfwGetTime();
@@ -220,7 +217,7 @@ int runWindow(const WindowJob& job) {
     if (fbw > 0 && fbh > 0) target.resize(fbw, fbh);
     profiler.beginFrame();
     const bool stepped = !ui.paused || std::exchange(ui.stepOnce, false);
-    if (stepped) stage->step(frameSeconds, profiler);
+    if (stepped) stage->step(profiler);  // the model's frame, as `tidepool render` steps it, whatever the refresh rate
     stage->render(target, profiler);
     profiler.endFrame();
     if (auto m = exports.afterFrame(*stage, stepped)) show(*m);

@@ -77,6 +77,14 @@ class ParamVisitor {
     list(info, items, maxSize, visitItem, [](std::size_t i, const T&) { return std::to_string(i); });
   }
 
+  // A double shown, read and range-checked as a float; it changes only when a visitor changes
+  // that float, so a default of 1/30 s stays 1/30 rather than 0.033333335.
+  void realDouble(const ParamInfo& info, double& value, float min, float max) {
+    float f = float(value);
+    real(info, f, min, max);
+    if (f != float(value)) value = f;
+  }
+
   // Enumerations are stored as their names ("verlet", not 2).
   template <class E, std::size_t N>
   void choice(const ParamInfo& info, E& value, const std::array<const char*, N>& names) {

@@ -44,10 +44,9 @@ int run(Env& env, const Options& o) {
   gl::GpuProfiler profiler;
   RenderTarget target(scene.clip.width, scene.clip.height);
   stage->render(target, profiler);  // a view may set what the state means (the swarm's aspect)
-  const double frameSeconds = 1.0 / scene.clip.fps;
-  for (int i = 0; i < env.common.warmup; ++i) stage->step(frameSeconds, profiler);
+  for (int i = 0; i < env.common.warmup; ++i) stage->step(profiler);
   std::vector<double> plain;
-  for (int i = 0; i < frames; ++i) plain.push_back(wallMs([&] { stage->step(frameSeconds, profiler); }));
+  for (int i = 0; i < frames; ++i) plain.push_back(wallMs([&] { stage->step(profiler); }));
   std::printf(
       "export benchmark on %s: scene %s, %zu points (particles or cells), %d frames each, every frame exported\n",
       env.device.c_str(), scene.name.c_str(), stage->model() ? stage->model()->count() : 0, frames);
@@ -61,7 +60,7 @@ int run(Env& env, const Options& o) {
       ParticleExporter exporter(folder, format, 1);
       for (int i = 0; i < frames; ++i)
         exported.push_back(wallMs([&] {
-          stage->step(frameSeconds, profiler);
+          stage->step(profiler);
           exporter.capture(i, stage->simTime(), *stage->exportSource());
           exporter.poll();
         }));

@@ -55,7 +55,7 @@ int run(Env& env, const Options& o) {
   auto stage = createStage(scene, env.shaders);
   if (!stage->surfaceInput()) throw Error(scene.model + " has no water: bench surface needs a balls or fluid scene");
   gl::GpuProfiler stepProfiler;
-  for (int i = 0; i < o.steps; ++i) stage->step(1.0 / scene.clip.fps, stepProfiler);
+  for (int i = 0; i < o.steps; ++i) stage->step(stepProfiler);
   glFinish();
   const SurfaceInput input = *stage->surfaceInput();
   SurfaceMesher mesher(env.shaders);

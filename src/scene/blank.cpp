@@ -8,7 +8,8 @@ class BlankStage final : public Stage {
   explicit BlankStage(const BlankParams& p) : m_params(p) {}
   void visitParams(ParamVisitor& v) override { visit(v, m_params); }
   void reset() override { m_time = 0; }
-  void step(double frameSeconds, gl::GpuProfiler&) override { m_time += frameSeconds; }
+  void step(gl::GpuProfiler&) override { m_time += frameSeconds(); }
+  double frameSeconds() const override { return m_params.frameSeconds; }
   void render(RenderTarget& target, gl::GpuProfiler& profiler) override {
     auto scope = profiler.scope("blank.clear");
     target.bind();
@@ -30,7 +31,10 @@ class BlankStage final : public Stage {
 
 }  // namespace
 
-void visit(ParamVisitor& v, BlankParams& p) { v.color({"color", "Colour", "clear colour, linear RGB"}, p.color); }
+void visit(ParamVisitor& v, BlankParams& p) {
+  v.color({"color", "Colour", "clear colour, linear RGB"}, p.color);
+  v.realDouble({"frame_seconds", "Frame seconds", "s its clock advances per frame"}, p.frameSeconds, 1e-4f, 1.0f);
+}
 
 namespace {
 

@@ -8,6 +8,7 @@ namespace tidepool {
 
 struct BlankParams {
   glm::vec3 color{0.05f, 0.09f, 0.14f};  // linear RGB clear colour
+  double frameSeconds = 1.0 / 30;        // s its clock advances per frame
 };
 void visit(ParamVisitor& v, BlankParams& p);
 

@@ -122,9 +122,9 @@ class LifeStage final : public ModelStage<life::Life> {
       v.endGroup();
     }
   }
-  void step(double frameSeconds, gl::GpuProfiler& profiler) override {
+  void step(gl::GpuProfiler& profiler) override {
     applySetup();
-    ModelStage::step(frameSeconds, profiler);
+    ModelStage::step(profiler);
   }
   void render(RenderTarget& target, gl::GpuProfiler& profiler) override {
     applySetup();

@@ -58,12 +58,12 @@ class RipplesStage final : public ModelStage<ripples::Ripples> {
     ModelStage::reset();
     m_nextDrop = 0;
   }
-  void step(double frameSeconds, gl::GpuProfiler& profiler) override {
+  void step(gl::GpuProfiler& profiler) override {
     for (; m_nextDrop < m_drops.size() && m_drops[m_nextDrop].time <= m_model.time(); ++m_nextDrop) {
       const Drop& d = m_drops[m_nextDrop];
       m_model.touch(d.x, d.y, d.radius, d.depth);
     }
-    ModelStage::step(frameSeconds, profiler);
+    ModelStage::step(profiler);
   }
   void render(RenderTarget& target, gl::GpuProfiler& profiler) override {
     syncViews();

@@ -35,7 +35,8 @@ void visit(ParamVisitor& v, Scene& s) {
            s.method, kMethodModeNames);
   if (v.beginGroup({"clip", "Clip", "default headless clip"})) {
     v.integer({"frames", "Frames", "frames rendered headless"}, s.clip.frames, 1, 1000000);
-    v.integer({"fps", "FPS", "frames per simulated second"}, s.clip.fps, 1, 1000);
+    v.integer({"fps", "FPS", "video frames per second of playback (the model sets a frame's simulated time)"},
+              s.clip.fps, 1, 1000);
     v.integer({"width", "Width", "pixels"}, s.clip.width, 1, 16384);
     v.integer({"height", "Height", "pixels"}, s.clip.height, 1, 16384);
     v.endGroup();

@@ -27,7 +27,7 @@ namespace tidepool {
 
 struct ClipSettings {
   int frames = 90;  // frames rendered by `tidepool render` unless --frames says otherwise
-  int fps = 30;     // video frame rate; also the simulated time per frame (1/fps s)
+  int fps = 30;     // video playback rate; a frame's simulated time is the model's (Stage::frameSeconds)
   int width = 960, height = 540;
 };
 

@@ -1,6 +1,8 @@
 // A running scene: one model (which owns its buffers and compute passes) and the renderer that
 // reads it. The window app, the headless renderer, the benchmarks and the tests drive stages
-// the same way: step() advances one frame of simulated time, render() draws it.
+// the same way: step() advances one frame of simulated time, render() draws it. How much time a
+// frame is the model says from its parameters (frameSeconds()); the scene's clip fps is only the
+// rate a video plays at.
 #pragma once
 
 #include <cmath>
@@ -40,10 +42,11 @@ struct StageIndicators {
 class Stage {
  public:
   virtual ~Stage() = default;
-  virtual void visitParams(ParamVisitor& v) = 0;  // the model's and the view's Params
-  virtual void reset() = 0;                       // back to the initial state (same parameters)
-  virtual void restart() { reset(); }             // the window's R: as reset, but life draws new random particles
-  virtual void step(double frameSeconds, gl::GpuProfiler& profiler) = 0;  // one frame of simulated time
+  virtual void visitParams(ParamVisitor& v) = 0;     // the model's and the view's Params
+  virtual void reset() = 0;                          // back to the initial state (same parameters)
+  virtual void restart() { reset(); }                // the window's R: as reset, but life draws new random particles
+  virtual void step(gl::GpuProfiler& profiler) = 0;  // one frame: frameSeconds() of simulated time
+  virtual double frameSeconds() const = 0;           // simulated s of one frame, from the parameters
   virtual void render(RenderTarget& target, gl::GpuProfiler& profiler) = 0;
   virtual void input(const Input&) {}
   virtual void key(int /*asciiUpperCase*/) {}  // a letter key the app does not use (e.g. 'C', 'N')
@@ -92,7 +95,8 @@ class ModelStage : public Stage {
 
  public:
   void reset() override { m_model.reset(); }
-  void step(double frameSeconds, gl::GpuProfiler& profiler) override { m_model.step(frameSeconds, profiler); }
+  void step(gl::GpuProfiler& profiler) override { m_model.step(profiler); }
+  double frameSeconds() const override { return m_model.frameSeconds(); }
   double simTime() const override { return m_model.time(); }
   std::string status() const override { return m_model.status(); }
   std::optional<DivergenceReport> divergence() const override { return m_model.divergence(); }

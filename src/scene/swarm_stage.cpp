@@ -47,11 +47,11 @@ class SwarmStage final : public ModelStage<sim::Swarm> {
     m_coloredImage.clear();  // recoloured from the new start positions
   }
 
-  void step(double frameSeconds, gl::GpuProfiler& profiler) override {
+  void step(gl::GpuProfiler& profiler) override {
     syncAllocation();
     syncColors();
-    ModelStage::step(frameSeconds, profiler);
-    m_clock += frameSeconds;
+    ModelStage::step(profiler);
+    m_clock += m_model.params().frameSeconds;
   }
 
   void render(RenderTarget& target, gl::GpuProfiler& profiler) override {
@@ -164,7 +164,7 @@ class SwarmStage final : public ModelStage<sim::Swarm> {
   std::string m_coloredImage;                                  // image the colour buffer was made from
   std::optional<std::pair<std::string, io::Image>> m_dropped;  // decoded by dropFile, for syncColors
   std::string m_warning;
-  double m_clock = 0.0;  // real seconds of frames shown: drives the hue cycle
+  double m_clock = 0.0;  // frames shown x frame_seconds (not slowed by speed): drives the hue cycle
 };
 
 SceneParams parseSwarmParams(const io::Json& params, const std::string& where) {

@@ -37,11 +37,11 @@ class WaterStage final : public Stage {
     m_frames = 0;
     m_resolution = liveResolution();  // as set (a checkpoint's parameters are refined already)
   }
-  void step(double frameSeconds, gl::GpuProfiler& profiler) override {
+  void step(gl::GpuProfiler& profiler) override {
     if (liveResolution() != m_resolution) refineLive();
     if (m_choice != m_active) switchModel();
     const std::uint64_t before = model()->stepCount();
-    model()->step(frameSeconds, profiler);
+    model()->step(profiler);
     m_steps += run().frameSteps(before);
     if (m_frames++ % kStatsInterval == 0) run().refreshStats();
   }
@@ -92,6 +92,7 @@ class WaterStage final : public Stage {
     return "";
   }
   double simTime() const override { return m_runs[index(m_active)]->model()->time(); }
+  double frameSeconds() const override { return m_runs[index(m_active)]->model()->frameSeconds(); }
   std::pair<std::string, double> liveMetric() const override {
     if (m_frames == 0) return {"density error (%)", NAN};
     return m_runs[index(m_active)]->liveMetric();

@@ -1,9 +1,10 @@
 // The one surface every model offers (balls, life, ripples, swarm), so that stages, benchmarks,
-// studies and checkpoints treat models alike: a frame of stepping, the clock and the size, a
+// studies and checkpoints treat models alike: a frame of stepping (how much simulated time a frame
+// is comes from the model's own parameters, never from the caller), the clock and the size, a
 // status line, the state buffers by name, and the divergence watch (sim/divergence.h), which
 // this base owns and serves for every model.
 //
-//   model.step(1.0 / 60, profiler);   // one frame: the model's substeps, then the watch
+//   model.step(profiler);   // one frame: model.frameSeconds() of simulated time, then the watch
 //   if (model.divergence()) model.recover();
 //
 // A model implements the public virtuals below and, privately, what its watch needs
@@ -26,12 +27,13 @@ class Model : private DivergenceWatch::Subject {
  public:
   virtual ~Model() = default;
 
-  virtual void step(double frameSeconds, gl::GpuProfiler& profiler) = 0;  // one frame: substeps, then watch()
-  virtual void reset() = 0;                                               // the initial state, t = 0
-  virtual double time() const = 0;                                        // simulated s since reset
-  virtual std::size_t count() const = 0;                                  // particles or cells
-  virtual std::string status() const = 0;                                 // one line for the UI
-  virtual std::uint64_t stepCount() const { return 0; }                   // steps taken, where the model counts them
+  virtual void step(gl::GpuProfiler& profiler) = 0;      // one frame: substeps, then watch()
+  virtual double frameSeconds() const = 0;               // simulated s one step() advances, from the parameters
+  virtual void reset() = 0;                              // the initial state, t = 0
+  virtual double time() const = 0;                       // simulated s since reset
+  virtual std::size_t count() const = 0;                 // particles or cells
+  virtual std::string status() const = 0;                // one line for the UI
+  virtual std::uint64_t stepCount() const { return 0; }  // steps taken, where the model counts them
   using Subject::stateBuffers;  // the live state, named, with the bytes in use (renderers, checkpoints)
 
   // The divergence watch: a non-blocking check every 8 frames, a frame or two late.

@@ -103,7 +103,6 @@ SoakResult soak(const Scene& scene, gl::ShaderLibrary& shaders, const SoakRun& r
     throw Error("soak: '" + scene.name + "' is a " + scene.model + " scene, which has no model to soak");
   RenderTarget target(run.renderWidth, run.renderHeight);
   gl::GpuProfiler profiler;
-  const double frameSeconds = 1.0 / scene.clip.fps;
   const auto start = std::chrono::steady_clock::now();
   SoakResult result;
 
@@ -126,7 +125,7 @@ SoakResult soak(const Scene& scene, gl::ShaderLibrary& shaders, const SoakRun& r
     }
     if (step == run.steps) break;
     profiler.beginFrame();
-    stage->step(frameSeconds, profiler);
+    stage->step(profiler);
     profiler.endFrame();
     if (const auto d = stage->divergence())
       throw Error("soak: " + scene.name + " at step " + std::to_string(step + 1) + ": " + d->message);

@@ -1,5 +1,5 @@
 // Long runs: a scene stepped headless for many frames, as the window and `tidepool
-// render` step it (one Stage::step of 1/fps s per frame, the divergence watch on), and sampled
+// render` step it (one Stage::step per frame, the divergence watch on), and sampled
 // every few frames for what only a long run shows: the process's resident memory
 // (/proc/self/statm), the particles still finite and inside the walls, and the model's energy.
 // Each sample also renders the stage once (a small target), so that the views soak too.

@@ -44,7 +44,7 @@ sim::Model& WaterRun::model() {
 void WaterRun::stepFrame(bool watched) {
   if (m_stopped) return;  // the watch reported: the state is no longer judged good
   if (watched) {
-    model().step(0.0, m_profiler);  // substeps = 1: one step, then the watch
+    model().step(m_profiler);  // substeps = 1: one step, then the watch
     m_stopped = model().divergence().has_value();
   } else if (m_balls) {
     m_balls->stepOnce();

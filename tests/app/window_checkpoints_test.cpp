@@ -15,14 +15,15 @@ class WindowCheckpointLogic : public test::GlTest {};
 
 TEST_F(WindowCheckpointLogic, SavesOnRequestAndAtEveryAutosavePeriod) {
   test::TempDir dir;
-  // blank: simulated time is frame time (a swarm's runs at its speed)
-  const Scene scene = parseScene(io::parseJson(R"({"model": "blank"})", "w.json"), "w.json");
+  // blank: its clock advances frame_seconds a frame (a swarm's runs at its speed)
+  const Scene scene =
+      parseScene(io::parseJson(R"({"model": "blank", "params": {"frame_seconds": 0.0166666667}})", "w.json"), "w.json");
   auto stage = createStage(scene, shaders());
   WindowCheckpoints checkpoints(scene, dir / "w.ckpt", 0.25, stage->simTime());
   gl::GpuProfiler profiler;
   std::vector<std::string> messages;
   const auto frame = [&](bool f6) {
-    stage->step(1.0 / 60, profiler);
+    stage->step(profiler);
     if (auto saved = checkpoints.afterFrame(*stage, f6)) {
       EXPECT_FALSE(saved->error) << saved->message;
       messages.push_back(saved->message);

@@ -38,7 +38,7 @@ TEST_F(WindowExportLogic, ExportsEveryKthSteppedFrameFromStart) {
   EXPECT_FALSE(started.error) << started.text;
   ASSERT_TRUE(exports.running());
   const auto frame = [&](bool step) {
-    if (step) stage->step(1.0 / 40, profiler);
+    if (step) stage->step(profiler);
     const auto m = exports.afterFrame(*stage, step);
     EXPECT_FALSE(m) << m->text;
   };
@@ -82,7 +82,7 @@ TEST_F(WindowExportLogic, FailuresStopTheExportWithAMessageAndTheRunGoesOn) {
   dir.write("out", "not a folder");
   std::optional<WindowExport::Message> failed;
   for (int i = 0; i < 4 && !failed; ++i) {
-    stage->step(1.0 / 40, profiler);
+    stage->step(profiler);
     failed = exports.afterFrame(*stage, true);
   }
   ASSERT_TRUE(failed);
@@ -90,7 +90,7 @@ TEST_F(WindowExportLogic, FailuresStopTheExportWithAMessageAndTheRunGoesOn) {
   EXPECT_NE(failed->text.find("cannot write '" + (dir / "out/frame_00000.vtp").string() + "'"), std::string::npos)
       << failed->text;
   EXPECT_FALSE(exports.running());
-  stage->step(1.0 / 40, profiler);  // the simulation runs on
+  stage->step(profiler);  // the simulation runs on
   EXPECT_FALSE(stage->divergence());
 
   auto ripples = createStage(loadScene(std::string(TIDEPOOL_TEST_DATA) + "/soak/ripples.json"), shaders());
@@ -117,7 +117,7 @@ TEST_F(WindowExportLogic, TheWaterSurfaceIsMeshedEveryKthFrame) {
   const WindowExport::Message started = exports.start(*stage);
   ASSERT_FALSE(started.error) << started.text;
   for (int i = 0; i < 4; ++i) {
-    stage->step(1.0 / 40, profiler);
+    stage->step(profiler);
     const auto m = exports.afterFrame(*stage, true);
     ASSERT_FALSE(m) << m->text;
   }

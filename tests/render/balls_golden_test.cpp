@@ -101,7 +101,7 @@ class BallsGolden : public test::GlTest, public ::testing::WithParamInterface<Go
     auto stage = createStage(scene, shaders());
     RenderTarget target(kWidth, kHeight);
     gl::GpuProfiler profiler;
-    for (int i = 0; i < g.frames; ++i) stage->step(1.0 / scene.clip.fps, profiler);
+    for (int i = 0; i < g.frames; ++i) stage->step(profiler);
     setenv("TIDEPOOL_BALLS_RASTER", g.raster, 1);  // the test hook of render/balls_view.cpp
     stage->render(target, profiler);
     unsetenv("TIDEPOOL_BALLS_RASTER");

@@ -61,10 +61,11 @@ std::unique_ptr<ripples::Ripples> wavyPool(gl::ShaderLibrary& shaders, bool with
   p.sphere = withBall;
   p.sphereRadius = 0.12f;  // m; the tank is 1.28 m across
   p.sphereHeight = 0.03f;
+  p.frameSeconds = 1.0 / 60;
   auto model = std::make_unique<ripples::Ripples>(shaders, p);
   model->touch(0.35f, 0.55f, 0.15f, -0.05f);
   model->touch(0.7f, 0.35f, 0.1f, -0.04f);
-  for (int i = 0; i < 12; ++i) model->step(1.0 / 60, profiler);
+  for (int i = 0; i < 12; ++i) model->step(profiler);
   return model;
 }
 

@@ -29,7 +29,8 @@ std::vector<float> causticsOf(RipplesView3D& view) {
 // A drop of `radius` (grid units) at (x, y), spread for `frames` frames of 1/60 s.
 void dropAndWait(ripples::Ripples& model, float x, float y, float radius, int frames, gl::GpuProfiler& profiler) {
   model.touch(x, y, radius, -0.05f);
-  for (int i = 0; i < frames; ++i) model.step(1.0 / 60, profiler);
+  model.params().frameSeconds = 1.0 / 60;
+  for (int i = 0; i < frames; ++i) model.step(profiler);
 }
 
 int distinctColours(const std::vector<uint8_t>& rgba) {

@@ -47,7 +47,7 @@ TEST_F(BadDrop, LifeKeepsItsRulesAndParams) {
                            "height": 144, "seed": 4}})",
                        shaders());
   gl::GpuProfiler profiler;
-  stage->step(0.025, profiler);
+  stage->step(profiler);
   const std::string code = stage->shareText();
   const io::Json params = shown(*stage);
   const double time = stage->simTime();
@@ -58,7 +58,7 @@ TEST_F(BadDrop, LifeKeepsItsRulesAndParams) {
   EXPECT_EQ(stage->shareText(), code);
   EXPECT_EQ(shown(*stage), params);
   EXPECT_EQ(stage->simTime(), time) << "not respawned";
-  stage->step(0.025, profiler);
+  stage->step(profiler);
   EXPECT_EQ(stage->shareText(), code);
 }
 
@@ -72,14 +72,14 @@ TEST_F(BadDrop, SwarmKeepsItsImageAndParticles) {
   auto stage = stageOf(R"({"model": "swarm", "params": {"particles": 4000}})", shaders());
   gl::GpuProfiler profiler;
   RenderTarget target(32, 16);
-  stage->step(1.0 / 30, profiler);
+  stage->step(profiler);
   stage->render(target, profiler);
   const io::Json params = shown(*stage);
   const double time = stage->simTime();
   expectRefused(stage->dropFile((dir / "text.png").string()), "text.png: not a PNG image", "");
   expectRefused(stage->dropFile((dir / "truncated.png").string()), "truncated.png: cannot decode", "");
   expectRefused(stage->dropFile((dir / "missing.png").string()), "missing.png", "not found");
-  stage->step(1.0 / 30, profiler);
+  stage->step(profiler);
   stage->render(target, profiler);
   EXPECT_EQ(shown(*stage), params) << "the view's colour mode and image are unchanged";
   EXPECT_GT(stage->simTime(), time) << "not restarted, as a new image would";
@@ -99,16 +99,16 @@ TEST_F(BadDrop, WaterKeepsItsObstacles) {
                            "obstacles": [{"shape": "sphere", "centre": [0.3, 0.1, 0.3], "size": [0.05, 0.05, 0.05]}]}})",
                        shaders());
   gl::GpuProfiler profiler;
-  stage->step(1.0 / 60, profiler);
+  stage->step(profiler);
   const io::Json params = shown(*stage);
   ASSERT_EQ(params["obstacles"].size(), 1u) << params.dump();
   expectRefused(stage->dropFile((dir / "bad.obj").string()), "bad.obj:4: vertex index 7 out of range", "");
   expectRefused(stage->dropFile((dir / "empty.obj").string()), "empty.obj: no triangles", "");
   expectRefused(stage->dropFile((dir / "cube.png").string()), "cube.png", "OBJ meshes");
-  stage->step(1.0 / 60, profiler);
+  stage->step(profiler);
   EXPECT_EQ(shown(*stage), params);
   EXPECT_EQ(stage->status().find("not changed"), std::string::npos) << stage->status();
   EXPECT_EQ(stage->dropFile((dir / "closed.obj").string()), "");
-  stage->step(1.0 / 60, profiler);
+  stage->step(profiler);
   EXPECT_EQ(shown(*stage)["obstacles"].size(), 2u);
 }

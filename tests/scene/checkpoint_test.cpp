@@ -36,7 +36,7 @@ void frames(Stage& stage, int n, RenderTarget* target = nullptr) {
   gl::GpuProfiler profiler;
   for (int i = 0; i < n; ++i) {
     profiler.beginFrame();
-    stage.step(kFrame, profiler);
+    stage.step(profiler);
     if (target) stage.render(*target, profiler);
     profiler.endFrame();
     ASSERT_FALSE(stage.divergence().has_value()) << stage.divergence()->message;
@@ -282,17 +282,17 @@ TEST_F(Checkpoints, ADivergedStateIsNotSaved) {
 TEST_F(Checkpoints, TheLastGoodStateIsSavedSoThatAResumedRunCanRecover) {
   const Scene scene = sceneOf(R"({"model": "ripples", "params": {"width": 16, "height": 16}})");
   ripples::Params p = scene.params.model<ripples::Params>();
-  const double frame = 1.0 / 60;
+  p.frameSeconds = 1.0 / 60;
   p.autoSubsteps = false;  // one step per frame at C = 0.5, then (after the load) at C = 5
   p.substeps = 1;
-  p.waveSpeed = float(0.5 * p.cellSize / frame);
+  p.waveSpeed = float(0.5 * p.cellSize / p.frameSeconds);
   ripples::Ripples model(shaders(), p);
   std::vector<float> state(16 * 16 * 2, 0.0f);
   for (std::size_t i = 0; i < state.size(); i += 2) state[i] = 1e-3f * float(i % 7) - 3e-3f;
   model.upload(state);
   gl::GpuProfiler profiler;
   for (int i = 0; i < 20; ++i) {
-    model.step(frame, profiler);
+    model.step(profiler);
     model.flushChecks();  // each check is judged before the next starts: good copies are kept
   }
   io::Checkpoint saved;
@@ -323,7 +323,7 @@ TEST_F(Checkpoints, TheLastGoodStateIsSavedSoThatAResumedRunCanRecover) {
   // copy, recovery goes back to it (without, there would be nothing to go back to).
   resumed.params().waveSpeed *= 10;
   for (int i = 0; i < 60 && !resumed.divergence(); ++i) {
-    resumed.step(frame, profiler);
+    resumed.step(profiler);
     resumed.flushChecks();
   }
   ASSERT_TRUE(resumed.divergence().has_value()) << "C far above 1/sqrt(2) must blow up";
@@ -340,7 +340,7 @@ TEST_F(Checkpoints, AGoodCopyLargerThanTheStateIsRefused) {
   ripples::Ripples model(shaders(), p);
   gl::GpuProfiler profiler;
   for (int i = 0; i < 20; ++i) {
-    model.step(1.0 / 60, profiler);
+    model.step(profiler);
     model.flushChecks();
   }
   io::Checkpoint saved;

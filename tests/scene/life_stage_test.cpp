@@ -51,14 +51,14 @@ TEST_F(LifeStage, ShareCodeFollowsTheRulesAndNMakesNewOnes) {
   EXPECT_TRUE(first == life::generateRules({.species = 3, .particleCount = 1024, .size = {256, 144}, .seed = 4}));
   gl::GpuProfiler profiler;
   stage->key('N');
-  stage->step(0.025, profiler);
+  stage->step(profiler);
   const life::Rules next = life::decodeShareCode(stage->shareText());
   EXPECT_FALSE(next == first);
   EXPECT_EQ(next.speciesCount(), 3);
   EXPECT_EQ(next.particleCount, 1024);
   auto again = lifeStage(smallScene(), shaders());
   again->key('N');
-  again->step(0.025, profiler);
+  again->step(profiler);
   EXPECT_EQ(again->shareText(), stage->shareText()) << "N is reproducible too";
 }
 
@@ -86,14 +86,14 @@ TEST_F(LifeStage, DroppedRulesFileLoadsAndABadOneChangesNothing) {
   auto stage = lifeStage(smallScene(), shaders());
   gl::GpuProfiler profiler;
   EXPECT_EQ(stage->dropFile((dir / "good.json").string()), "");
-  stage->step(0.025, profiler);
+  stage->step(profiler);
   EXPECT_TRUE(life::decodeShareCode(stage->shareText()) == dropped);
   EXPECT_EQ(shownText(*stage, "error"), "");
 
   const std::string before = stage->shareText();
   const std::string refused = stage->dropFile((dir / "bad.json").string());  // refused with a reason
   EXPECT_NE(refused.find("bad.json: species[0].forces[1].collisionRadius"), std::string::npos) << refused;
-  stage->step(0.025, profiler);
+  stage->step(profiler);
   EXPECT_EQ(stage->shareText(), before);
   const std::string error = shownText(*stage, "error");
   EXPECT_NE(error.find("not loaded: "), std::string::npos) << error;
@@ -110,7 +110,7 @@ TEST_F(LifeStage, RestartKeepsTheRulesAndDrawsNewPositions) {
   const std::string rules = stage->shareText();
   const std::vector<glm::vec4> start = life->downloadPositions();
   gl::GpuProfiler profiler;
-  stage->step(0.025, profiler);
+  stage->step(profiler);
   stage->restart();
   EXPECT_EQ(stage->shareText(), rules);
   EXPECT_EQ(stage->simTime(), 0.0);

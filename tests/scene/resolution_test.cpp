@@ -133,14 +133,14 @@ TEST_F(Resolution, TheModelBuildsTheRefinedWater) {
 TEST_F(Resolution, AnEditInThePanelRefinesTheLiveParametersAndRebuilds) {
   auto stage = createStage(parseScene(smallDam(), "dam.json"), shaders());
   gl::GpuProfiler profiler;
-  stage->step(1.0 / 60, profiler);
+  stage->step(profiler);
   const long before = countOf(*stage);
   ReadDt dt;
   stage->visitParams(dt);
   SetResolution edit;
   edit.value = 2;
   stage->visitParams(edit);
-  stage->step(1.0 / 60, profiler);  // the step applies it
+  stage->step(profiler);  // the step applies it
   ReadDt after;
   stage->visitParams(after);
   EXPECT_FLOAT_EQ(after.dt, dt.dt / 2);
@@ -148,7 +148,7 @@ TEST_F(Resolution, AnEditInThePanelRefinesTheLiveParametersAndRebuilds) {
   EXPECT_LT(stage->simTime(), 2.0 / 60);  // the new particles start at t = 0: one frame since
   edit.value = 64;                        // 512 substeps is fine, 2^18 times the balls is not for this test's device
   stage->visitParams(edit);
-  stage->step(1.0 / 60, profiler);
+  stage->step(profiler);
   const std::string status = stage->status();
   if (status.find("resolution not changed") != std::string::npos) {  // refused by name, the old run kept
     ReadDt kept;

@@ -41,7 +41,7 @@ TEST_F(Scenes, EveryShippedSceneLoadsBuildsStepsAndRenders) {
     RenderTarget target(32, 16);
     gl::GpuProfiler profiler;
     profiler.beginFrame();  // as the app and the renderer run it: a nested timer scope throws
-    stage->step(1.0 / scene.clip.fps, profiler);
+    stage->step(profiler);
     stage->render(target, profiler);
     profiler.endFrame();
     EXPECT_GT(stage->simTime(), 0.0);
@@ -68,7 +68,7 @@ TEST(SceneFile, UnknownModelAndBadParamsAreReportedAtLoad) {
   const std::string model = sceneError("{\"model\": \"fluidd\"}");
   EXPECT_EQ(model.rfind("s.json: scene.model = 'fluidd' is not a model (known: blank", 0), 0u) << model;
   EXPECT_EQ(sceneError("{\"model\": \"blank\", \"params\": {\"colour\": [1,0,0]}}"),
-            "s.json: params.colour: unknown key (known here: color)");
+            "s.json: params.colour: unknown key (known here: color, frame_seconds)");
 }
 
 // Overrides (--rules) merge into the file's params before they are read: nested groups keep their

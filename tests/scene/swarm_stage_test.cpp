@@ -40,7 +40,7 @@ TEST_F(SwarmStages, CountChangesReallocateAndTooLargeOnesAreRefusedKeepingThePar
   RenderTarget target(32, 16);
   SetInteger more("particles", 7000);
   stage->visitParams(more);
-  stage->step(1.0 / 30.0, profiler);
+  stage->step(profiler);
   EXPECT_EQ(stage->status().rfind("7000 particles", 0), 0u) << stage->status();
 
   GLint64 maxBlock = 0;
@@ -48,7 +48,7 @@ TEST_F(SwarmStages, CountChangesReallocateAndTooLargeOnesAreRefusedKeepingThePar
   if (maxBlock / 16 >= sim::kMaxSwarmParticles) GTEST_SKIP() << "this GPU fits the largest count the UI offers";
   SetInteger tooMany("particles", sim::kMaxSwarmParticles);
   stage->visitParams(tooMany);
-  stage->step(1.0 / 30.0, profiler);
+  stage->step(profiler);
   stage->render(target, profiler);
   const std::string status = stage->status();
   EXPECT_EQ(status.rfind("7000 particles", 0), 0u) << status;
@@ -63,7 +63,7 @@ TEST_F(SwarmStages, DroppedImageRecoloursAndABadOneIsReported) {
   RenderTarget target(32, 16);
   stage->render(target, profiler);
   EXPECT_EQ(stage->status().find('\n'), std::string::npos) << "the preset image loads: " << stage->status();
-  stage->step(1.0 / 30.0, profiler);
+  stage->step(profiler);
   EXPECT_EQ(stage->dropFile((dir / "red.png").string()), "");
   stage->render(target, profiler);
   EXPECT_EQ(stage->simTime(), 0.0) << "a new image restarts from the start positions it colours";
@@ -83,7 +83,7 @@ TEST_F(SwarmStages, LeftButtonAddsTheMouseAttractor) {
   in.cursor = {48, 8};  // NDC (0.5, 0.5)
   in.left = true;
   stage->input(in);
-  for (int i = 0; i < 30; ++i) stage->step(1.0 / 30.0, profiler);
+  for (int i = 0; i < 30; ++i) stage->step(profiler);
   stage->render(target, profiler);
   // Particles gather at the cursor: its pixel neighbourhood is far brighter than average.
   const std::vector<std::uint8_t> px = target.readRgba8();

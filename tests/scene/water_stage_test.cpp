@@ -50,19 +50,19 @@ TEST_F(WaterStage, SwitchingBetweenBallsAndFluidKeepsTheParticles) {
     SCOPED_TRACE(start);
     std::unique_ptr<Stage> stage = small(shaders(), start);
     gl::GpuProfiler profiler;
-    for (int i = 0; i < 3; ++i) stage->step(1.0 / 60, profiler);
+    for (int i = 0; i < 3; ++i) stage->step(profiler);
     const long before = countOf(*stage);
     ASSERT_GT(before, 0);
     const bool wasFluid = isFluid(*stage);
     EXPECT_EQ(wasFluid, std::string(start) == "fluid");
-    stage->key('M');                                               // the next step switches
-    for (int i = 0; i < 10; ++i) stage->step(1.0 / 60, profiler);  // and the other model runs on with them
+    stage->key('M');                                     // the next step switches
+    for (int i = 0; i < 10; ++i) stage->step(profiler);  // and the other model runs on with them
     EXPECT_NE(isFluid(*stage), wasFluid) << stage->status();
     EXPECT_EQ(countOf(*stage), before) << stage->status();
     ChooseModel back;  // and back through the UI's choice
     back.index = wasFluid ? 1 : 0;
     stage->visitParams(back);
-    stage->step(1.0 / 60, profiler);
+    stage->step(profiler);
     EXPECT_EQ(isFluid(*stage), wasFluid) << stage->status();
     EXPECT_EQ(countOf(*stage), before);
     EXPECT_FALSE(stage->divergence().has_value());

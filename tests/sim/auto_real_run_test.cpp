@@ -43,9 +43,8 @@ TEST_F(ResolveAutoRealRun, SwarmPickMeetsItsEnergyDriftAndMovesLessStateThanTheM
   // At the picked step (a row of the study: a whole number of steps per orbit) ...
   const int stepsPerOrbit = int(std::lround(sim::orbitPeriod() / picked.maxDt));
   EXPECT_LE(sim::orbitEnergyError(shaders(), picked.integrator, picked.storage, stepsPerOrbit), bound);
-  // ... and at the step the scene takes at its clip's frame rate.
-  const double frame = 1.0 / scene.clip.fps;
-  const double sceneDt = picked.speed * frame / sim::swarmSubsteps(picked, frame);
+  // ... and at the step the scene takes in its frame.
+  const double sceneDt = sim::swarmFrameSeconds(picked) / sim::swarmSubsteps(picked);
   EXPECT_LE(sceneDt, picked.maxDt * (1 + 1e-6));
   const int sceneSteps = int(std::ceil(sim::orbitPeriod() / sceneDt));
   EXPECT_LE(sim::orbitEnergyError(shaders(), picked.integrator, picked.storage, sceneSteps), bound);
@@ -58,7 +57,7 @@ TEST_F(ResolveAutoRealRun, SwarmPickMeetsItsEnergyDriftAndMovesLessStateThanTheM
   };
   EXPECT_LT(scene.autoChoice->costMsPerSimS, scene.autoChoice->mostAccurateCost);
   EXPECT_LT(bytesPerSimSecond(picked, picked.maxDt), bytesPerSimSecond(best, best.maxDt));
-  const double bestSceneDt = best.speed * frame / sim::swarmSubsteps(best, frame);
+  const double bestSceneDt = sim::swarmFrameSeconds(best) / sim::swarmSubsteps(best);
   EXPECT_LE(bytesPerSimSecond(picked, sceneDt), bytesPerSimSecond(best, bestSceneDt));
 }
 
@@ -72,15 +71,14 @@ TEST_F(ResolveAutoRealRun, RipplesPickMeetsItsPhaseErrorAndUpdatesFewerCellsThan
   const double k = 2 * std::numbers::pi / cells;
   const double pickedCourant = picked.courantTarget * ripples::kCourantLimit2D;
   EXPECT_LE(std::abs(ripples::measuredPhaseRatio(shaders(), 2 * cells, 8, k, 0.0, pickedCourant, 3.0) - 1.0), bound);
-  const double frame = 1.0 / scene.clip.fps;
-  const int substeps = ripples::substepsFor(picked, frame);
-  const double sceneCourant = ripples::courant(picked, frame / substeps);
+  const int substeps = ripples::substepsFor(picked);
+  const double sceneCourant = ripples::courant(picked, picked.frameSeconds / substeps);
   EXPECT_LE(sceneCourant, pickedCourant * (1 + 1e-6));
   EXPECT_LE(std::abs(ripples::measuredPhaseRatio(shaders(), 2 * cells, 8, k, 0.0, sceneCourant, 3.0) - 1.0), bound);
 
   const ripples::Params& best = scene.autoChoice->mostAccurateParams.model<ripples::Params>();
   auto cellUpdatesPerSimSecond = [&](const ripples::Params& p) {
-    return double(p.width) * p.height * ripples::substepsFor(p, frame) / frame;
+    return double(p.width) * p.height * ripples::substepsFor(p) / p.frameSeconds;
   };
   EXPECT_LT(scene.autoChoice->costMsPerSimS, scene.autoChoice->mostAccurateCost);
   EXPECT_LT(cellUpdatesPerSimSecond(picked), cellUpdatesPerSimSecond(best));

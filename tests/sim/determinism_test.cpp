@@ -38,7 +38,7 @@ State run(sim::Model& model, int frames) {
   gl::GpuProfiler profiler;
   for (int f = 0; f < frames; ++f) {
     profiler.beginFrame();
-    model.step(1.0 / 60, profiler);
+    model.step(profiler);
     profiler.endFrame();
   }
   State state;

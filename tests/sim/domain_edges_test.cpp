@@ -72,7 +72,7 @@ TEST_F(DomainEdges, Balls) {
   const std::vector<glm::vec4> pos = edgePoints(p.domainMin, p.domainMax, 2 * p.radius, kOffsets);
   model.upload(pos, std::vector<glm::vec4>(pos.size(), glm::vec4(0.0f)));
   gl::GpuProfiler profiler;
-  for (int f = 0; f < 10; ++f) model.step(1.0 / 60, profiler);
+  for (int f = 0; f < 10; ++f) model.step(profiler);
   expectInside(model.downloadPositions(), p.domainMin, p.domainMax, 1e-5f, pos.size());
   EXPECT_FALSE(model.divergence()) << model.divergence()->message;
 }
@@ -88,7 +88,7 @@ TEST_F(DomainEdges, Fluid) {
   const std::vector<glm::vec4> pos = edgePoints(p.domainMin, p.domainMax, 0.5f * p.h(), kOffsets);
   model.upload(pos, std::vector<glm::vec4>(pos.size(), glm::vec4(0.0f)));
   gl::GpuProfiler profiler;
-  for (int f = 0; f < 10; ++f) model.step(1.0 / 60, profiler);
+  for (int f = 0; f < 10; ++f) model.step(profiler);
   expectInside(model.downloadPositions(), p.domainMin, p.domainMax, 1e-5f, pos.size());
 }
 
@@ -101,10 +101,10 @@ TEST_F(DomainEdges, Life) {
     std::vector<glm::vec4> pos = edgePoints(lo, hi, rules.maxRadius(), {-0.5f, 0.0f, 1e-4f, 0.5f, 3.0f});
     rules.particleCount = int(pos.size());
     for (std::size_t i = 0; i < pos.size(); ++i) pos[i].w = float(i % 3);  // species
-    life::Life model(shaders(), rules);
+    life::Life model(shaders(), rules, {.maxDt = 1.0f / 60});
     model.upload(pos, std::vector<glm::vec4>(pos.size(), glm::vec4(0.0f)));
     gl::GpuProfiler profiler;
-    for (int f = 0; f < 30; ++f) model.step(1.0 / 60, profiler);
+    for (int f = 0; f < 30; ++f) model.step(profiler);
     expectInside(model.downloadPositions(), lo, hi, 1e-3f, pos.size());
   }
 }

@@ -52,10 +52,10 @@ class Balls final : public sim::Model, public water::ParticleWater {
 
   Params& params() { return m_params; }  // engine edits apply at the next step
   const Params& params() const { return m_params; }
-  // sim::Model. A frame is params().substeps steps of params().dt (frameSeconds is not used).
+  // sim::Model. A frame is params().substeps steps of params().dt.
   void reset() override;  // particles from the parameters, t = 0
-  void step(double frameSeconds, gl::GpuProfiler& profiler) override;
-  void step(gl::GpuProfiler& profiler) { step(0.0, profiler); }  // the same frame
+  void step(gl::GpuProfiler& profiler) override;
+  double frameSeconds() const override { return m_params.substeps * double(m_params.dt); }
   double time() const override { return m_time; }
   std::size_t count() const override { return m_count; }  // sim::Model and water::ParticleWater
   std::string status() const override;                    // counts and radius (and a refused obstacle edit above them)

@@ -67,7 +67,7 @@ void Balls::stepOnce(gl::GpuProfiler* profiler) {
   m_time += m_params.dt;
 }
 
-void Balls::step(double, gl::GpuProfiler& profiler) {
+void Balls::step(gl::GpuProfiler& profiler) {
   for (int i = 0; i < m_params.substeps; ++i) stepOnce(&profiler);
   watch();
 }

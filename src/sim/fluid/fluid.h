@@ -45,9 +45,10 @@ class Fluid final : public sim::Model, public water::ParticleWater {
 
   Params& params() { return m_params; }  // solver edits apply at the next step; "particles" edits at reset()
   const Params& params() const { return m_params; }
-  // sim::Model. A frame is water.substeps steps of water.dt (frameSeconds is not used).
+  // sim::Model. A frame is water.substeps steps of water.dt.
   void reset() override;
-  void step(double frameSeconds, gl::GpuProfiler& profiler) override;
+  void step(gl::GpuProfiler& profiler) override;
+  double frameSeconds() const override { return m_params.substeps * double(m_params.dt); }
   double time() const override { return m_time; }
   std::size_t count() const override { return m_count; }  // sim::Model and water::ParticleWater
   std::string status() const override;

@@ -44,7 +44,7 @@ void Fluid::stepOnce(gl::GpuProfiler* profiler) {
   ++m_steps;
 }
 
-void Fluid::step(double, gl::GpuProfiler& profiler) {
+void Fluid::step(gl::GpuProfiler& profiler) {
   for (int i = 0; i < m_params.substeps; ++i) stepOnce(&profiler);
   watch();
 }

@@ -283,10 +283,10 @@ void Life::stepOnce(float dt) {
   ++m_steps;
 }
 
-void Life::step(double frameSeconds, gl::GpuProfiler& profiler) {
+void Life::step(gl::GpuProfiler& profiler) {
   {
     auto scope = profiler.scope("life.step");
-    stepOnce(float(std::min(double(m_params.maxDt), frameSeconds)));
+    stepOnce(m_params.maxDt);
   }
   watch();
 }
@@ -331,7 +331,7 @@ void Life::resume(const sim::StateStamp& good) {
   m_time = good.time;
   m_steps = good.steps;
   m_needAccel = true;                                 // Verlet re-evaluates a(x) for the restored state
-  m_params.maxDt = std::max(0.5f * m_lastDt, 1e-4f);  // each frame steps min(maxDt, frame): halve what ran
+  m_params.maxDt = std::max(0.5f * m_lastDt, 1e-4f);  // each frame is one step of maxDt: halve what ran
   m_lastDt = m_params.maxDt;
 }
 

@@ -55,10 +55,11 @@ class Life final : public sim::Model {
   // respawned when the count, box or species changed or `respawn` is set.
   void setRules(const Rules& rules, bool respawn = true);
 
-  // sim::Model. A frame is one step of min(params().maxDt, frameSeconds).
+  // sim::Model. A frame is one generation: one step of params().maxDt.
   void reset() override { respawn(0); }  // the seed's initial particles
   void respawn(std::uint32_t stream);    // t = 0 with spawnParticles(rules, stream): same rules, other particles
-  void step(double frameSeconds, gl::GpuProfiler& profiler) override;
+  void step(gl::GpuProfiler& profiler) override;
+  double frameSeconds() const override { return m_params.maxDt; }
   double time() const override { return m_time; }
   std::size_t count() const override { return m_count; }
   std::string status() const override;

@@ -17,7 +17,7 @@ constexpr std::array<const char*, 2> kStorageNames = {"fp32", "fp16"};
 struct Params {
   Integrator integrator = Integrator::Euler;  // euler: the article's symplectic Euler
   Storage storage = Storage::Fp32;            // fp16: packHalf2x16 positions and velocities, half the bytes
-  float maxDt = 0.025f;                       // s: dt = min(maxDt, frame seconds), one step per frame
+  float maxDt = 0.025f;                       // s: one step of this per frame (a generation)
   float pushStrength = 20.0f;                 // mouse brush: velocity added per unit of drag (the article's 20)
   bool deterministic = true;                  // bit-identical runs: the grid orders each cell by index
 };
@@ -29,7 +29,7 @@ inline void visit(ParamVisitor& v, Params& p) {
             "fp32: 32 B of state per particle; fp16 (packHalf2x16, computed in fp32): 16 B, positions and velocities "
             "rounded to 11 significant bits every step (docs/ACCURACY.md, life-precision)"},
            p.storage, kStorageNames);
-  v.real({"max_dt", "Max dt", "s; each frame advances min(max dt, frame time) in one step"}, p.maxDt, 1e-4f, 0.1f);
+  v.real({"max_dt", "Max dt", "s; each frame is one step of this (recovery halves it)"}, p.maxDt, 1e-4f, 0.1f);
   v.real({"push_strength", "Push strength", "mouse brush: velocity per unit of drag"}, p.pushStrength, 0.0f, 200.0f);
   v.flag({"deterministic", "Deterministic", "bit-identical runs: the grid orders each cell's particles by index"},
          p.deterministic);

@@ -133,7 +133,8 @@ void Ripples::stepOnce(double dt) {
   m_lastDt = dt;
 }
 
-void Ripples::step(double frameSeconds, gl::GpuProfiler& profiler) {
+void Ripples::step(gl::GpuProfiler& profiler) {
+  const double frameSeconds = m_params.frameSeconds;
   if (m_params.width != m_width || m_params.height != m_height) allocate();
   if (m_params.rainRate > 0) {
     m_rainDebt += m_params.rainRate * frameSeconds;
@@ -141,7 +142,7 @@ void Ripples::step(double frameSeconds, gl::GpuProfiler& profiler) {
     for (; m_rainDebt >= 1.0; m_rainDebt -= 1.0)
       touch(u(m_rng), u(m_rng), m_params.touchRadius * 0.5f, m_params.touchDepth * 0.5f);
   }
-  const int substeps = substepsFor(m_params, frameSeconds);
+  const int substeps = substepsFor(m_params);
   const bool wasStable = m_lastCourant <= kCourantLimit2D;
   {
     auto scope = profiler.scope("ripples.step");

@@ -25,9 +25,10 @@ class Ripples final : public sim::Model {
   Params& params() { return m_params; }  // edits apply at the next step (size changes re-allocate)
   const Params& params() const { return m_params; }
 
-  // sim::Model. A frame is substepsFor() steps (and the rain's drops).
+  // sim::Model. A frame is substepsFor() steps of params().frameSeconds in all (and the rain's drops).
   void reset() override;  // flat water at rest
-  void step(double frameSeconds, gl::GpuProfiler& profiler) override;
+  void step(gl::GpuProfiler& profiler) override;
+  double frameSeconds() const override { return m_params.frameSeconds; }
   double time() const override { return m_time; }
   std::size_t count() const override { return std::size_t(m_width) * std::size_t(m_height); }  // cells
   std::string status() const override;                    // one line: size, substeps, C, warnings

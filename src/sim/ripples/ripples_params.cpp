@@ -8,6 +8,7 @@ void visit(ParamVisitor& v, Params& p) {
   v.choice({"rule", "Rule", "wave: wave equation; seed: the original spring + tension model"}, p.rule, kRuleNames);
   v.integer({"width", "Width", "cells (re-allocates)"}, p.width, 16, 4096);
   v.integer({"height", "Height", "cells (re-allocates)"}, p.height, 16, 4096);
+  v.realDouble({"frame_seconds", "Frame seconds", "simulated seconds per frame"}, p.frameSeconds, 1e-4f, 1.0f);
   v.real({"cell_size", "Cell size", "dx, metres"}, p.cellSize, 1e-4f, 10.0f);
   v.real({"wave_speed", "Wave speed", "c, m/s (wave rule)"}, p.waveSpeed, 0.0f, 100.0f);
   v.real({"vel_damping", "Velocity damping", "1/s"}, p.velDamping, 0.0f, 50.0f);
@@ -24,7 +25,7 @@ void visit(ParamVisitor& v, Params& p) {
     v.real({"elasticity", "Elasticity k", "spring toward rest height"}, p.seedElasticity, 0.0f, 10.0f);
     v.real({"propagation", "Propagation c", "pull toward the neighbour mean"}, p.seedPropagation, 0.0f, 200.0f);
     v.real({"friction", "Friction", "velocity factor per step"}, p.seedFriction, 0.5f, 1.0f);
-    v.real({"time_scale", "Time scale", "seed dt = time scale x frame seconds"}, p.seedTimeScale, 0.1f, 100.0f);
+    v.real({"time_scale", "Time scale", "seed dt = time scale x the step's dt"}, p.seedTimeScale, 0.1f, 100.0f);
     v.endGroup();
   }
   if (v.beginGroup({"touch", "Touch", "mouse and drops: cosine bump"})) {
@@ -51,10 +52,10 @@ glm::vec3 sphereCentre(const Params& p, double t) {
           float(0.5 * height + p.sphereOrbit * width * std::sin(angle)), p.sphereHeight};
 }
 
-int substepsFor(const Params& p, double frameSeconds) {
+int substepsFor(const Params& p) {
   if (!p.autoSubsteps || p.rule == Rule::Seed) return p.substeps;
   const double limit = p.courantTarget * kCourantLimit2D;
-  const double perFrame = p.waveSpeed * frameSeconds / p.cellSize;
+  const double perFrame = p.waveSpeed * p.frameSeconds / p.cellSize;
   return std::max(1, int(std::ceil(perFrame / limit - 1e-9)));
 }
 

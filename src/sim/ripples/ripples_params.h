@@ -17,11 +17,12 @@ constexpr float kCourantLimit2D = 0.70710678f;  // 1/√2: von Neumann limit of 
 
 struct Params {
   Rule rule = Rule::Wave;
-  int width = 512, height = 512;  // cells
-  float cellSize = 0.02f;         // dx, m
-  float waveSpeed = 2.0f;         // c, m/s (wave rule)
-  float velDamping = 0.3f;        // 1/s: v *= max(0, 1 - velDamping·dt)
-  float posDamping = 0.0f;        // 1/s: h += (mean4 - h)·min(posDamping·dt, 1)
+  int width = 512, height = 512;   // cells
+  double frameSeconds = 1.0 / 30;  // simulated s per frame
+  float cellSize = 0.02f;          // dx, m
+  float waveSpeed = 2.0f;          // c, m/s (wave rule)
+  float velDamping = 0.3f;         // 1/s: v *= max(0, 1 - velDamping·dt)
+  float posDamping = 0.0f;         // 1/s: h += (mean4 - h)·min(posDamping·dt, 1)
   Boundary boundary = Boundary::Reflecting;
   int spongeCells = 24;         // absorbing boundary width, cells
   float spongeDamping = 20.0f;  // 1/s at the outermost cell
@@ -32,7 +33,7 @@ struct Params {
   float seedElasticity = 0.7f;    // k: spring toward the rest height
   float seedPropagation = 20.0f;  // c: pull toward the mean of the 4 neighbours
   float seedFriction = 0.995f;    // velocity factor per step
-  float seedTimeScale = 10.0f;    // seed: dt = 10·frameSeconds
+  float seedTimeScale = 10.0f;    // seed: its dt = 10 x the step's dt
   // Interaction (mouse, drops): the seed's cosine bump.
   float touchRadius = 0.03f;  // fraction of the grid width
   float touchDepth = -0.04f;  // m; dragging uses a tenth of it per frame
@@ -54,7 +55,7 @@ inline float courant(const Params& p, double dt) { return float(p.waveSpeed * dt
 // Centre of the sphere at time t: metres from the grid corner, z above the rest surface.
 glm::vec3 sphereCentre(const Params& p, double t);
 
-// Substeps per frame: fixed, or the fewest that keep C under courantTarget·1/√2.
-int substepsFor(const Params& p, double frameSeconds);
+// Substeps per frame (of p.frameSeconds): fixed, or the fewest that keep C under courantTarget·1/√2.
+int substepsFor(const Params& p);
 
 }  // namespace tidepool::ripples

@@ -83,7 +83,10 @@ void visit(ParamVisitor& v, SwarmParams& p) {
            kStorageNames);
   v.choice({"integrator", "Integrator", "explicit Euler, symplectic Euler (the seed's), velocity Verlet, RK4"},
            p.integrator, kIntegratorNames);
-  v.real({"speed", "Speed", "simulated seconds per real second"}, p.speed, 0.0f, 4.0f);
+  v.realDouble(
+      {"frame_seconds", "Frame seconds", "s one frame stands for; simulated time advances speed x this per frame"},
+      p.frameSeconds, 1e-4f, 1.0f);
+  v.real({"speed", "Speed", "simulated seconds per frame second (slow motion below 1)"}, p.speed, 0.0f, 4.0f);
   v.integer({"substeps", "Substeps", "integrator steps per frame"}, p.substeps, 1, kMaxSubsteps);
   v.real({"max_dt", "Max step", "s per integrator step at most, by adding substeps (0: off); method auto sets it"},
          p.maxDt, 0.0f, 1.0f);
@@ -190,11 +193,11 @@ double Swarm::speedBound() const {
   return kSpeedBoundFactor * std::sqrt(fall);
 }
 
-void Swarm::step(double frameSeconds, gl::GpuProfiler& profiler) {
+void Swarm::step(gl::GpuProfiler& profiler) {
   {
     auto scope = profiler.scope("swarm.step");
-    const int substeps = swarmSubsteps(m_params, frameSeconds);
-    const double dt = double(m_params.speed) * frameSeconds / substeps;
+    const int substeps = swarmSubsteps(m_params);
+    const double dt = swarmFrameSeconds(m_params) / substeps;
     for (int s = 0; s < substeps; ++s) stepOnce(dt);
   }
   watch();

@@ -5,7 +5,7 @@
 //
 //   Swarm swarm(shaders, params);   // allocates params.particles and scatters them (reset)
 //   swarm.setAspect(16.0 / 9.0);    // world = ndc * (aspect, 1)
-//   swarm.step(1.0 / 60, profiler); // one frame: swarmSubsteps() steps of speed * frame, then the watch
+//   swarm.step(profiler);           // one frame: swarmSubsteps() steps of speed * frame_seconds, then the watch
 //   swarm.stepOnce(1.0 / 120.0);    // or one integrator step of simulated time ...
 //   swarm.watch();                  // ... and the divergence watch once per frame (non-blocking)
 //
@@ -45,9 +45,10 @@ class Swarm final : public Model {
   SwarmParams& params() { return m_params; }  // read at the next step; count/storage at reset()
   const SwarmParams& params() const { return m_params; }
 
-  // sim::Model. A frame is swarmSubsteps() steps of speed * frameSeconds in all.
+  // sim::Model. A frame is swarmSubsteps() steps of speed * params().frameSeconds in all.
   void reset() override;  // (re)allocates if needed, scatters uniformly, v = 0, t = 0
-  void step(double frameSeconds, gl::GpuProfiler& profiler) override;
+  void step(gl::GpuProfiler& profiler) override;
+  double frameSeconds() const override { return swarmFrameSeconds(m_params); }
   double time() const override { return m_time; }         // simulated seconds since reset
   std::size_t count() const override { return m_count; }  // particles
   std::string status() const override;                    // count, storage, integrator, state size

@@ -29,23 +29,27 @@ struct SwarmParams {
   int particles = 1 << 20;          // count; changing it re-allocates
   Storage storage = Storage::Fp32;  // changing it resets
   Integrator integrator = Integrator::SymplecticEuler;
-  float speed = 0.5f;             // simulated seconds per real second
-  int substeps = 1;               // integrator steps per frame (at least)
-  float maxDt = 0.0f;             // s: 0 none; else more substeps until one step is at most this ("method": "auto")
-  float gravity = 0.3f;           // world units / s^2, downwards (seed: 3 x 0.1)
-  float friction = 0.06f;         // 1/s: v *= exp(-friction dt) (seed: 0.9995 per 1/120 s)
-  float epsilon = 0.01f;          // world units^2: softening of the 1/r force
-  bool bounce = true;             // mirror walls at the image border, else free flight
-  Preset preset = Preset::Orbit;  // animated attractors
-  float mouseStrength = 7.0f;     // strength of the mouse attractor (left button)
-  int seed = 1;                   // initial positions (uniform in the box)
+  double frameSeconds = 1.0 / 30;  // s one frame stands for (the hue cycle's clock); x speed is simulated
+  float speed = 0.5f;              // simulated seconds per frame second: a frame is speed x frameSeconds
+  int substeps = 1;                // integrator steps per frame (at least)
+  float maxDt = 0.0f;              // s: 0 none; else more substeps until one step is at most this ("method": "auto")
+  float gravity = 0.3f;            // world units / s^2, downwards (seed: 3 x 0.1)
+  float friction = 0.06f;          // 1/s: v *= exp(-friction dt) (seed: 0.9995 per 1/120 s)
+  float epsilon = 0.01f;           // world units^2: softening of the 1/r force
+  bool bounce = true;              // mirror walls at the image border, else free flight
+  Preset preset = Preset::Orbit;   // animated attractors
+  float mouseStrength = 7.0f;      // strength of the mouse attractor (left button)
+  int seed = 1;                    // initial positions (uniform in the box)
 };
 
 void visit(ParamVisitor& v, SwarmParams& p);
 
-// Integrator steps in a frame of `frameSeconds` real seconds: substeps, or more where maxDt asks.
-inline int swarmSubsteps(const SwarmParams& p, double frameSeconds) {
-  const double simSeconds = double(p.speed) * frameSeconds;
+// Simulated seconds of one frame: speed x frameSeconds.
+inline double swarmFrameSeconds(const SwarmParams& p) { return double(p.speed) * p.frameSeconds; }
+
+// Integrator steps in a frame: substeps, or more where maxDt asks.
+inline int swarmSubsteps(const SwarmParams& p) {
+  const double simSeconds = swarmFrameSeconds(p);
   const int needed = p.maxDt > 0 ? int(std::ceil(simSeconds / p.maxDt - 1e-9)) : 1;
   return std::max(p.substeps, needed);
 }

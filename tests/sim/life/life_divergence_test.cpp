@@ -53,7 +53,7 @@ std::vector<std::array<float, 5>> stateSet(const Life& model) {
 
 void runFrames(Life& model, int frames, gl::GpuProfiler& profiler) {
   for (int i = 0; i < frames && !model.divergence(); ++i) {
-    model.step(1.0, profiler);            // dt = maxDt
+    model.step(profiler);                 // dt = maxDt
     if (i % 8 == 7) model.flushChecks();  // keeps the test short; the app never blocks
   }
   model.flushChecks();
@@ -92,7 +92,7 @@ TEST_F(LifeTest, BlowUpIsReportedAndRecoveredWithHalfTheStep) {
   const double goodTime = model.time();
   EXPECT_LT(goodTime, failedAt) << "resumes from a state judged good, before the bad one";
   EXPECT_GE(goodTime, 40 * 0.025 - 1e-6) << "the last good state is the newest one judged good";
-  while (twin.time() < goodTime - 1e-9) twin.step(1.0, profiler);
+  while (twin.time() < goodTime - 1e-9) twin.step(profiler);
   ASSERT_NEAR(twin.time(), goodTime, 1e-9);
   EXPECT_EQ(stateSet(model), stateSet(twin)) << "the restored state is the good one, bit for bit";
 

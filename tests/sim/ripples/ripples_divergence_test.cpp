@@ -17,9 +17,10 @@ namespace {
 
 using RipplesTest = test::GlTest;
 
-Params unstableAt(double courantNumber, double frame) {
+Params unstableAt(double courantNumber) {
   Params p = periodicWaveGrid(32, 32);
-  p.waveSpeed = float(courantNumber * p.cellSize / frame);  // one step per frame at this C
+  p.frameSeconds = 1.0 / 60;
+  p.waveSpeed = float(courantNumber * p.cellSize / p.frameSeconds);  // one step per frame at this C
   return p;
 }
 
@@ -34,25 +35,23 @@ void seedNoise(Ripples& r) {
 }  // namespace
 
 TEST_F(RipplesTest, StableRunsAreNeverFlagged) {
-  const double frame = 1.0 / 60;
-  Ripples r(shaders(), unstableAt(0.6, frame));
+  Ripples r(shaders(), unstableAt(0.6));
   seedNoise(r);
   gl::GpuProfiler profiler;
-  for (int i = 0; i < 200; ++i) r.step(frame, profiler);
+  for (int i = 0; i < 200; ++i) r.step(profiler);
   r.flushChecks();
   EXPECT_FALSE(r.divergence().has_value());
 }
 
 TEST_F(RipplesTest, BlowUpIsReportedAndTheLastGoodStateRestored) {
-  const double frame = 1.0 / 60;
-  const Params p = unstableAt(0.75, frame);
+  const Params p = unstableAt(0.75);
   Ripples r(shaders(), p), twin(shaders(), p);  // the twin replays the run to check the restored state
   seedNoise(r);
   seedNoise(twin);
   gl::GpuProfiler profiler;
   int frames = 0;
   for (; frames < 2000 && !r.divergence(); ++frames) {
-    r.step(frame, profiler);
+    r.step(profiler);
     if (frames % 50 == 0) r.flushChecks();  // keeps the test short; the app never blocks
   }
   r.flushChecks();
@@ -70,14 +69,14 @@ TEST_F(RipplesTest, BlowUpIsReportedAndTheLastGoodStateRestored) {
   const double goodTime = r.time();
   EXPECT_LT(goodTime, failedAt) << "the good state is older than the failed check";
   // The restored state is exactly the twin's at the same time, and it is sane.
-  while (twin.time() < goodTime - 1e-9) twin.step(frame, profiler);
+  while (twin.time() < goodTime - 1e-9) twin.step(profiler);
   ASSERT_NEAR(twin.time(), goodTime, 1e-9);
   const std::vector<float> restored = r.download(), replay = twin.download();
   ASSERT_EQ(restored, replay);
   for (std::size_t i = 0; i < restored.size(); i += 2) ASSERT_LT(std::abs(restored[i]), r.heightBound());
 
   // With half the time step (C = 0.375) the run goes on without blowing up.
-  for (int i = 0; i < 300; ++i) r.step(frame, profiler);
+  for (int i = 0; i < 300; ++i) r.step(profiler);
   r.flushChecks();
   EXPECT_FALSE(r.divergence().has_value());
 }

@@ -107,25 +107,27 @@ TEST(RipplesParams, AutoSubstepsKeepTheCourantNumberUnderTheTarget) {
   p.cellSize = 0.02f;
   p.courantTarget = 0.5f;
   for (double frame : {1.0 / 30, 1.0 / 60, 1.0 / 144, 0.001}) {
-    const int n = substepsFor(p, frame);
+    p.frameSeconds = frame;
+    const int n = substepsFor(p);
     EXPECT_LE(courant(p, frame / n), 0.5f * kCourantLimit2D + 1e-6f);
     if (n > 1) EXPECT_GT(courant(p, frame / (n - 1)), 0.5f * kCourantLimit2D) << "not the fewest substeps";
   }
   p.autoSubsteps = false;
   p.substeps = 3;
-  EXPECT_EQ(substepsFor(p, 1.0 / 60), 3);
+  EXPECT_EQ(substepsFor(p), 3);
 }
 
 TEST_F(RipplesTest, CourantAboveTheLimitIsWarnedInLogAndStatus) {
   Params p = small(Rule::Wave, Boundary::Reflecting);
   p.substeps = 1;
+  p.frameSeconds = 0.8 * p.cellSize / p.waveSpeed;  // C = 0.8 > 0.707
   Ripples r(shaders(), p);
   std::vector<std::string> warnings;
   log::setSink([&](log::Level l, const std::string& m) {
     if (l == log::Level::Warn) warnings.push_back(m);
   });
   gl::GpuProfiler profiler;
-  r.step(0.8 * p.cellSize / p.waveSpeed, profiler);  // C = 0.8 > 0.707
+  r.step(profiler);
   log::setSink(nullptr);
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_NE(warnings[0].find("exceeds the 2D stability limit"), std::string::npos);

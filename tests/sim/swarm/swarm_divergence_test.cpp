@@ -116,9 +116,10 @@ TEST_F(SwarmTest, WithoutAGoodStateRecoveryIsRefused) {
 
 TEST(SwarmDivergenceCli, HeadlessRunExitsNonZeroWithTheMessage) {
   test::TempDir dir;
-  // One simulated second per step from rest around an unsoftened attractor: particles that
-  // come close to it are kicked to a thousand units/s (12x the bound).
-  dir.write("boom.json", R"({"model": "swarm", "params": {"particles": 4096, "epsilon": 0, "speed": 4,
+  // One simulated second per step (4 x 0.25 s) from rest around an unsoftened attractor:
+  // particles that come close to it are kicked to a thousand units/s (12x the bound).
+  dir.write("boom.json",
+            R"({"model": "swarm", "params": {"particles": 4096, "epsilon": 0, "speed": 4, "frame_seconds": 0.25,
       "preset": "central_attractive"}, "clip": {"frames": 24, "fps": 4, "width": 32, "height": 32}})");
   const std::string last = test::expectRenderFails((dir / "boom.json").string(), (dir / "f").string(),
                                                    "tidepool: error: swarm diverged by t = ");
