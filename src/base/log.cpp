@@ -23,7 +23,6 @@ void setLevel(Level level) {
   std::lock_guard lock(g_mutex);
   g_level = level;
 }
-void setQuiet(bool quiet) { setLevel(quiet ? Level::Warn : Level::Info); }
 void setSink(Sink sink) {
   std::lock_guard lock(g_mutex);
   g_sink = std::move(sink);

@@ -9,7 +9,6 @@ namespace tidepool::log {
 enum class Level { Debug, Info, Warn, Error };
 
 void setLevel(Level level);  // messages below it are dropped (default Info)
-void setQuiet(bool quiet);   // drop everything below Warn (for scripts and tests)
 void write(Level level, const std::string& message);
 using Sink = std::function<void(Level, const std::string&)>;
 void setSink(Sink sink);  // extra receiver (e.g. the UI log panel); nullptr removes it

@@ -12,16 +12,6 @@ Backend parseBackend(std::string_view name) {
   throw Error("unknown backend '" + std::string(name) + "': expected auto, egl, osmesa or window");
 }
 
-const char* backendName(Backend backend) {
-  switch (backend) {
-    case Backend::Auto: return "auto";
-    case Backend::Egl: return "egl";
-    case Backend::OsMesa: return "osmesa";
-    case Backend::Window: return "window";
-  }
-  return "?";
-}
-
 std::unique_ptr<Context> createHeadlessContext(const ContextOptions& options) {
   switch (options.backend) {
     case Backend::Egl: return createEglContext(options);

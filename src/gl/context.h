@@ -13,7 +13,6 @@ namespace tidepool::gl {
 
 enum class Backend { Auto, Egl, OsMesa, Window };
 Backend parseBackend(std::string_view name);  // "auto" | "egl" | "osmesa" | "window"; throws Error
-const char* backendName(Backend backend);
 
 class Context {
  public:

@@ -1,6 +1,7 @@
 #include "gl/kernel_check.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <regex>
 
@@ -9,6 +10,24 @@
 namespace tidepool::gl {
 namespace {
 
+// Each active resource of `interface` (GL_UNIFORM, GL_SHADER_STORAGE_BLOCK): f(name, values of props).
+template <std::size_t N, class F>
+void forEachResource(GLuint program, GLenum interface, const std::array<GLenum, N>& props, F&& f) {
+  GLint count = 0;
+  glGetProgramInterfaceiv(program, interface, GL_ACTIVE_RESOURCES, &count);
+  for (GLint i = 0; i < count; ++i) {
+    std::array<GLint, N> values{};
+    glGetProgramResourceiv(program, interface, GLuint(i), GLsizei(N), props.data(), GLsizei(N), nullptr, values.data());
+    GLint length = 0;
+    const GLenum nameLength = GL_NAME_LENGTH;
+    glGetProgramResourceiv(program, interface, GLuint(i), 1, &nameLength, 1, nullptr, &length);
+    std::string name(std::size_t(std::max(length, 1)), '\0');
+    glGetProgramResourceName(program, interface, GLuint(i), length, nullptr, name.data());
+    name.resize(name.find('\0') == std::string::npos ? name.size() : name.find('\0'));
+    f(name, values);
+  }
+}
+
 struct ActiveUniform {
   std::string name;  // "[0]" of an array dropped
   GLenum type;
@@ -16,20 +35,12 @@ struct ActiveUniform {
 
 // The program's own uniforms: not members of uniform blocks, not gl_* built-ins.
 std::vector<ActiveUniform> activeUniforms(GLuint program) {
-  GLint count = 0;
-  glGetProgramInterfaceiv(program, GL_UNIFORM, GL_ACTIVE_RESOURCES, &count);
   std::vector<ActiveUniform> result;
-  for (GLint i = 0; i < count; ++i) {
-    const GLenum props[] = {GL_BLOCK_INDEX, GL_TYPE, GL_NAME_LENGTH};
-    GLint values[3] = {};
-    glGetProgramResourceiv(program, GL_UNIFORM, GLuint(i), 3, props, 3, nullptr, values);
-    std::string name(std::size_t(std::max(values[2], 1)), '\0');
-    glGetProgramResourceName(program, GL_UNIFORM, GLuint(i), values[2], nullptr, name.data());
-    name.resize(name.find('\0') == std::string::npos ? name.size() : name.find('\0'));
-    if (values[0] != -1 || name.starts_with("gl_")) continue;
+  forEachResource(program, GL_UNIFORM, std::array<GLenum, 2>{GL_BLOCK_INDEX, GL_TYPE}, [&](std::string name, auto v) {
+    if (v[0] != -1 || name.starts_with("gl_")) return;
     if (name.ends_with("[0]")) name.resize(name.size() - 3);
-    result.push_back({name, GLenum(values[1])});
-  }
+    result.push_back({name, GLenum(v[1])});
+  });
   return result;
 }
 
@@ -39,18 +50,11 @@ struct StorageBlock {
 };
 
 std::vector<StorageBlock> storageBlocks(GLuint program) {
-  GLint count = 0;
-  glGetProgramInterfaceiv(program, GL_SHADER_STORAGE_BLOCK, GL_ACTIVE_RESOURCES, &count);
   std::vector<StorageBlock> result;
-  for (GLint i = 0; i < count; ++i) {
-    const GLenum props[] = {GL_BUFFER_BINDING, GL_NAME_LENGTH};
-    GLint values[2] = {};
-    glGetProgramResourceiv(program, GL_SHADER_STORAGE_BLOCK, GLuint(i), 2, props, 2, nullptr, values);
-    std::string name(std::size_t(std::max(values[1], 1)), '\0');
-    glGetProgramResourceName(program, GL_SHADER_STORAGE_BLOCK, GLuint(i), values[1], nullptr, name.data());
-    name.resize(name.find('\0') == std::string::npos ? name.size() : name.find('\0'));
-    result.push_back({name, GLuint(values[0])});
-  }
+  forEachResource(program, GL_SHADER_STORAGE_BLOCK, std::array<GLenum, 1>{GL_BUFFER_BINDING},
+                  [&](const std::string& name, auto v) {
+                    result.push_back({name, GLuint(v[0])});
+                  });
   return result;
 }
 

@@ -11,9 +11,9 @@
 #include <random>
 #include <regex>
 
+#include "reference/surface_reference.h"
 #include "render/marching_cubes.h"
 #include "render/particle_exporter.h"
-#include "reference/surface_reference.h"
 #include "support/error_of.h"
 #include "support/gl_test.h"
 #include "support/one_line_error.h"

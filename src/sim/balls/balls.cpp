@@ -197,17 +197,6 @@ void Balls::upload(const std::vector<glm::vec4>& pos, const std::vector<glm::vec
   restartWatch();  // a new state: nothing judged yet
 }
 
-void Balls::uploadAccelerations(const std::vector<glm::vec4>& acc) {
-  if (acc.size() != m_count) throw Error("balls: upload needs an acceleration per ball");
-  accelerations().upload(acc.data(), acc.size() * sizeof(glm::vec4));
-  m_accValid = true;
-}
-
-std::vector<glm::vec4> Balls::downloadAccelerations() const {
-  if (m_acc.size() < m_count * sizeof(glm::vec4)) return std::vector<glm::vec4>(m_count, glm::vec4(0.0f));
-  return m_acc.read<glm::vec4>(m_count);
-}
-
 gl::Buffer& Balls::accelerations() {
   const std::size_t bytes = std::max<std::size_t>(m_capacity, 1) * sizeof(glm::vec4);
   if (m_acc.size() != bytes) {

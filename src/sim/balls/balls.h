@@ -90,10 +90,6 @@ class Balls final : public sim::Model, public water::ParticleWater {
   void trackOrder(bool on) { m_trackOrder = on; }
   // Windows the last collide ran in: 1 while the vec4 arrays fit one storage block (gl/window.h).
   std::size_t collideWindows() const { return m_collideWindows; }
-  // Tests: velocity Verlet's a(x), part of its state (it was evaluated with the half-step velocity).
-  // Zeros where none were kept (Euler keeps none).
-  std::vector<glm::vec4> downloadAccelerations() const;
-  void uploadAccelerations(const std::vector<glm::vec4>& acc);
   std::vector<GLuint> lastOrder() const;  // lastOrder()[k] = index before the step of ball k after it
 
  private:

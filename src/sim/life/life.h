@@ -97,7 +97,6 @@ class Life final : public sim::Model {
 
   // The divergence watch (sim::Model): recover() goes back to the last good state with half the last dt.
   double speedBound() const;  // world units/s: faster means more than 10 grid cells (>= max radius) per step
-  float lastDt() const { return m_lastDt; }  // s, of the last step
 
  private:
   // The divergence watch (sim::Model): NaN particles, speed above speedBound().

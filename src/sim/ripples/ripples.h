@@ -45,8 +45,6 @@ class Ripples final : public sim::Model {
   std::vector<float> download() const;                       // 2 floats per cell
   bool sphereActive() const { return m_params.sphere; }
   glm::vec3 sphereCentre() const { return ripples::sphereCentre(m_params, m_time); }  // m, see Params
-  int lastSubsteps() const { return m_lastSubsteps; }
-  float lastCourant() const { return m_lastCourant; }  // wave rule, of the last step
 
   // The divergence watch (sim::Model): recover() goes back to the last good state with half the time step.
   double heightBound() const;                               // |h| above this counts as a blow-up (m, or seed units)

@@ -77,7 +77,6 @@ class Swarm final : public Model {
   // move in the static field of the attractors now (preset, extra and mouse at full strength):
   // sqrt(S·ln((D² + ε')/ε') + 2·g·2), S = Σ|s_k|, D = the box diagonal, ε' = max(ε, 10⁻⁶).
   double speedBound() const;
-  double lastDt() const { return m_lastDt; }  // s, of the last step
 
  private:
   // The divergence watch (sim::Model): NaN particles, speed above speedBound().
