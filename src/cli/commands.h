@@ -18,6 +18,7 @@ Command addBench(CLI::App& app);
 Command addSweep(CLI::App& app);
 Command addValidate(CLI::App& app);
 Command addSoak(CLI::App& app);
+Command addCheckResume(CLI::App& app);
 
 // "1280x720" -> width, height (throws CLI::ValidationError style Error otherwise).
 void parseSize(const std::string& text, int& width, int& height);

@@ -12,14 +12,16 @@ int main(int argc, char** argv) {
   CLI::App app{"tidepool: GPU particle and water simulations (OpenGL 4.3 compute shaders)", "tidepool"};
   app.set_version_flag("--version", "tidepool 0.1.0");
   app.require_subcommand(1);
-  const cli::Command commands[] = {cli::addRun(app),   cli::addRender(app),   cli::addInfo(app), cli::addBench(app),
-                                   cli::addSweep(app), cli::addValidate(app), cli::addSoak(app)};
+  const cli::Command commands[] = {cli::addRun(app),   cli::addRender(app),     cli::addInfo(app),
+                                   cli::addBench(app), cli::addSweep(app),      cli::addValidate(app),
+                                   cli::addSoak(app),  cli::addCheckResume(app)};
   if (argc > 1 && argv[1][0] != '-') {
     bool known = false;
     for (const cli::Command& c : commands) known |= c.sub->get_name() == argv[1];
     if (!known) {
       std::fprintf(stderr,
-                   "tidepool: unknown subcommand '%s' (expected run, render, info, bench, sweep, validate or soak; see "
+                   "tidepool: unknown subcommand '%s' (expected run, render, info, bench, sweep, validate, soak or "
+                   "check-resume; see "
                    "'tidepool --help')\n",
                    argv[1]);
       return 2;

@@ -57,6 +57,10 @@ void Buffer::fillZero() {
   glBindBuffer(GL_COPY_WRITE_BUFFER, id());
   glClearBufferData(GL_COPY_WRITE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
   glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+  // NVIDIA's driver (580) let a later glBufferSubData of the same buffer land before a clear it
+  // had not yet submitted, so a checkpoint loaded over a freshly reset model came back half zeros
+  // (docs/RELIABILITY.md, "Resume on your GPU"). Submitting the clear at once keeps the order.
+  glFlush();
   markWritten();
 }
 

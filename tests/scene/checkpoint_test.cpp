@@ -43,13 +43,11 @@ void frames(Stage& stage, int n, RenderTarget* target = nullptr) {
   }
 }
 
-// Everything a checkpoint holds but the watch's (its phase, and whether a check's read-back has
-// made a good copy yet, depend on the driver's timing, not on the state).
+// Everything a checkpoint holds, the divergence watch's phase and last good copy included.
 std::map<std::string, std::vector<std::uint8_t>> stateOf(Stage& stage, const Scene& scene) {
   const io::Checkpoint c = captureCheckpoint(stage, scene);
   std::map<std::string, std::vector<std::uint8_t>> out;
-  for (const io::CheckpointEntry& e : c.entries)
-    if (e.name.rfind("watch.", 0) != 0) out[e.name] = e.bytes;
+  for (const io::CheckpointEntry& e : c.entries) out[e.name] = e.bytes;
   const auto* t = reinterpret_cast<const std::uint8_t*>(&c.time);
   out["time"] = std::vector<std::uint8_t>(t, t + sizeof c.time);
   out["params"] = std::vector<std::uint8_t>(c.params.begin(), c.params.end());
