@@ -9,6 +9,7 @@
 #include "app/frame_writer.h"
 #include "app/progress.h"
 #include "base/log.h"
+#include "io/checkpoint_path.h"
 #include "io/video.h"
 #include "render/particle_exporter.h"
 #include "scene/checkpoint.h"
@@ -68,6 +69,7 @@ int renderHeadless(const RenderJob& request) {
   const bool checkpoints = job.saveLast || !job.checkpoint.empty() || job.checkpointEvery > 0;
   const std::filesystem::path checkpoint =
       job.checkpoint.empty() ? defaultCheckpointPath(job.outDir, job.video, scene.file) : job.checkpoint;
+  if (checkpoints) io::checkpointTarget(checkpoint);  // refuses a folder, pipe or device before the first frame
   CheckpointSchedule schedule(job.checkpointEvery, stage->simTime());
   int saved = 0;
   std::unique_ptr<ParticleExporter> exporter;

@@ -1,17 +1,19 @@
 #include "io/checkpoint_file.h"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <array>
 #include <bit>
 #include <cerrno>
 #include <cstring>
-#include <fstream>
 #include <set>
 
 #include "base/error.h"
+#include "io/checkpoint_path.h"
 #include "io/json.h"
+#include "io/limits.h"
 
 namespace tidepool::io {
 namespace {
@@ -124,6 +126,20 @@ void writeAll(int fd, const std::uint8_t* data, std::size_t n, const std::filesy
   }
 }
 
+// Exactly n bytes from `fd` at file offset `at` on: a file that shrinks while it is read is truncated.
+void readAll(int fd, std::uint8_t* data, std::size_t n, std::uint64_t at, const std::string& where) {
+  while (n > 0) {
+    const ssize_t r = ::read(fd, data, std::min<std::size_t>(n, std::size_t(1) << 30));
+    if (r < 0 && errno == EINTR) continue;
+    if (r < 0) throw Error("cannot read checkpoint '" + where + "': " + systemError());
+    if (r == 0)
+      throw Error(where + ": truncated at byte " + std::to_string(at) + " (the file shrank while it was read)");
+    data += r;
+    at += std::uint64_t(r);
+    n -= std::size_t(r);
+  }
+}
+
 }  // namespace
 
 const CheckpointEntry* Checkpoint::find(const std::string& name) const {
@@ -164,30 +180,46 @@ std::vector<std::uint8_t> encodeCheckpoint(const Checkpoint& c) {
   return std::move(file.bytes);
 }
 
-Checkpoint parseCheckpoint(std::span<const std::uint8_t> bytes, const std::string& where) {
-  if (bytes.size() < sizeof kCheckpointMagic || std::memcmp(bytes.data(), kCheckpointMagic, sizeof kCheckpointMagic))
+namespace {
+struct Header {
+  std::uint32_t checksum = 0;
+  std::uint64_t payloadBytes = 0;
+};
+
+// The header's magic, version and stated size, from its first bytes (`head`, up to 24) and the
+// size of the whole file: a file can be refused before its payload is read.
+Header checkHeader(std::span<const std::uint8_t> head, std::uint64_t fileBytes, const std::string& where) {
+  if (head.size() < sizeof kCheckpointMagic || std::memcmp(head.data(), kCheckpointMagic, sizeof kCheckpointMagic))
     throw Error(where + ": not a tidepool checkpoint (the file does not start with \"TIDEPOOL\")");
   const auto truncatedHeader = [&] {
-    return Error(where + ": truncated at byte " + std::to_string(bytes.size()) + " of the " +
+    return Error(where + ": truncated at byte " + std::to_string(fileBytes) + " of the " +
                  std::to_string(kCheckpointHeaderBytes) + "-byte header");
   };
-  if (bytes.size() < sizeof kCheckpointMagic + 4) throw truncatedHeader();
-  In header(bytes, 0, where);
+  if (head.size() < sizeof kCheckpointMagic + 4) throw truncatedHeader();
+  In header(head, 0, where);
   header.blob(sizeof kCheckpointMagic);
   const std::uint64_t version = header.uint(4, "format version");
   if (version != kCheckpointVersion)
     throw Error(where + ": format version " + std::to_string(version) + ", this build reads " +
                 std::to_string(kCheckpointVersion));
-  if (bytes.size() < kCheckpointHeaderBytes) throw truncatedHeader();
-  const std::uint32_t checksum = std::uint32_t(header.uint(4, "checksum"));
-  const std::uint64_t payloadBytes = header.uint(8, "payload size");
-  const std::uint64_t total = payloadBytes + kCheckpointHeaderBytes;
-  if (payloadBytes > bytes.size() || total > bytes.size())
-    throw Error(where + ": truncated at byte " + std::to_string(bytes.size()) + " of " +
-                (payloadBytes > (std::uint64_t(1) << 60) ? std::string("a corrupt size") : std::to_string(total)));
-  if (total < bytes.size())
-    throw Error(where + ": " + std::to_string(bytes.size() - total) + " bytes after the end of the checkpoint (byte " +
+  if (head.size() < kCheckpointHeaderBytes) throw truncatedHeader();
+  Header h;
+  h.checksum = std::uint32_t(header.uint(4, "checksum"));
+  h.payloadBytes = header.uint(8, "payload size");
+  const std::uint64_t total = h.payloadBytes + kCheckpointHeaderBytes;
+  if (h.payloadBytes > fileBytes || total > fileBytes)
+    throw Error(where + ": truncated at byte " + std::to_string(fileBytes) + " of " +
+                (h.payloadBytes > (std::uint64_t(1) << 60) ? std::string("a corrupt size") : std::to_string(total)));
+  if (total < fileBytes)
+    throw Error(where + ": " + std::to_string(fileBytes - total) + " bytes after the end of the checkpoint (byte " +
                 std::to_string(total) + ")");
+  return h;
+}
+}  // namespace
+
+Checkpoint parseCheckpoint(std::span<const std::uint8_t> bytes, const std::string& where) {
+  const std::uint32_t checksum =
+      checkHeader(bytes.first(std::min(bytes.size(), kCheckpointHeaderBytes)), bytes.size(), where).checksum;
   const std::span<const std::uint8_t> payload = bytes.subspan(kCheckpointHeaderBytes);
   if (const std::uint32_t actual = crc32(payload); actual != checksum) {
     char what[160];
@@ -226,15 +258,59 @@ Checkpoint parseCheckpoint(std::span<const std::uint8_t> bytes, const std::strin
 }
 
 Checkpoint readCheckpointFile(const std::filesystem::path& file) {
+  const std::string where = file.string();
+  // O_NONBLOCK: opening a pipe does not wait for a writer; fstat then refuses it.
+  const int fd = ::open(file.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) {
+    if (errno == ENOENT) throw Error("checkpoint not found: '" + where + "'");
+    throw Error("cannot read checkpoint '" + where + "': " + systemError());
+  }
+  const struct Closer {
+    int fd;
+    ~Closer() { ::close(fd); }
+  } closer{fd};
+  struct stat st {};
+  if (::fstat(fd, &st) != 0) throw Error("cannot read checkpoint '" + where + "': " + systemError());
+  if (S_ISDIR(st.st_mode)) throw Error("'" + where + "' is a folder, not a checkpoint file");
+  if (!S_ISREG(st.st_mode))
+    throw Error("'" + where + "' is not a regular file (a device, pipe or socket): give a checkpoint file");
+  const std::uint64_t size = std::uint64_t(st.st_size);
+  std::vector<std::uint8_t> bytes(std::min<std::uint64_t>(size, kCheckpointHeaderBytes));
+  readAll(fd, bytes.data(), bytes.size(), 0, where);
+  const Header header = checkHeader(bytes, size, where);  // before anything is allocated for the payload
+  if (size > kMaxCheckpointFileBytes)
+    throw Error("'" + where + "' is " + byteSize(size) + ", larger than the " + byteSize(kMaxCheckpointFileBytes) +
+                " allowed for a checkpoint");
+  try {
+    bytes.resize(std::size_t(kCheckpointHeaderBytes + header.payloadBytes));
+  } catch (const std::bad_alloc&) {
+    throw Error("'" + where + "': not enough memory to read its " + byteSize(size));
+  }
+  readAll(fd, bytes.data() + kCheckpointHeaderBytes, bytes.size() - kCheckpointHeaderBytes, kCheckpointHeaderBytes,
+          where);
+  return parseCheckpoint(bytes, where);
+}
+
+std::filesystem::path checkpointTarget(const std::filesystem::path& file) {
+  namespace fs = std::filesystem;
   std::error_code ec;
-  if (!std::filesystem::exists(file, ec)) throw Error("checkpoint not found: '" + file.string() + "'");
-  if (std::filesystem::is_directory(file, ec))
-    throw Error("'" + file.string() + "' is a folder, not a checkpoint file");
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw Error("cannot read checkpoint '" + file.string() + "': " + systemError());
-  std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw Error("cannot read checkpoint '" + file.string() + "': " + systemError());
-  return parseCheckpoint(bytes, file.string());
+  const fs::file_status link = fs::symlink_status(file, ec);
+  if (!fs::exists(link)) return file;  // a new name
+  const auto refuse = [&](const std::string& what) {
+    return Error("cannot write checkpoint '" + file.string() + "': " + what + "; give a regular file or a new name");
+  };
+  if (fs::is_symlink(link)) {
+    const fs::path target = fs::canonical(file, ec);
+    if (ec) throw refuse("a symbolic link to nothing (" + ec.message() + ")");
+    const fs::file_status st = fs::status(target, ec);
+    if (!fs::is_regular_file(st))
+      throw refuse(std::string("a symbolic link to ") +
+                   (fs::is_directory(st) ? "a folder" : "a device, pipe or socket"));
+    return target;  // written through the link, which stays
+  }
+  if (fs::is_directory(link)) throw refuse("it is a folder");
+  if (!fs::is_regular_file(link)) throw refuse("it is a device, pipe or socket");
+  return file;
 }
 
 std::filesystem::path temporaryPath(const std::filesystem::path& file) {
@@ -243,12 +319,18 @@ std::filesystem::path temporaryPath(const std::filesystem::path& file) {
   return tmp;
 }
 
-void writeFileAtomically(const std::filesystem::path& file, std::span<const std::uint8_t> bytes,
+void writeFileAtomically(const std::filesystem::path& given, std::span<const std::uint8_t> bytes,
                          const std::function<void(WriteStep)>& crashPoint) {
+  const std::filesystem::path file = checkpointTarget(given);
   const std::filesystem::path tmp = temporaryPath(file);
   const std::filesystem::path folder = file.parent_path().empty() ? std::filesystem::path(".") : file.parent_path();
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  // A stale temporary file is replaced; a link or a pipe by that name is not followed or waited on.
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK, 0644);
   if (fd < 0) throw Error("cannot write checkpoint '" + tmp.string() + "': " + systemError());
+  if (struct stat st{}; ::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    ::close(fd);
+    throw Error("cannot write checkpoint '" + tmp.string() + "': not a regular file (remove it)");
+  }
   try {
     const std::size_t half = bytes.size() / 2;
     writeAll(fd, bytes.data(), half, tmp);

@@ -6,12 +6,39 @@
 #include "base/error.h"
 #include "scene/param_json.h"
 #include "sim/model_state.h"
+#include "sim/water/cell_load.h"
+#include "sim/water/particle_water.h"
 
 namespace tidepool {
 namespace {
 // Simulated times are sums of frame steps (1/30 s ten times is not exactly 1/3): a save is due
 // within this fraction of a period before its time.
 constexpr double kDueSlack = 1e-9;
+
+// Visits a stage's state as a save does, keeping nothing: a model first runs its health check on
+// the state as it is and refuses an unhealthy one through fail(), which names the file.
+class Judge final : public sim::StateVisitor {
+ public:
+  explicit Judge(std::string where) : m_where(std::move(where)) {}
+  bool loading() const override { return false; }
+  void clock(double&, std::uint64_t&) override {}
+  void bytes(const char*, void*, std::size_t) override {}
+  void text(const char*, std::string&, std::size_t) override {}
+  void buffer(const char*, gl::Buffer&, std::size_t) override {}
+  [[noreturn]] void fail(const std::string& what) const override { throw Error(m_where + ": " + what); }
+
+ private:
+  std::string m_where;
+};
+
+// A loaded state is judged as a saved one is (NaN, out of the domain: the model's health check),
+// and particle water may not crowd one cube of its diameter past water::kMaxPerDiameterCube.
+void judgeLoadedState(Stage& stage, const std::string& where) {
+  Judge judge(where);
+  stage.visitState(judge);
+  if (const auto* water = dynamic_cast<const water::ParticleWater*>(stage.model()))
+    if (std::optional<std::string> crowded = water::overcrowded(*water)) throw Error(where + ": " + *crowded);
+}
 }  // namespace
 
 io::Checkpoint captureCheckpoint(Stage& stage, const Scene& scene) {
@@ -45,6 +72,7 @@ void restoreCheckpoint(Stage& stage, const Scene& scene, const io::Checkpoint& c
     stage.reset();
     stage.visitState(loader);
     loader.finish();
+    judgeLoadedState(stage, where);
   } catch (const Error& e) {  // what a model built at these parameters says (too many particles, ...)
     if (std::string(e.what()).rfind(where, 0) == 0) throw;
     throw Error(where + ": " + e.what());

@@ -28,8 +28,9 @@ void saveCheckpoint(Stage& stage, const Scene& scene, const std::filesystem::pat
 
 // Puts `checkpoint` into `stage`, a freshly created stage of `scene`: its model must be the
 // scene's; its parameters override the scene file's; every entry must fit the state at those
-// parameters. Errors start with `where` (the file). After a failure the stage is half restored:
-// reset it or make a new one.
+// parameters; the state as loaded must pass the model's health check and, for balls and fluid,
+// water::kMaxPerDiameterCube (sim/water/cell_load.h). Errors start with `where` (the file).
+// After a failure the stage is half restored: reset it or make a new one.
 void restoreCheckpoint(Stage& stage, const Scene& scene, const io::Checkpoint& checkpoint, const std::string& where);
 void loadCheckpoint(Stage& stage, const Scene& scene, const std::filesystem::path& file);  // read, then restore
 

@@ -41,10 +41,15 @@ class SwarmStage final : public ModelStage<sim::Swarm> {
 
   void visitParams(ParamVisitor& v) override { visitAll(v, m_model.params(), m_view); }
 
+  // A count that does not fit is refused here, with an Error (the UI's edits are refused earlier,
+  // in step(), keeping the particles; a checkpoint's parameters must not be swapped for others).
   void reset() override {
-    syncAllocation();
     m_model.reset();
     m_coloredImage.clear();  // recoloured from the new start positions
+  }
+  void restart() override {  // the window's R: an edited count that does not fit stays refused
+    syncAllocation();
+    reset();
   }
 
   void step(gl::GpuProfiler& profiler) override {

@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <cstring>
 
+#include "sim/state_checks.h"
+
 namespace tidepool {
 
 DivergenceReport divergenceReport(const std::string& model, double time, const std::string& what,
@@ -97,7 +99,7 @@ void DivergenceWatch::visitState(StateVisitor& v, Subject& s) {
   std::string report = m_report ? m_report->message : "";
   double reportTime = m_report ? m_report->time : 0.0;
   v.text("watch.report", report, 4096);
-  v.value("watch.report_time", reportTime);
+  sim::finiteValue(v, "watch.report_time", reportTime);
   // The last good copy, so that a resumed run can recover before its first healthy check.
   const std::vector<StateBuffer> state = s.stateBuffers();
   bool hasGood = m_hasGood && m_good.buffers.size() == state.size();
@@ -113,9 +115,19 @@ void DivergenceWatch::visitState(StateVisitor& v, Subject& s) {
       v.fail("entry 'watch.good.time' = " + std::to_string(copy.stamp.time) + " is not a time");
     v.count("watch.good.count", copy.stamp.count, m_maxCopied);
     v.value("watch.good.steps", copy.stamp.steps);
+    const StateStamp now = s.stamp();
+    if (v.loading() && copy.stamp.time > now.time)
+      v.fail("entry 'watch.good.time' = " + std::to_string(copy.stamp.time) + " is after the state's time " +
+             std::to_string(now.time));
     for (std::size_t k = 0; k < state.size(); ++k) {
       const std::string name = std::string("watch.good.") + state[k].name;
       v.count((name + ".bytes").c_str(), copy.bytes[k], state[k].buffer->size());
+      // The copy's count must be what its buffers hold, at the live state's bytes per element:
+      // recovery resumes the model at that count over those bytes.
+      if (v.loading() && (now.count == 0 ? copy.stamp.count != 0 || copy.bytes[k] != 0
+                                         : copy.bytes[k] * now.count != copy.stamp.count * state[k].bytes))
+        v.fail("entry 'watch.good.count' = " + std::to_string(copy.stamp.count) + " does not match '" + name + "' of " +
+               std::to_string(copy.bytes[k]) + " bytes");
       if (v.loading() && copy.bytes[k] > 0) copy.buffers[k] = gl::Buffer(copy.bytes[k]);
       v.buffer(name.c_str(), copy.buffers[k], copy.bytes[k]);
     }

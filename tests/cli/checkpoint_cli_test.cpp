@@ -3,10 +3,14 @@
 // the output; bad checkpoints refused in one line; the window's autosave and --resume.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
+#include <cmath>
 #include <fstream>
 
 #include "io/checkpoint_file.h"
 #include "io/png.h"
+#include "support/checkpoint_edit.h"
 #include "support/gl_test.h"
 #include "support/one_line_error.h"
 
@@ -132,9 +136,69 @@ TEST(CheckpointCli, TheWindowAutosavesAndResumesUnderXvfb) {
   // 20 frames of the scene's 1/30 s, as `render` advances them: autosaves at 8/30 and 15/30 s.
   EXPECT_NE(r.err.find("autosaved " + ckpt + " at t = 0.267 s"), std::string::npos) << r.err;
   EXPECT_NEAR(io::readCheckpointFile(ckpt).time, 0.5, 1e-9);
+  // Resumed, the window goes on from the checkpoint's state: its autosaves (every frame) end
+  // where a headless run resumed from the same file for as many steps ends, entry for entry.
+  const std::string resumed = (dir / "w2.ckpt").string();
   args = window;
-  for (const char* a : {"--frames", "2", "--resume"}) args.push_back(a);
-  args.push_back(ckpt);
+  for (const char* a : {"--frames", "4", "--checkpoint-every", "0.001", "--checkpoint"}) args.push_back(a);
+  for (const std::string& a : {resumed, std::string("--resume"), ckpt}) args.push_back(a);
   r = test::runProcess(args);
-  EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  const io::Checkpoint after = io::readCheckpointFile(resumed);
+  const int steps = int(std::lround((after.time - 0.5) * 30));
+  ASSERT_GE(steps, 1) << "the resumed window saved at t = " << after.time;
+  const auto headless = runTidepool({"run", (dir / "r.json").string(), "--frames", std::to_string(steps + 1), "--out",
+                                     (dir / "h").string(), "--resume", ckpt, "--checkpoint", (dir / "h.ckpt").string()},
+                                    {"DISPLAY=", "WAYLAND_DISPLAY="});
+  ASSERT_EQ(headless.exitCode, 0) << headless.err;
+  const io::Checkpoint straight = io::readCheckpointFile(dir / "h.ckpt");
+  EXPECT_EQ(after.time, straight.time);
+  EXPECT_EQ(after.steps, straight.steps);
+  std::size_t compared = 0;
+  for (const io::CheckpointEntry& e : straight.entries)
+    if (e.name.rfind("watch.", 0) != 0) {
+      const io::CheckpointEntry* w = after.find(e.name);
+      ASSERT_NE(w, nullptr) << e.name;
+      EXPECT_TRUE(w->bytes == e.bytes) << e.name;
+      ++compared;
+    }
+  EXPECT_NE(after.find("model.state"), nullptr);
+  EXPECT_GT(compared, 3u);
+  EXPECT_FALSE(io::readCheckpointFile(ckpt).find("model.state")->bytes == after.find("model.state")->bytes);
+}
+
+TEST(CheckpointCli, ResumeRefusesPipesDevicesAndHostileValuesInOneLine) {
+  test::TempDir dir;
+  dir.write("r.json", kRipples);
+  const std::string scene = (dir / "r.json").string(), out = (dir / "o").string();
+  const std::filesystem::path fifo = dir / "pipe.ckpt";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  test::expectOneLineError({"render", scene, "--out", out, "--resume", fifo.string()},
+                           "'" + fifo.string() + "' is not a regular file (a device, pipe or socket)");
+  test::expectOneLineError({"render", scene, "--out", out, "--resume", "/dev/zero"},
+                           "'/dev/zero' is not a regular file (a device, pipe or socket)");
+  render({scene, "--frames", "3", "--out", out, "--checkpoint", (dir / "r.ckpt").string()});
+  test::editCheckpointFile(dir / "r.ckpt", dir / "debt.ckpt",
+                           [](io::Checkpoint& c) { test::setValue(c, "model.rain_debt", double(INFINITY)); });
+  test::expectOneLineError({"render", scene, "--out", out, "--resume", (dir / "debt.ckpt").string()},
+                           "debt.ckpt: entry 'model.rain_debt' = inf is not a finite number");
+}
+
+TEST(CheckpointCli, TheCheckpointPathIsARegularFileANewNameOrALinkToOne) {
+  test::TempDir dir;
+  dir.write("r.json", kRipples);
+  const std::string scene = (dir / "r.json").string(), out = (dir / "o").string();
+  const std::filesystem::path fifo = dir / "pipe.ckpt";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  test::expectOneLineError({"render", scene, "--frames", "2", "--out", out, "--checkpoint", fifo.string()},
+                           "cannot write checkpoint '" + fifo.string() + "': it is a device, pipe or socket");
+  EXPECT_TRUE(std::filesystem::is_fifo(fifo));
+  std::filesystem::create_directory(dir / "folder");
+  test::expectOneLineError({"render", scene, "--frames", "2", "--out", out, "--checkpoint", (dir / "folder").string()},
+                           "cannot write checkpoint '" + (dir / "folder").string() + "': it is a folder");
+  dir.write("real.ckpt", "old");
+  std::filesystem::create_symlink(dir / "real.ckpt", dir / "link.ckpt");
+  render({scene, "--frames", "2", "--out", out, "--checkpoint", (dir / "link.ckpt").string()});
+  EXPECT_TRUE(std::filesystem::is_symlink(dir / "link.ckpt"));
+  EXPECT_NEAR(io::readCheckpointFile(dir / "real.ckpt").time, 1.0 / 30, 1e-9);
 }

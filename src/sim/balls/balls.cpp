@@ -9,6 +9,7 @@
 #include "balls/stats_layout.glsl"
 #include "base/error.h"
 #include "sim/particle_memory.h"
+#include "sim/state_checks.h"
 #include "sim/water/water_frame.h"
 #include "sim/water/water_init.h"
 
@@ -164,6 +165,13 @@ void Balls::visitOwnState(sim::StateVisitor& v) {
   // (upload) may hold more than its own fill and tap.
   std::size_t capacity = m_capacity;
   v.value("model.capacity", capacity);
+  if (v.loading() && capacity > m_capacity) {  // more than the fill and tap need: only an upload's own count
+    std::uint64_t count = 0;
+    v.value("model.count", count);
+    if (capacity > count)
+      v.fail("entry 'model.capacity' = " + std::to_string(capacity) + " is more than the parameters' fill and tap (" +
+             std::to_string(m_capacity) + ") and the count (" + std::to_string(count) + ")");
+  }
   if (v.loading() && capacity != m_capacity) try {
       allocate(0, capacity);
     } catch (const Error& e) {
@@ -171,7 +179,7 @@ void Balls::visitOwnState(sim::StateVisitor& v) {
     }
   v.count("model.count", m_count, m_capacity);
   v.count("model.tap_emitted", m_tapEmitted, m_capacity);
-  v.value("model.tap_next_layer", m_tapNextLayer);
+  sim::finiteValue(v, "model.tap_next_layer", m_tapNextLayer);
   v.flag("model.acc_valid", m_accValid);
   if (m_accValid) v.buffer("model.accelerations", accelerations(), m_count * sizeof(glm::vec4));
   if (v.loading()) {

@@ -8,6 +8,7 @@
 #include "base/error.h"
 #include "fluid/bindings.glsl"
 #include "sim/particle_memory.h"
+#include "sim/state_checks.h"
 #include "sim/water/water_init.h"
 
 namespace tidepool::fluid {
@@ -197,6 +198,13 @@ void Fluid::visitOwnState(sim::StateVisitor& v) {
   // The capacity bounds what the tap may still add (see Balls::visitOwnState).
   std::size_t capacity = m_capacity;
   v.value("model.capacity", capacity);
+  if (v.loading() && capacity > m_capacity) {  // more than the fill and tap need: only an upload's own count
+    std::uint64_t count = 0;
+    v.value("model.count", count);
+    if (capacity > count)
+      v.fail("entry 'model.capacity' = " + std::to_string(capacity) + " is more than the parameters' fill and tap (" +
+             std::to_string(m_capacity) + ") and the count (" + std::to_string(count) + ")");
+  }
   if (v.loading() && capacity != m_capacity) try {
       allocate(0, capacity);
     } catch (const Error& e) {
@@ -204,7 +212,7 @@ void Fluid::visitOwnState(sim::StateVisitor& v) {
     }
   v.count("model.count", m_count, m_capacity);
   v.count("model.tap_emitted", m_tapEmitted, m_capacity);
-  v.value("model.tap_next_layer", m_tapNextLayer);
+  sim::finiteValue(v, "model.tap_next_layer", m_tapNextLayer);
   if (v.loading()) m_walls = water::wallsAt(m_params, m_time);  // as the last step left them, for the watch
 }
 

@@ -8,6 +8,7 @@
 #include "base/error.h"
 #include "life/bindings.glsl"
 #include "sim/particle_memory.h"
+#include "sim/state_checks.h"
 
 namespace tidepool::life {
 namespace {
@@ -350,10 +351,10 @@ void Life::visitOwnState(sim::StateVisitor& v) {
     v.fail("entry 'model.count' = " + std::to_string(count) + ", the rules have " + std::to_string(m_count) +
            " particles");
   v.flag("model.need_accel", m_needAccel);
-  v.value("model.push_point", m_pushPoint);
-  v.value("model.push_velocity", m_pushVelocity);
-  v.value("model.push_radius", m_pushRadius);
-  v.value("model.last_dt", m_lastDt);
+  sim::finiteValue(v, "model.push_point", m_pushPoint);
+  sim::finiteValue(v, "model.push_velocity", m_pushVelocity);
+  sim::finiteValue(v, "model.push_radius", m_pushRadius);
+  sim::finiteValue(v, "model.last_dt", m_lastDt);
   if (v.loading()) {
     m_current = 0;
     if (m_trackIds) resetIds();

@@ -9,6 +9,7 @@
 
 #include "base/log.h"
 #include "ripples/bindings.glsl"
+#include "sim/state_checks.h"
 
 namespace tidepool::ripples {
 namespace {
@@ -198,7 +199,9 @@ void Ripples::visitOwnState(sim::StateVisitor& v) {
   if (v.loading() && (m_params.width != m_width || m_params.height != m_height)) allocate();
   std::uint64_t steps = 0;
   v.clock(m_time, steps);
-  v.value("model.rain_debt", m_rainDebt);
+  sim::finiteValue(v, "model.rain_debt", m_rainDebt);
+  if (v.loading() && !(m_rainDebt >= 0 && m_rainDebt < 1))  // the drops still owed: a step leaves less than one
+    v.fail("entry 'model.rain_debt' = " + std::to_string(m_rainDebt) + " is not in [0, 1)");
   std::ostringstream rng;
   rng << m_rng;
   std::string text = rng.str();
@@ -208,10 +211,10 @@ void Ripples::visitOwnState(sim::StateVisitor& v) {
     in >> m_rng;
     if (in.fail()) v.fail("entry 'model.rng' is not the state of a Mersenne Twister");
   }
-  v.value("model.last_dt", m_lastDt);
+  sim::finiteValue(v, "model.last_dt", m_lastDt);
   v.value("model.last_substeps", m_lastSubsteps);
-  v.value("model.last_courant", m_lastCourant);
-  v.value("model.last_max_height", m_lastMaxHeight);
+  sim::finiteValue(v, "model.last_courant", m_lastCourant);
+  sim::finiteValue(v, "model.last_max_height", m_lastMaxHeight);
 }
 
 void Ripples::touch(float x, float y, float radius, float depth) {

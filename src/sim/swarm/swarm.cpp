@@ -7,6 +7,7 @@
 
 #include "base/error.h"
 #include "gl/kernel.h"
+#include "sim/state_checks.h"
 #include "swarm/bindings.glsl"
 
 namespace tidepool::sim {
@@ -241,14 +242,20 @@ std::string Swarm::method() const {
 void Swarm::visitOwnState(StateVisitor& v) {
   std::uint64_t steps = 0;
   v.clock(m_time, steps);
-  v.value("model.aspect", m_aspect);
+  sim::finiteValue(v, "model.aspect", m_aspect);
+  if (v.loading() && !(m_aspect > 0))
+    v.fail("entry 'model.aspect' = " + std::to_string(m_aspect) + " is not a width/height ratio");
   bool mouse = m_mouse.has_value();
   glm::dvec2 at = m_mouse.value_or(glm::dvec2(0.0));
   v.flag("model.mouse_held", mouse);
-  v.value("model.mouse", at);
+  sim::finiteValue(v, "model.mouse", at);
   m_mouse = mouse ? std::optional<glm::dvec2>(at) : std::nullopt;
   v.array("model.extra_attractors", m_extra, SWARM_MAX_ATTRACTORS);
-  v.value("model.last_dt", m_lastDt);
+  for (const Attractor& a : m_extra) {
+    sim::requireFinite(v, "model.extra_attractors", &a.pos[0], 2);
+    sim::requireFinite(v, "model.extra_attractors", &a.strength, 1);
+  }
+  sim::finiteValue(v, "model.last_dt", m_lastDt);
 }
 
 void Swarm::resume(const StateStamp& good) {
