@@ -30,10 +30,11 @@ std::size_t scanlineBytes(std::size_t width, std::size_t height, std::size_t bit
   return total;
 }
 
-// What stb takes on trust: a chunk's length (it allocates what the length claims before reading)
-// and how far the image data inflates (to the end of the stream, however large). Each chunk must
-// fit in the file, and the data must inflate to no more than the header's pixels need; what is
-// otherwise malformed is left to stb to report.
+// What stb takes on trust: a chunk's length (it allocates what the length claims before reading),
+// an empty first IDAT (it copies its zero bytes to a null buffer: undefined behaviour) and how far
+// the image data inflates (to the end of the stream, however large). Each chunk must fit in the
+// file, no IDAT may be empty, and the data must inflate to no more than the header's pixels need;
+// what is otherwise malformed (checksums included) is left to stb to report.
 void checkChunks(std::span<const std::uint8_t> b, const std::string& name) {
   static const std::uint8_t signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
   if (b.size() < 33 || !std::equal(signature, signature + 8, b.data())) return;
@@ -44,6 +45,9 @@ void checkChunks(std::span<const std::uint8_t> b, const std::string& name) {
     if (length > left || left - length < 4)
       throw Error(name + ": byte " + std::to_string(at) + ": chunk '" + type + "' claims " + std::to_string(length) +
                   " bytes and its checksum, but only " + std::to_string(left) + " follow (the file is cut or damaged)");
+    if (type == "IDAT" && length == 0)
+      throw Error(name + ": byte " + std::to_string(at) +
+                  ": chunk 'IDAT' is empty, which the decoder cannot read (re-save the image)");
     if (type == "IDAT") data.insert(data.end(), &b[at + 8], &b[at + 8] + length);
     if (type == "IEND") break;
     at += 12 + length;
@@ -67,6 +71,12 @@ void checkChunks(std::span<const std::uint8_t> b, const std::string& name) {
                 " pixels need (a decompression bomb?)");
 }
 
+// stb's reason for its last failure ("bad huffman code"), or ours where it gave none.
+std::string failureReason() {
+  const char* reason = stbi_failure_reason();
+  return reason && *reason ? printable(reason) : "damaged image data; the decoder gave no reason";
+}
+
 }  // namespace
 
 void writePng(const std::filesystem::path& path, const Image& image) {
@@ -85,7 +95,7 @@ Image decodePng(std::span<const std::uint8_t> bytes, const std::string& name) {
   int width = 0, height = 0, channels = 0;
   // stb names an unknown chunk by its four bytes, whatever they are: quoted printable.
   if (!stbi_info_from_memory(bytes.data(), length, &width, &height, &channels))
-    throw Error(name + ": not a PNG image (" + printable(stbi_failure_reason()) + ")");
+    throw Error(name + ": not a PNG image (" + failureReason() + ")");
   if (width <= 0 || height <= 0 || width > kMaxImageSide || height > kMaxImageSide ||
       std::size_t(width) * std::size_t(height) > kMaxImagePixels)
     throw Error(name + ": header: " + std::to_string(width) + " x " + std::to_string(height) +
@@ -94,7 +104,7 @@ Image decodePng(std::span<const std::uint8_t> bytes, const std::string& name) {
   checkChunks(bytes, name);
   Image img;
   stbi_uc* data = stbi_load_from_memory(bytes.data(), length, &img.width, &img.height, &channels, 4);
-  if (!data) throw Error(name + ": cannot decode the PNG image (" + printable(stbi_failure_reason()) + ")");
+  if (!data) throw Error(name + ": cannot decode the PNG image (" + failureReason() + ")");
   img.rgba.assign(data, data + std::size_t(img.width) * img.height * 4);
   stbi_image_free(data);
   return img;
