@@ -12,7 +12,17 @@
 #include "io/limits.h"
 
 namespace tidepool::io {
+
+void clearStbFailureReason();  // stb_impl.cpp, beside stb's own state
+
 namespace {
+
+// stb's reason for the failure of the call since the last clearStbFailureReason ("bad huffman
+// code"), or ours where it gave none (a reserved deflate block type, say).
+std::string failureReason() {
+  const char* reason = stbi_failure_reason();
+  return reason && *reason ? printable(reason) : "damaged image data; the decoder gives no reason";
+}
 
 std::uint32_t bigEndian32(const std::uint8_t* p) {
   return std::uint32_t(p[0]) << 24 | std::uint32_t(p[1]) << 16 | std::uint32_t(p[2]) << 8 | p[3];
@@ -64,17 +74,12 @@ void checkChunks(std::span<const std::uint8_t> b, const std::string& name) {
                 std::to_string(bigEndian32(ihdr)) + " x " + std::to_string(bigEndian32(ihdr + 4)) +
                 " pixels its header claims (the file is cut or damaged)");
   const std::unique_ptr<char[]> out(new char[needed + 1]);  // not zeroed: only written
+  clearStbFailureReason();
   if (stbi_zlib_decode_buffer(out.get(), int(needed + 1), data.data(), int(data.size())) < 0 &&
-      std::string_view(stbi_failure_reason()) == "output buffer limit")
+      failureReason() == "output buffer limit")
     throw Error(name + ": its image data inflates to more than the " + std::to_string(needed) + " bytes its " +
                 std::to_string(bigEndian32(ihdr)) + " x " + std::to_string(bigEndian32(ihdr + 4)) +
                 " pixels need (a decompression bomb?)");
-}
-
-// stb's reason for its last failure ("bad huffman code"), or ours where it gave none.
-std::string failureReason() {
-  const char* reason = stbi_failure_reason();
-  return reason && *reason ? printable(reason) : "damaged image data; the decoder gave no reason";
 }
 
 }  // namespace
@@ -93,6 +98,7 @@ Image decodePng(std::span<const std::uint8_t> bytes, const std::string& name) {
   const int length = int(bytes.size());
   // The header's size first: a few bytes may claim gigapixels, and stb would try to allocate them.
   int width = 0, height = 0, channels = 0;
+  clearStbFailureReason();
   // stb names an unknown chunk by its four bytes, whatever they are: quoted printable.
   if (!stbi_info_from_memory(bytes.data(), length, &width, &height, &channels))
     throw Error(name + ": not a PNG image (" + failureReason() + ")");
@@ -103,6 +109,7 @@ Image decodePng(std::span<const std::uint8_t> bytes, const std::string& name) {
                 std::to_string(kMaxImagePixels >> 20) + " Mpixel allowed");
   checkChunks(bytes, name);
   Image img;
+  clearStbFailureReason();
   stbi_uc* data = stbi_load_from_memory(bytes.data(), length, &img.width, &img.height, &channels, 4);
   if (!data) throw Error(name + ": cannot decode the PNG image (" + failureReason() + ")");
   img.rgba.assign(data, data + std::size_t(img.width) * img.height * 4);
