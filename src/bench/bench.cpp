@@ -121,6 +121,7 @@ StepWindow parseStepWindow(const std::string& text) {
 PassTimes timePasses(int warmup, int timed, const std::function<void(gl::GpuProfiler&)>& frame, bool wallClock) {
   const bool software = wallClock || softwareRenderer();  // timer queries that do not measure: time whole frames
   gl::GpuProfiler profiler;
+  std::vector<gl::GpuProfiler::FrameTimes> frames;  // the timed ones, as they complete
   PassTimes t;
   std::chrono::steady_clock::time_point windowStart;
   // A timestamp before each timed frame and one after the last (not on software: it does not measure).
@@ -147,6 +148,9 @@ PassTimes timePasses(int warmup, int timed, const std::function<void(gl::GpuProf
       profiler.finish();
       profiler.takeCompleted();  // warm-up frames are not timed
     }
+    // The profiler keeps only the last few frames: collect them as they complete.
+    if (i >= warmup)
+      for (gl::GpuProfiler::FrameTimes& f : profiler.takeCompleted()) frames.push_back(std::move(f));
   }
   if (timed > 0) mark();
   glFinish();
@@ -160,7 +164,8 @@ PassTimes timePasses(int warmup, int timed, const std::function<void(gl::GpuProf
     t.sustainedMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - windowStart).count() / timed;
   profiler.finish();
-  for (const auto& f : profiler.takeCompleted()) {
+  for (gl::GpuProfiler::FrameTimes& f : profiler.takeCompleted()) frames.push_back(std::move(f));
+  for (const auto& f : frames) {
     double total = 0;
     std::map<std::string, double> frameMs;  // a pass that runs several times a frame (solver iterations): summed
     for (const auto& [name, ms] : f.passes) {

@@ -5,7 +5,11 @@
 namespace tidepool::gl {
 namespace {
 constexpr double kSmoothing = 0.1;  // EMA weight of the newest frame
-constexpr std::size_t kMaxCompleted = 4096;
+// Completed frames kept for takeCompleted(): a few, so that a run that never takes them (the
+// window, render, soak) holds no history. With 4096 it grew ~5 KiB a frame (one name and time per
+// pass, 125 passes a frame at 25 substeps) for 4096 frames (docs/RELIABILITY.md, "Long runs");
+// benchmarks take them every frame.
+constexpr std::size_t kMaxCompleted = 16;
 }  // namespace
 
 GpuProfiler::Scope::~Scope() {

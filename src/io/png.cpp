@@ -12,7 +12,17 @@
 #include "io/limits.h"
 
 namespace tidepool::io {
+
+void clearStbFailureReason();  // stb_impl.cpp, beside stb's own state
+
 namespace {
+
+// stb's reason for the failure of the call since the last clearStbFailureReason ("bad huffman
+// code"), or ours where it gave none (a reserved deflate block type, say).
+std::string failureReason() {
+  const char* reason = stbi_failure_reason();
+  return reason && *reason ? printable(reason) : "damaged image data; the decoder gives no reason";
+}
 
 std::uint32_t bigEndian32(const std::uint8_t* p) {
   return std::uint32_t(p[0]) << 24 | std::uint32_t(p[1]) << 16 | std::uint32_t(p[2]) << 8 | p[3];
@@ -30,10 +40,11 @@ std::size_t scanlineBytes(std::size_t width, std::size_t height, std::size_t bit
   return total;
 }
 
-// What stb takes on trust: a chunk's length (it allocates what the length claims before reading)
-// and how far the image data inflates (to the end of the stream, however large). Each chunk must
-// fit in the file, and the data must inflate to no more than the header's pixels need; what is
-// otherwise malformed is left to stb to report.
+// What stb takes on trust: a chunk's length (it allocates what the length claims before reading),
+// an empty first IDAT (it copies its zero bytes to a null buffer: undefined behaviour) and how far
+// the image data inflates (to the end of the stream, however large). Each chunk must fit in the
+// file, no IDAT may be empty, and the data must inflate to no more than the header's pixels need;
+// what is otherwise malformed (checksums included) is left to stb to report.
 void checkChunks(std::span<const std::uint8_t> b, const std::string& name) {
   static const std::uint8_t signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
   if (b.size() < 33 || !std::equal(signature, signature + 8, b.data())) return;
@@ -44,6 +55,9 @@ void checkChunks(std::span<const std::uint8_t> b, const std::string& name) {
     if (length > left || left - length < 4)
       throw Error(name + ": byte " + std::to_string(at) + ": chunk '" + type + "' claims " + std::to_string(length) +
                   " bytes and its checksum, but only " + std::to_string(left) + " follow (the file is cut or damaged)");
+    if (type == "IDAT" && length == 0)
+      throw Error(name + ": byte " + std::to_string(at) +
+                  ": chunk 'IDAT' is empty, which the decoder cannot read (re-save the image)");
     if (type == "IDAT") data.insert(data.end(), &b[at + 8], &b[at + 8] + length);
     if (type == "IEND") break;
     at += 12 + length;
@@ -60,8 +74,9 @@ void checkChunks(std::span<const std::uint8_t> b, const std::string& name) {
                 std::to_string(bigEndian32(ihdr)) + " x " + std::to_string(bigEndian32(ihdr + 4)) +
                 " pixels its header claims (the file is cut or damaged)");
   const std::unique_ptr<char[]> out(new char[needed + 1]);  // not zeroed: only written
+  clearStbFailureReason();
   if (stbi_zlib_decode_buffer(out.get(), int(needed + 1), data.data(), int(data.size())) < 0 &&
-      std::string_view(stbi_failure_reason()) == "output buffer limit")
+      failureReason() == "output buffer limit")
     throw Error(name + ": its image data inflates to more than the " + std::to_string(needed) + " bytes its " +
                 std::to_string(bigEndian32(ihdr)) + " x " + std::to_string(bigEndian32(ihdr + 4)) +
                 " pixels need (a decompression bomb?)");
@@ -83,9 +98,10 @@ Image decodePng(std::span<const std::uint8_t> bytes, const std::string& name) {
   const int length = int(bytes.size());
   // The header's size first: a few bytes may claim gigapixels, and stb would try to allocate them.
   int width = 0, height = 0, channels = 0;
+  clearStbFailureReason();
   // stb names an unknown chunk by its four bytes, whatever they are: quoted printable.
   if (!stbi_info_from_memory(bytes.data(), length, &width, &height, &channels))
-    throw Error(name + ": not a PNG image (" + printable(stbi_failure_reason()) + ")");
+    throw Error(name + ": not a PNG image (" + failureReason() + ")");
   if (width <= 0 || height <= 0 || width > kMaxImageSide || height > kMaxImageSide ||
       std::size_t(width) * std::size_t(height) > kMaxImagePixels)
     throw Error(name + ": header: " + std::to_string(width) + " x " + std::to_string(height) +
@@ -93,8 +109,9 @@ Image decodePng(std::span<const std::uint8_t> bytes, const std::string& name) {
                 std::to_string(kMaxImagePixels >> 20) + " Mpixel allowed");
   checkChunks(bytes, name);
   Image img;
+  clearStbFailureReason();
   stbi_uc* data = stbi_load_from_memory(bytes.data(), length, &img.width, &img.height, &channels, 4);
-  if (!data) throw Error(name + ": cannot decode the PNG image (" + printable(stbi_failure_reason()) + ")");
+  if (!data) throw Error(name + ": cannot decode the PNG image (" + failureReason() + ")");
   img.rgba.assign(data, data + std::size_t(img.width) * img.height * 4);
   stbi_image_free(data);
   return img;

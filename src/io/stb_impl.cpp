@@ -11,3 +11,9 @@
 #include <stb_image_write.h>
 #include <stb_rect_pack.h>
 #include <stb_truetype.h>
+
+namespace tidepool::io {
+// stb keeps the reason for its last failure until the next one (and has none before the first):
+// png.cpp clears it before each call, so that the reason it reads is that call's.
+void clearStbFailureReason() { stbi__g_failure_reason = nullptr; }
+}  // namespace tidepool::io

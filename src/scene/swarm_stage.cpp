@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "base/log.h"
+#include "io/json.h"
 #include "io/png.h"
 #include "render/swarm_renderer.h"
 #include "scene/scene.h"
@@ -28,16 +29,31 @@ struct SwarmSceneParams {
 };
 void visit(ParamVisitor& v, SwarmSceneParams& p) { visitAll(v, p.model, p.view); }
 
-// "colors" -> assets/textures/colors.png; anything else is a path to a PNG (or JPEG, BMP...).
-io::Image loadSwarmImage(const std::string& nameOrPath) {
-  const std::filesystem::path asset = findAssetDir() / "textures" / (nameOrPath + ".png");
-  return io::readPng(std::filesystem::exists(asset) ? asset : std::filesystem::path(nameOrPath));
+// "colors" -> assets/textures/colors.png; anything else is a path to a PNG. A file that cannot be
+// read or decoded is refused on one line naming the key after `where` ("x.json: params") and the
+// file, both escaped: "x.json: params.view.image = 'a.png': file not found: 'a.png'".
+io::Image loadSwarmImage(const std::string& nameOrPath, const std::string& where) {
+  try {
+    std::error_code ec;  // a name too long for a path is "not found", not an exception
+    const std::filesystem::path asset = findAssetDir() / "textures" / (nameOrPath + ".png");
+    return io::readPng(std::filesystem::exists(asset, ec) ? asset : std::filesystem::path(nameOrPath));
+  } catch (const Error& e) {
+    throw Error(where + ".view.image = '" + io::printable(nameOrPath, 120) + "': " + io::printable(e.what(), 400));
+  }
 }
 
 class SwarmStage final : public ModelStage<sim::Swarm> {
  public:
-  SwarmStage(const sim::SwarmParams& simParams, const SwarmViewParams& view, gl::ShaderLibrary& shaders)
-      : ModelStage(shaders, simParams), m_renderer(shaders), m_view(view) {}
+  // `image`: view.image decoded (the scene's image mode), or nullopt.
+  SwarmStage(const sim::SwarmParams& simParams, const SwarmViewParams& view, std::optional<io::Image> image,
+             gl::ShaderLibrary& shaders)
+      : ModelStage(shaders, simParams), m_renderer(shaders), m_view(view) {
+    if (image) {
+      m_image = std::move(*image);
+      m_imageName = view.image;
+    }
+    if (view.colorMode != SwarmColorMode::Image) m_otherMode = view.colorMode;
+  }
 
   void visitParams(ParamVisitor& v) override { visitAll(v, m_model.params(), m_view); }
 
@@ -93,6 +109,7 @@ class SwarmStage final : public ModelStage<sim::Swarm> {
     m_view.image = path;
     m_view.colorMode = SwarmColorMode::Image;
     m_coloredImage.clear();
+    m_imageName.clear();  // the same path may hold a new file: syncColors takes m_dropped
     m_warning.clear();
     return "";
   }
@@ -148,25 +165,54 @@ class SwarmStage final : public ModelStage<sim::Swarm> {
 
   // Image colours mark where each particle started: a new image restarts the swarm (as the seed does).
   void syncColors() {
-    if (m_view.colorMode != SwarmColorMode::Image) return;
+    if (m_view.colorMode != SwarmColorMode::Image) {
+      m_otherMode = m_view.colorMode;
+      return;
+    }
     if (m_coloredImage == m_view.image && m_renderer.hasColors(m_model)) return;
-    m_coloredImage = m_view.image;
+    if ((m_image.rgba.empty() || m_view.image != m_imageName) && !loadImage()) return;
+    if (m_coloredImage == m_view.image && m_renderer.hasColors(m_model)) return;  // a refused edit: as it was
     try {
-      const io::Image image =
-          m_dropped && m_dropped->first == m_view.image ? std::move(m_dropped->second) : loadSwarmImage(m_view.image);
-      m_dropped.reset();
       if (m_model.time() > 0.0) m_model.reset();
-      m_renderer.colorFromImage(m_model, image);
-      m_warning.clear();
+      m_renderer.colorFromImage(m_model, m_image);
+      m_coloredImage = m_view.image;
     } catch (const Error& e) {
       m_warning = e.what();
       log::error(m_warning);
+      m_view.colorMode = m_otherMode;
+    }
+  }
+
+  // Decodes view.image (or takes what dropFile decoded). A file that fails changes nothing: the
+  // view goes back to the image it had (or to its other colour mode) and the status line says
+  // why, once.
+  bool loadImage() {
+    try {
+      m_image = m_dropped && m_dropped->first == m_view.image ? std::move(m_dropped->second)
+                                                              : loadSwarmImage(m_view.image, "params");
+      m_imageName = m_view.image;
+      m_dropped.reset();
+      m_warning.clear();
+      return true;
+    } catch (const Error& e) {
+      m_dropped.reset();
+      m_warning = std::string("not loaded: ") + e.what();
+      log::error(m_warning);
+      if (m_image.rgba.empty()) {
+        m_view.colorMode = m_otherMode;
+        return false;
+      }
+      m_view.image = m_imageName;
+      return true;
     }
   }
 
   SwarmRenderer m_renderer;
   SwarmViewParams m_view;
   std::string m_coloredImage;                                  // image the colour buffer was made from
+  io::Image m_image;                                           // view.image decoded, for restarts to recolour
+  std::string m_imageName;                                     // the view.image it came from
+  SwarmColorMode m_otherMode = SwarmColorMode::Single;         // the mode before image, to go back to
   std::optional<std::pair<std::string, io::Image>> m_dropped;  // decoded by dropFile, for syncColors
   std::string m_warning;
   double m_clock = 0.0;  // frames shown x frame_seconds (not slowed by speed): drives the hue cycle
@@ -176,9 +222,13 @@ SceneParams parseSwarmParams(const io::Json& params, const std::string& where) {
   return readSceneParams<SwarmSceneParams>(params, where);
 }
 
-std::unique_ptr<Stage> createSwarmStage(const SceneParams& params, const std::string&, gl::ShaderLibrary& shaders) {
+// A scene in image mode names a file that must load: refused here, like a missing mesh or rules file.
+std::unique_ptr<Stage> createSwarmStage(const SceneParams& params, const std::string& where,
+                                        gl::ShaderLibrary& shaders) {
   const SwarmSceneParams& p = params.as<SwarmSceneParams>();
-  return std::make_unique<SwarmStage>(p.model, p.view, shaders);
+  std::optional<io::Image> image;
+  if (p.view.colorMode == SwarmColorMode::Image) image = loadSwarmImage(p.view.image, where);
+  return std::make_unique<SwarmStage>(p.model, p.view, std::move(image), shaders);
 }
 
 }  // namespace

@@ -114,3 +114,22 @@ TEST(BadInput, FluidParametersNameTheKeyAndTheLimit) {
                                              "fill_max": [1, 1, 1], "domain_max": [1, 1, 1]}})"),
                      "fluid: particles.spacing = 0.001 m would make about 1e+09 particles, but at most ", 1);
 }
+
+TEST(BadInput, FillDenserThanAnyPackingNamesTheCountAndTheKeys) {
+  test::TempDir dir;
+  // 200,000 particles drawn in a 0.1 mm box: all in one grid cell, a first frame of 4e10 pairs.
+  const std::string particles = R"("fill": "random", "random_count": 200000, "fill_min": [0, 0, 0],
+                                   "fill_max": [0.0001, 0.0001, 0.0001])";
+  dir.write("balls.json", R"({"model": "balls", "params": {"particles": {"radius": 0.01, )" + particles + "}}}");
+  expectOneLineError({"render", (dir / "balls.json").string(), "--frames", "1", "--out", (dir / "o").string()},
+                     "balls: particles.random_count = 200000 balls do not fit in the random fill's region (8e-06 m^3 "
+                     "with particles.radius = 0.01 m): at most 1 do, even hexagonally close packed (74% of the "
+                     "space); lower particles.random_count, widen particles.fill_min .. fill_max or lower "
+                     "particles.radius",
+                     1);
+  dir.write("fluid.json", R"({"model": "fluid", "params": {"particles": {"spacing": 0.02, )" + particles + "}}}");
+  expectOneLineError({"render", (dir / "fluid.json").string(), "--frames", "1", "--out", (dir / "o").string()},
+                     "fluid: particles.random_count = 200000 particles do not fit in the random fill's region "
+                     "(8e-06 m^3 with particles.spacing = 0.02 m): at most 1 do",
+                     1);
+}

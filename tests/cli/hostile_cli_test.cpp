@@ -2,6 +2,8 @@
 // end the run with one line naming the file, the place and the limit, and exit status 1.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <fstream>
 
 #include "support/gl_test.h"
@@ -49,4 +51,34 @@ TEST(HostileCli, ObstacleMeshTooLarge) {
                           mesh + R"("}]}})");
   test::expectRenderFails((dir / "s.json").string(), (dir / "o").string(),
                           "huge.obj' is 300 MiB, larger than the 256 MiB allowed for an OBJ mesh");
+}
+
+TEST(HostileCli, SwarmImageMissingTooLargeTruncatedOrNotAFile) {
+  test::TempDir dir;
+  auto scene = [&](const std::string& name, const std::string& image) {
+    dir.write(name, R"({"model": "swarm", "params": {"particles": 1000,
+                        "view": {"color_mode": "image", "image": ")" +
+                        image + R"("}}})");
+    return std::vector<std::string>{"render", (dir / name).string(), "--frames", "2", "--size", "32x16",
+                                    "--out",  (dir / "o").string()};
+  };
+  const std::string key = ": params.view.image = '";
+  expectOneLineError(scene("missing.json", "nosuchimage"),
+                     (dir / "missing.json").string() + key + "nosuchimage': file not found: 'nosuchimage'");
+  const std::string big = sparse(dir, "big.png", 80u << 20);
+  expectOneLineError(scene("big.json", big), key + big + "': '" + big + "' is 80 MiB, larger than the 64 MiB allowed");
+  // The first 60 bytes of a real PNG: the header, then a cut image data chunk.
+  const std::string whole = (std::filesystem::path(TIDEPOOL_SOURCE_DIR) / "assets/textures/colors.png").string();
+  std::string bytes(60, '\0');
+  std::ifstream(whole, std::ios::binary).read(bytes.data(), 60);
+  dir.write("cut.png", bytes);
+  expectOneLineError(scene("cut.json", (dir / "cut.png").string()),
+                     key + (dir / "cut.png").string() + "': " + (dir / "cut.png").string() + ": byte 33: chunk 'IDAT'");
+  expectOneLineError(
+      scene("zero.json", "/dev/zero"),
+      key + "/dev/zero': '/dev/zero' is not a regular file (a device, pipe or socket): give a PNG image");
+  ASSERT_EQ(mkfifo((dir / "fifo").c_str(), 0600), 0);
+  expectOneLineError(scene("fifo.json", (dir / "fifo").string()), "fifo' is not a regular file");
+  // A name with a line break in it stays on the line, escaped.
+  expectOneLineError(scene("nl.json", "a\\nb"), key + "a\\x0ab': file not found: 'a\\x0ab'");
 }

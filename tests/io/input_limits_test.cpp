@@ -228,6 +228,24 @@ TEST(InputLimits, PngChunksAndImageDataAreCheckedBeforeStbTrustsThem) {
   EXPECT_NE(m.find("thin.png: "), std::string::npos) << m;
   EXPECT_NE(m.find(" bytes of image data cannot fill the 8192 x 8192 pixels its header claims"), std::string::npos)
       << m;
+  // An empty IDAT before the data: stb would copy its zero bytes to a null pointer (a fuzzer
+  // found this undefined behaviour; tests/fuzz/regressions/png/empty-first-idat.png).
+  std::vector<std::uint8_t> empty = written(2, 2);
+  const std::vector<std::uint8_t> type = {'I', 'D', 'A', 'T'};
+  const std::uint32_t crc = io::crc32(type);
+  std::vector<std::uint8_t> chunk = {0, 0, 0, 0, 'I', 'D', 'A', 'T'};
+  for (int i = 3; i >= 0; --i) chunk.push_back(std::uint8_t(crc >> (8 * i)));
+  empty.insert(empty.begin() + 33, chunk.begin(), chunk.end());  // right after IHDR
+  m = refusal([&] { io::decodePng(empty, "empty.png"); });
+  expectOneLine(m);
+  EXPECT_EQ(m, "empty.png: byte 33: chunk 'IDAT' is empty, which the decoder cannot read (re-save the image)");
+  // A deflate block of the reserved type 3: stb fails without a reason (reading it crashed).
+  std::vector<std::uint8_t> reserved = pngHeader(2, 2);
+  const std::vector<std::uint8_t> idat = {'I', 'D', 'A', 'T', 0x78, 0x9c, 0x07, 0, 0, 0, 0, 1};
+  std::copy(idat.begin(), idat.end(), reserved.begin() + 37);  // same length: only the CRC is off
+  m = refusal([&] { io::decodePng(reserved, "reserved.png"); });
+  expectOneLine(m);
+  EXPECT_EQ(m, "reserved.png: cannot decode the PNG image (damaged image data; the decoder gives no reason)");
   // Untouched, both decode.
   EXPECT_EQ(io::decodePng(written(1024, 1024), "w.png").width, 1024);
   EXPECT_EQ(io::decodePng(written(2, 2), "w.png").rgba.size(), 16u);

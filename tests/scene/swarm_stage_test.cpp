@@ -2,6 +2,8 @@
 // dropped images recolour, the mouse adds an attractor.
 #include <gtest/gtest.h>
 
+#include <optional>
+
 #include "io/png.h"
 #include "scene/scene.h"
 #include "sim/swarm/swarm_params.h"
@@ -25,6 +27,22 @@ class SetInteger final : public test::NullVisitor {
  private:
   std::string m_key;
   int m_value;
+};
+
+// Sets (when `value` is given) and reads one text parameter through visitParams.
+class TextParam final : public test::NullVisitor {
+ public:
+  explicit TextParam(const char* key, std::optional<std::string> value = std::nullopt) : m_key(key), m_value(value) {}
+  void text(const ParamInfo& info, std::string& value) override {
+    if (m_key != info.key) return;
+    if (m_value) value = *m_value;
+    seen = value;
+  }
+  std::string seen;
+
+ private:
+  std::string m_key;
+  std::optional<std::string> m_value;
 };
 
 std::unique_ptr<Stage> smallSwarm(gl::ShaderLibrary& shaders, const std::string& extra = "") {
@@ -71,6 +89,30 @@ TEST_F(SwarmStages, DroppedImageRecoloursAndABadOneIsReported) {
   EXPECT_NE(stage->dropFile((dir / "missing.png").string()).find("missing.png"), std::string::npos);
   stage->render(target, profiler);
   EXPECT_NE(stage->status().find("missing.png"), std::string::npos) << stage->status();
+}
+
+TEST_F(SwarmStages, AnImageEditThatCannotLoadKeepsTheOldImageAndSaysWhy) {
+  auto stage = smallSwarm(shaders(), ", \"view\": {\"color_mode\": \"image\", \"image\": \"colors\"}");
+  gl::GpuProfiler profiler;
+  RenderTarget target(32, 16);
+  stage->render(target, profiler);
+  for (int i = 0; i < 3; ++i) stage->step(profiler);
+  const double time = stage->simTime();
+  ASSERT_GT(time, 0.0);
+  TextParam edit("image", "/nonexistent/a\nb.png");
+  stage->visitParams(edit);
+  stage->render(target, profiler);
+  stage->render(target, profiler);
+  const std::string status = stage->status();
+  EXPECT_NE(status.find("\nnot loaded: params.view.image = '/nonexistent/a\\x0ab.png': file not found: "
+                        "'/nonexistent/a\\x0ab.png'"),
+            std::string::npos)
+      << status;
+  EXPECT_EQ(status.find('\n'), status.rfind('\n')) << "the refusal is one line: " << status;
+  TextParam read("image");
+  stage->visitParams(read);
+  EXPECT_EQ(read.seen, "colors") << "the old image stays";
+  EXPECT_EQ(stage->simTime(), time) << "nothing restarted the swarm";
 }
 
 TEST_F(SwarmStages, LeftButtonAddsTheMouseAttractor) {

@@ -9,6 +9,7 @@
 #include "gl/buffer.h"
 #include "gl/gl.h"
 #include "sim/particle_memory.h"
+#include "sim/water/water_init.h"
 #include "support/gl_test.h"
 
 using namespace tidepool;
@@ -71,6 +72,36 @@ TEST_F(ParticleMemory, RequestsOverTheFitThrowOneLineWithTheNumbers) {
   }
   EXPECT_THROW(sim::checkParticleRequest("balls", "ball", std::nan(""), "NaN", cost, "fix"), Error);
   EXPECT_THROW(sim::checkParticleRequest("balls", "ball", INFINITY, "inf", cost, "fix"), Error);
+}
+
+// A fill that places more balls than its space holds at the densest packing starts them on top of
+// each other (every ball in a few grid cells: a first step of O(n^2) pairs that never ends).
+TEST_F(ParticleMemory, FillsDenserThanAnyPackingAreRefusedWithTheKeys) {
+  const sim::ParticleCost cost{.maxParticles = 0, .arrayBytes = 16, .gpuBytes = 96};
+  water::Setup s;
+  s.fill = water::Fill::Random;
+  s.radius = 0.01f;
+  s.domainMin = s.fillMin = glm::vec3(0.0f);
+  s.domainMax = s.fillMax = glm::vec3(1.0f);
+  // Centres in [r, 1 - r]^3, balls in [0, 1]^3: 1 m^3 / 4 sqrt(2) r^3 = 176776 hexagonally close packed.
+  EXPECT_EQ(water::fillCapacity(s), 176776.0);
+  EXPECT_NO_THROW(water::checkWaterRequest("balls", "ball", "particles.radius = 0.01 m", 176776, s, cost));
+  try {
+    water::checkWaterRequest("balls", "ball", "particles.radius = 0.01 m", 176777, s, cost);
+    FAIL() << "176777 balls do not fit";
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(),
+                 "balls: particles.random_count = 176777 balls do not fit in the random fill's region (1 m^3 with "
+                 "particles.radius = 0.01 m): at most 176776 do, even hexagonally close packed (74% of the space); "
+                 "lower particles.random_count, widen particles.fill_min .. fill_max or lower particles.radius");
+  }
+  // A region narrower than a ball still holds one; a lattice fill is bounded by the domain.
+  s.fillMax = glm::vec3(1e-4f);
+  EXPECT_EQ(water::fillCapacity(s), 1.0);
+  s.fill = water::Fill::Lattice;
+  EXPECT_EQ(water::fillCapacity(s), 176776.0);
+  s.fill = water::Fill::Block;
+  EXPECT_EQ(water::fillCapacity(s), INFINITY) << "a block fill places its own lattice";
 }
 
 // Asking the driver for a terabyte: GL_OUT_OF_MEMORY becomes a GlError naming the size, the

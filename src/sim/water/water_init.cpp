@@ -1,6 +1,7 @@
 #include "sim/water/water_init.h"
 
 #include <cmath>
+#include <cstdio>
 #include <glm/gtc/matrix_transform.hpp>
 #include <random>
 
@@ -75,9 +76,40 @@ double obstacleBound(const std::vector<ObstacleParams>& obstacles, float radius)
   return n;
 }
 
+namespace {
+// m³ a random fill's balls may occupy (their centres' box, widened by r a side) or a lattice fill's
+// domain; 0 for the other fills.
+double fillSpace(const Setup& p) {
+  if (p.fill != Fill::Random && p.fill != Fill::Lattice) return 0;
+  glm::dvec3 extent = glm::dvec3(p.domainMax - p.domainMin);
+  if (p.fill == Fill::Random) {  // centres in [a, b], as waterParticles draws them
+    const glm::dvec3 a(glm::max(p.fillMin, p.domainMin + p.radius)), b(glm::min(p.fillMax, p.domainMax - p.radius));
+    extent = glm::max(b - a, glm::dvec3(0.0)) + 2.0 * double(p.radius);
+  }
+  return extent.x * extent.y * extent.z;
+}
+}  // namespace
+
+double fillCapacity(const Setup& p) {
+  if (p.fill != Fill::Random && p.fill != Fill::Lattice) return INFINITY;
+  return std::max(1.0, std::floor(fillSpace(p) / hcpCell(p.radius)));
+}
+
 void checkWaterRequest(const char* model, const char* particle, const std::string& size, double fillParticles,
                        const Setup& w, const sim::ParticleCost& cost) {
   const std::string key = size.substr(0, size.find(' '));  // "particles.radius"
+  if (const double capacity = fillCapacity(w); fillParticles > capacity) {
+    const bool random = w.fill == Fill::Random;
+    char line[512];
+    std::snprintf(line, sizeof line,
+                  "%s: particles.%s_count = %.0f %ss do not fit in %s (%.3g m^3 with %s): at most %.0f do, even "
+                  "hexagonally close packed (74%% of the space); lower particles.%s_count, widen %s or lower %s",
+                  model, random ? "random" : "lattice", fillParticles, particle,
+                  random ? "the random fill's region" : "the domain", fillSpace(w), size.c_str(), capacity,
+                  random ? "random" : "lattice",
+                  random ? "particles.fill_min .. fill_max" : "particles.domain_min .. domain_max", key.c_str());
+    throw Error(line);
+  }
   sim::checkParticleRequest(model, particle,
                             fillParticles + (w.tap ? w.tapMax : 0) + obstacleBound(w.obstacles, w.radius), size, cost,
                             "raise " + key + " or shrink the fill and the obstacles");

@@ -45,9 +45,16 @@ double fillVolume(const Setup& p);      // m³ of a block or slab fill's region 
 double estimatedWater(const Setup& p);  // balls a fill makes: volume / (4√2 r³) on the HCP lattice
 // An upper bound on the obstacles' particles: each obstacle's box (2 size per axis) filled solid.
 double obstacleBound(const std::vector<ObstacleParams>& obstacles, float radius);
+// The most particles of radius r a random fill's region (its centres' box, widened by r a side) or
+// a lattice fill's domain holds: the region's volume / 4√2 r³, the volume per ball of hexagonal
+// close packing (74 %, the densest there is; random close packing reaches 64 %), at least 1.
+// Infinite for the other fills, which place particles on a lattice inside their region.
+double fillCapacity(const Setup& p);
 // The water's count check (balls, fluid), before anything is built: `fillParticles` (the fill's
-// estimate), the tap's maximum and the obstacles' bound against what fits; `size` names the key
-// that sets the count ("particles.radius = 0.0001 m"). Throws Error (sim/particle_memory.h).
+// estimate) against fillCapacity (more would start on top of each other: every ball in a few grid
+// cells, a first step of O(n²) pairs), then with the tap's maximum and the obstacles' bound
+// against what fits; `size` names the key that sets the count ("particles.radius = 0.0001 m").
+// Throws Error (sim/particle_memory.h).
 void checkWaterRequest(const char* model, const char* particle, const std::string& size, double fillParticles,
                        const Setup& w, const sim::ParticleCost& cost);
 

@@ -96,15 +96,15 @@ TEST_F(BallsTest, AccelerationsAndOrderAreAllocatedOnlyWhenUsed) {
 TEST_F(BallsTest, NothingIsLostOrEscapesAndNothingIsNaN) {
   Params p = test::emptyTank();
   p.fill = Fill::Random;
-  p.randomCount = 1500;
   p.fillMin = p.domainMin;
   p.fillMax = p.domainMax;
-  p.dt = 1e-3f;  // coarse on purpose
+  p.randomCount = int(water::fillCapacity(p));  // as crowded as a fill may be: 1325, close packed
+  p.dt = 1e-3f;                                 // coarse on purpose
   Balls b(shaders(), p);
   gl::GpuProfiler profiler;
   for (int i = 0; i < 40; ++i) b.step(profiler);
   const Stats s = b.stats();
-  EXPECT_EQ(s.count, 1500u);
+  EXPECT_EQ(s.count, std::size_t(p.randomCount));
   EXPECT_EQ(s.nonFinite, 0u);
   EXPECT_EQ(s.outside, 0u);
 }
