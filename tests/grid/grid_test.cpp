@@ -177,6 +177,21 @@ void reorderSweep(gl::ShaderLibrary& shaders, const GridParams& params, uint32_t
       for (bool withPermutation : {false, true})
         expectArraysFollowThePermutation(shaders, params, n, arrays, withPermutation, seed + uint32_t(n));
 }
+
+// The count pass's atomic slots overwritten with the worst order scheduling could give: each
+// cell's particles in reverse index order. On llvmpipe the slots mostly come out in index order
+// already, so without this a rank that kept the atomic slots would pass.
+void reverseSlots(const UniformGrid& grid, const std::vector<glm::vec4>& pos) {
+  const std::vector<uint32_t> counts = reference::histogram(grid.shape(), pos);
+  std::vector<uint32_t> taken(counts.size(), 0), slots(pos.size());
+  for (std::size_t i = 0; i < pos.size(); ++i) {
+    const uint32_t cell = reference::cellOf(grid.shape(), glm::vec3(pos[i]));
+    slots[i] = counts[cell] - 1 - taken[cell]++;
+  }
+  glBindBuffer(GL_COPY_WRITE_BUFFER, grid.indexInCell().id());
+  glBufferSubData(GL_COPY_WRITE_BUFFER, 0, GLsizeiptr(slots.size() * 4), slots.data());
+  glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+}
 }  // namespace
 
 TEST_F(UniformGridTest, ExampleFromTheHeader) {
@@ -329,6 +344,41 @@ TEST_F(UniformGridTest, ReorderFromCellOrderKeepsTheCells) {
     std::sort(y.begin(), y.end());
     ASSERT_EQ(x, y) << "cell " << cell;
   }
+}
+
+// Both rank paths (the rank pass moving the positions itself, and the rank alone before a
+// scatter) give the stable counting sort from reversed slots; the atomic order keeps them reversed.
+TEST_F(UniformGridTest, StableOrderDoesNotDependOnTheAtomicSlots) {
+  GridParams params{.domainMin = {-1, 0, 2}, .domainMax = {3, 2, 3.5f}, .cellSize = 0.25f};
+  const std::vector<glm::vec4> pos = makePositions(params, 6000, 0.5f, 31);
+  const std::size_t n = pos.size();
+  UniformGrid grid(shaders(), params);
+  gl::Buffer posBuf = vec4Buffer(pos), posOut(posBuf.size()), velOut(posBuf.size()), perm(n * 4);
+  gl::Buffer vel = vec4Buffer(std::vector<glm::vec4>(n, glm::vec4(1.0f)));
+  grid.build(posBuf, n);
+  const std::vector<uint32_t> starts = grid.cellStart().read<uint32_t>(grid.cells() + 1);
+  const std::vector<uint32_t> want = reference::stableOrder(grid.shape(), pos);
+  {
+    SCOPED_TRACE("rank and scatter in one pass");
+    reverseSlots(grid, pos);
+    grid.reorder(posBuf, {{&posBuf, &posOut}}, &perm);
+    expectStableOrder(perm.read<uint32_t>(n), want, starts);
+  }
+  {
+    SCOPED_TRACE("rank, then the scatter");
+    reverseSlots(grid, pos);
+    grid.reorder(posBuf, {{&vel, &velOut}}, &perm);
+    expectStableOrder(perm.read<uint32_t>(n), want, starts);
+  }
+  grid.setStable(false);
+  reverseSlots(grid, pos);
+  grid.reorder(posBuf, {{&posBuf, &posOut}}, &perm);
+  const std::vector<uint32_t> atomic = perm.read<uint32_t>(n);
+  std::size_t reversedCells = 0;
+  for (std::size_t cell = 0; cell + 1 < starts.size(); ++cell)
+    if (starts[cell + 1] - starts[cell] > 1)
+      reversedCells += atomic[starts[cell]] == want[starts[cell + 1] - 1] ? 1 : 0;
+  EXPECT_GT(reversedCells, 100u) << "the reversed slots must reach the reorder";
 }
 
 TEST_F(UniformGridTest, CountsAndStartsAreDeterministic) {

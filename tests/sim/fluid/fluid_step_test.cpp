@@ -18,6 +18,10 @@ namespace {
 
 using FluidTest = test::GlTest;
 
+// The README's figure: fp32 against double, measured 2.2e-6 (one iteration) and 2.5e-6 (three,
+// with XSPH, vorticity, damping and the shell) of the largest displacement and speed.
+constexpr double kStepError = 4e-6;
+
 Params box() {
   Params p;
   p.setSpacing(0.02f);
@@ -128,8 +132,8 @@ TEST_F(FluidTest, OneSolverIterationEqualsTheCpuReference) {
   double velocityError = 0;
   const double error = run(shaders(), p, false, &velocityError);
   std::printf("one iteration: displacement error %.3g, velocity error %.3g (relative)\n", error, velocityError);
-  EXPECT_LT(error, 1e-5);
-  EXPECT_LT(velocityError, 1e-5);
+  EXPECT_LT(error, kStepError);
+  EXPECT_LT(velocityError, kStepError);
 }
 
 TEST_F(FluidTest, IterationsViscosityVorticityAndObstacleEqualTheCpuReference) {
@@ -137,11 +141,11 @@ TEST_F(FluidTest, IterationsViscosityVorticityAndObstacleEqualTheCpuReference) {
   p.iterations = 3;
   p.viscosity = 0.05f;
   p.vorticity = 0.5f;
-  p.damping = 0.3f;
+  p.damping = 3.0f;  // 1/s: strong enough that damping before gravity shows (2.6e-5)
   double velocityError = 0;
   const double error = run(shaders(), p, true, &velocityError);
   std::printf("3 iterations, XSPH, vorticity, sphere shell: displacement error %.3g, velocity error %.3g\n", error,
               velocityError);
-  EXPECT_LT(error, 1e-5);
-  EXPECT_LT(velocityError, 1e-5);
+  EXPECT_LT(error, kStepError);
+  EXPECT_LT(velocityError, kStepError);
 }
