@@ -1,6 +1,8 @@
 #include "cli/commands.h"
 
-#include <regex>
+#include <algorithm>
+#include <cctype>
+#include <string_view>
 
 #include "app/headless.h"
 #include "app/window_app.h"
@@ -9,6 +11,7 @@
 #include "gl/context_window.h"
 #include "gl/info.h"
 #include "gl/selftest.h"
+#include "io/json.h"
 #include "scene/scene.h"
 
 namespace tidepool::cli {
@@ -51,25 +54,56 @@ struct ResolutionOpts {
   std::vector<std::string> sets;  // KEY=VALUE
 };
 
+// Nesting of a JSON value: 0 for a number or string, 1 for [1, 2], 2 for {"a": [1]}. The value
+// came through parseJson, so it is at most kMaxJsonDepth deep and the recursion is bounded.
+int jsonDepth(const io::Json& value) {
+  int deepest = 0;
+  if (value.is_structured())
+    for (const io::Json& child : value) deepest = std::max(deepest, jsonDepth(child));
+  return value.is_structured() ? deepest + 1 : 0;
+}
+
+bool isName(std::string_view s) {
+  const auto letter = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; };
+  const auto letterOrDigit = [&](char c) { return letter(c) || std::isdigit(static_cast<unsigned char>(c)); };
+  return !s.empty() && letter(s[0]) && std::all_of(s.begin() + 1, s.end(), letterOrDigit);
+}
+
 // --set view.mode=water: the value as JSON when it reads as JSON (3, true, [0,1,0]), else as text.
+// Read in one pass, under the size and depth limits of a scene file: the dotted key's names count
+// as levels of nesting, as they do in the object they become.
 io::Json setOverride(const std::string& text) {
-  static const std::regex form(R"(([A-Za-z_][A-Za-z0-9_]*(\.[A-Za-z_][A-Za-z0-9_]*)*)=(.*))");
-  std::smatch m;
-  if (!std::regex_match(text, m, form) || m[3].length() == 0)
-    throw Error("--set '" + io::printable(text) + "' is not KEY=VALUE with a params key (e.g. view.mode=water)");
-  io::Json value;
-  try {
-    value = io::parseJson(m[3].str(), "--set");
-  } catch (const Error&) {
-    value = m[3].str();
+  const std::string shown = "--set '" + io::printable(text) + "'";
+  if (text.size() > io::kMaxJsonFileBytes)
+    throw Error(shown + ": " + io::byteSize(text.size()) + ", larger than the " + io::byteSize(io::kMaxJsonFileBytes) +
+                " allowed for JSON");
+  const std::size_t equals = text.find('=');
+  std::vector<std::string> keys;
+  for (std::size_t begin = 0; equals != std::string::npos && begin <= equals;) {
+    const std::size_t dot = std::min(text.find('.', begin), equals);
+    keys.push_back(text.substr(begin, dot - begin));
+    if (!isName(keys.back()) || keys.size() > std::size_t(io::kMaxJsonDepth)) break;
+    begin = dot + 1;
   }
-  const std::string key = m[1].str();
-  io::Json patch = value;
-  for (std::size_t end = key.size(); end != std::string::npos;) {
-    const std::size_t dot = key.rfind('.', end - 1);
-    const std::size_t begin = dot == std::string::npos ? 0 : dot + 1;
-    patch = io::Json{{key.substr(begin, end - begin), patch}};
-    end = dot == std::string::npos || dot == 0 ? std::string::npos : dot;
+  if (equals == std::string::npos || equals + 1 == text.size() || keys.empty() || !isName(keys.back()))
+    throw Error(shown + " is not KEY=VALUE with a params key (e.g. view.mode=water)");
+  if (keys.size() > std::size_t(io::kMaxJsonDepth))
+    throw Error(shown + ": the key is nested deeper than the " + std::to_string(io::kMaxJsonDepth) +
+                " levels a scene may nest");
+  const std::string valueText = text.substr(equals + 1);
+  io::Json patch;
+  try {
+    patch = io::parseJson(valueText, "--set");
+  } catch (const Error&) {
+    patch = valueText;
+  }
+  if (keys.size() + std::size_t(jsonDepth(patch)) > std::size_t(io::kMaxJsonDepth))
+    throw Error(shown + ": the key and the value together are nested deeper than the " +
+                std::to_string(io::kMaxJsonDepth) + " levels a scene may nest");
+  for (auto key = keys.rbegin(); key != keys.rend(); ++key) {
+    io::Json level = io::Json::object();
+    level[*key] = std::move(patch);
+    patch = std::move(level);
   }
   return patch;
 }
@@ -97,12 +131,20 @@ io::Json applyResolutionOptions(const ResolutionOpts& o, io::Json overrides, std
 }  // namespace
 
 void parseSize(const std::string& text, int& width, int& height) {
-  static const std::regex size(R"((\d{1,5})x(\d{1,5}))");
-  std::smatch m;
-  if (!std::regex_match(text, m, size) || std::stoi(m[1]) == 0 || std::stoi(m[2]) == 0)
-    throw Error("--size '" + text + "' is not WIDTHxHEIGHT (e.g. 1280x720)");
-  width = std::stoi(m[1]);
-  height = std::stoi(m[2]);
+  // Up to five digits a side, as "1280x720": plain digits, no sign, space or exponent.
+  const auto side = [](std::string_view s, int& out) {
+    if (s.empty() || s.size() > 5 || !std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; }))
+      return false;
+    out = std::stoi(std::string(s));
+    return out > 0;
+  };
+  const std::size_t x = text.find('x');
+  int w = 0, h = 0;
+  if (x == std::string::npos || !side(std::string_view(text).substr(0, x), w) ||
+      !side(std::string_view(text).substr(x + 1), h))
+    throw Error("--size '" + io::printable(text) + "' is not WIDTHxHEIGHT (e.g. 1280x720)");
+  width = w;
+  height = h;
 }
 
 Command addInfo(CLI::App& app) {

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "base/error.h"
+#include "io/echo.h"
 
 namespace tidepool::io {
 
@@ -48,9 +49,10 @@ VideoWriter::VideoWriter(const std::filesystem::path& path, int width, int heigh
         << "-loop 0 ";
   else  // H.264 in yuv420p needs even sizes: pad by one pixel where needed
     cmd << "-vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -pix_fmt yuv420p -c:v libx264 -crf 18 ";
-  cmd << shellQuoted(path.string());
+  // Absolute, so the name starts with '/': ffmpeg never reads "-version" or "-" as an option or stdout.
+  cmd << shellQuoted(std::filesystem::absolute(path).string());
   m_pipe = popen(cmd.str().c_str(), "w");
-  if (!m_pipe) throw Error("cannot start ffmpeg to write '" + path.string() + "'");
+  if (!m_pipe) throw Error("cannot start ffmpeg to write '" + shownPath(path) + "'");
 }
 
 VideoWriter::~VideoWriter() {
@@ -60,14 +62,18 @@ VideoWriter::~VideoWriter() {
 void VideoWriter::write(const std::vector<std::uint8_t>& rgba) {
   if (!m_pipe || rgba.size() != m_frameBytes) throw Error("video frame has the wrong size");
   if (std::fwrite(rgba.data(), 1, rgba.size(), m_pipe) != rgba.size())
-    throw Error("ffmpeg stopped accepting frames for '" + m_path.string() + "'");
+    throw Error("ffmpeg stopped accepting frames for '" + shownPath(m_path) + "'");
 }
 
 void VideoWriter::close() {
   if (!m_pipe) return;
   const int status = pclose(m_pipe);
   m_pipe = nullptr;
-  if (status != 0) throw Error("ffmpeg failed writing '" + m_path.string() + "' (see its message above)");
+  if (status != 0) throw Error("ffmpeg failed writing '" + shownPath(m_path) + "' (see its message above)");
+  // ffmpeg can end well having written nothing: only a file that is there and holds bytes was written.
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(m_path, ec) || std::filesystem::file_size(m_path, ec) == 0 || ec)
+    throw Error("ffmpeg ended without writing '" + shownPath(m_path) + "' (see its message above)");
 }
 
 }  // namespace tidepool::io

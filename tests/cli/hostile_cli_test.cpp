@@ -82,3 +82,21 @@ TEST(HostileCli, SwarmImageMissingTooLargeTruncatedOrNotAFile) {
   // A name with a line break in it stays on the line, escaped.
   expectOneLineError(scene("nl.json", "a\\nb"), key + "a\\x0ab': file not found: 'a\\x0ab'");
 }
+
+TEST(HostileCli, SetTooLongOrTooDeep) {
+  test::TempDir dir;
+  const std::string out = (dir / "o").string();
+  // 100,000 characters of key: once a stack overflow in std::regex_match.
+  const test::ProcessResult r = expectOneLineError(
+      {"render", "blank", "--set", std::string(100000, 'a') + "=1", "--out", out}, "params.aaaaaaaaaa");
+  EXPECT_LT(r.err.size(), 400u) << "the key is cut";
+  // 10,000 levels of key: once 35 s of building, now refused at the depth of a scene file.
+  std::string deep = "a";
+  for (int i = 0; i < 10000; ++i) deep += ".a";
+  expectOneLineError({"render", "blank", "--set", deep + "=1", "--out", out},
+                     "the key is nested deeper than the 64 levels a scene may nest");
+  expectOneLineError({"render", "blank", "--set", "a.b.c=" + std::string(62, '[') + std::string(62, ']'), "--out", out},
+                     "the key and the value together are nested deeper than the 64 levels a scene may nest");
+  for (const char* bad : {"=1", "a=", "a..b=1", "a.=1", ".a=1", "1a=1", "a-b=1", "a"})
+    expectOneLineError({"render", "blank", "--set", bad, "--out", out}, "is not KEY=VALUE with a params key");
+}
