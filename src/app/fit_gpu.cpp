@@ -10,6 +10,7 @@
 #include "base/log.h"
 #include "gl/gl.h"
 #include "gl/gpu_profiler.h"
+#include "io/echo.h"
 #include "render/target.h"
 #include "scene/scene.h"
 #include "sim/balls/balls_params.h"
@@ -34,7 +35,7 @@ io::Json atResolution(const io::Json& overrides, double resolution) {
 double statedResolution(const Scene& scene) {
   if (scene.params.holds<balls::Params>()) return scene.params.model<balls::Params>().resolution;
   if (scene.params.holds<fluid::Params>()) return scene.params.model<fluid::Params>().resolution;
-  throw Error("--fit-gpu refines water (balls or fluid scenes, particles.resolution); '" + scene.name +
+  throw Error("--fit-gpu refines water (balls or fluid scenes, particles.resolution); '" + io::printable(scene.name) +
               "' runs model " + scene.model);
 }
 

@@ -10,6 +10,7 @@
 #include "app/progress.h"
 #include "base/log.h"
 #include "io/checkpoint_path.h"
+#include "io/echo.h"
 #include "io/video.h"
 #include "render/particle_exporter.h"
 #include "scene/checkpoint.h"
@@ -56,7 +57,7 @@ int renderHeadless(const RenderJob& request) {
   if (!job.outDir.empty()) {
     std::error_code ec;
     std::filesystem::create_directories(job.outDir, ec);
-    if (ec) throw Error("cannot create output folder '" + job.outDir.string() + "': " + ec.message());
+    if (ec) throw Error("cannot create output folder '" + io::shownPath(job.outDir) + "': " + ec.message());
   }
 
   auto context = gl::createHeadlessContext({job.backend, job.debugGl});

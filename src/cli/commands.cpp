@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <string_view>
 
 #include "app/headless.h"
@@ -37,7 +40,7 @@ void addCheckpointOptions(CLI::App* sub, CheckpointOpts& o) {
                   "write checkpoints to this file (atomically; default: beside the output, e.g. out/dam.ckpt)");
   sub->add_option("--checkpoint-every", o.every,
                   "save a checkpoint every this many simulated seconds, and after the last frame")
-      ->check(CLI::PositiveNumber);
+      ->check(finitePositive());
 }
 
 void applyCheckpointOptions(const CheckpointOpts& o, RenderJob& job) {
@@ -112,10 +115,10 @@ void addResolutionOptions(CLI::App* sub, ResolutionOpts& o) {
   sub->add_option("--resolution", o.resolution,
                   "water: refine the particle spacing R times, keeping the setup (counts x R^3, dt / R; "
                   "sets params.particles.resolution)")
-      ->check(CLI::Range(0.05, 64.0));
+      ->check(finiteRange(0.05, 64.0));
   sub->add_flag("--fit-gpu", o.fit, "water: the finest resolution whose frame (steps + render) fits --budget here");
   sub->add_option("--budget", o.budgetMs, "with --fit-gpu: ms per frame (default 33.3, 30 frames/s)")
-      ->check(CLI::Range(0.1, 1e6));
+      ->check(finiteRange(0.1, 1e6));
   sub->add_option("--set", o.sets, "set a scene parameter, KEY=VALUE (e.g. view.mode=water); repeatable");
 }
 
@@ -145,6 +148,48 @@ void parseSize(const std::string& text, int& width, int& height) {
     throw Error("--size '" + io::printable(text) + "' is not WIDTHxHEIGHT (e.g. 1280x720)");
   width = w;
   height = h;
+}
+
+namespace {
+
+std::string compact(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", v);
+  return text;
+}
+
+// The number CLI11 will read, or a message why it is not one that fits.
+std::string finiteNumber(const std::string& text, double& v) {
+  char* end = nullptr;
+  v = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size()) return "'" + io::printable(text) + "' is not a number";
+  if (!std::isfinite(v)) return io::printable(text) + " is not a finite number";
+  return "";
+}
+
+}  // namespace
+
+CLI::Validator finiteRange(double min, double max) {
+  const std::string range = "[" + compact(min) + ", " + compact(max) + "]";
+  return CLI::Validator(
+      [min, max, range](std::string& text) {
+        double v = 0;
+        std::string why = finiteNumber(text, v);
+        if (why.empty() && !(v >= min && v <= max)) why = compact(v) + " is out of range " + range;
+        return why;
+      },
+      "in " + range);
+}
+
+CLI::Validator finitePositive() {
+  return CLI::Validator(
+      [](std::string& text) {
+        double v = 0;
+        std::string why = finiteNumber(text, v);
+        if (why.empty() && !(v > 0)) why = compact(v) + " is not above 0";
+        return why;
+      },
+      "above 0");
 }
 
 Command addInfo(CLI::App& app) {
@@ -194,11 +239,13 @@ Command addRender(CLI::App& app) {
       ->needs(exportOpt);
   sub->add_option("--surface-smoothing", o->surface.smoothing,
                   "with --export surface: the density kernel's reach in particle radii (default 4)")
-      ->needs(exportOpt);
+      ->needs(exportOpt)
+      ->check(finiteRange(1.0, 16.0));
   sub->add_option(
          "--surface-iso", o->surface.iso,
          "with --export surface: the level of the density (1 = water at rest) the surface passes (default 0.5)")
-      ->needs(exportOpt);
+      ->needs(exportOpt)
+      ->check(finiteRange(0.0, 1.0));
   sub->add_option("--surface-format", o->surfaceFormat,
                   "with --export surface: ply (default; x y z nx ny nz and faces), obj or vtk (+ surface.pvd)")
       ->needs(exportOpt);
@@ -300,7 +347,7 @@ Command addRun(CLI::App& app) {
             job.backend = backend;
             job.debugGl = o->debugGl || kDebugBuild;
             applyCheckpointOptions(o->checkpoints, job);
-            log::info("no display: rendering '" + scene.name + "' headless");
+            log::info("no display: rendering '" + io::printable(scene.name) + "' headless");
             renderHeadless(job);
             return 0;
           }};

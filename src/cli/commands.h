@@ -20,7 +20,12 @@ Command addValidate(CLI::App& app);
 Command addSoak(CLI::App& app);
 Command addCheckResume(CLI::App& app);
 
-// "1280x720" -> width, height (throws CLI::ValidationError style Error otherwise).
+// "1280x720" -> width, height (throws Error otherwise).
 void parseSize(const std::string& text, int& width, int& height);
+
+// Checks of floating-point options: a finite number (NaN and infinities refused) in [min, max],
+// or above zero; the bounds written compactly ("[0.05, 64]", "1e+06").
+CLI::Validator finiteRange(double min, double max);
+CLI::Validator finitePositive();
 
 }  // namespace tidepool::cli

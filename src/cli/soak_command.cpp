@@ -59,11 +59,11 @@ Command addSoak(CLI::App& app) {
   sub->add_option("--every", o->run.every, "steps between samples (default: steps / 20)")
       ->check(CLI::Range(1L, 1000000000L));
   sub->add_option("--warmup", o->limits.warmup, "fraction of the steps before the baselines (default 0.1)")
-      ->check(CLI::Range(0.0, 0.9));
+      ->check(finiteRange(0.0, 0.9));
   sub->add_option("--rss-tolerance", o->limits.rssGrowthMiB, "MiB the RSS may grow after warm-up (default 4)")
-      ->check(CLI::Range(0.0, 1e6));
+      ->check(finiteRange(0.0, 1e6));
   sub->add_option("--energy-factor", o->limits.energyFactor, "energy bound, times the warm-up's largest (default 10)")
-      ->check(CLI::Range(1.0, 1e12));
+      ->check(finiteRange(1.0, 1e12));
   sub->add_option("--backend", o->backend, "auto, egl or osmesa")->check(CLI::IsMember({"auto", "egl", "osmesa"}));
   return {sub, [o] { return soakScene(o->scene, o->run, o->limits, o->backend); }};
 }

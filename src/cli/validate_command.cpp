@@ -13,6 +13,7 @@
 
 #include "cli/commands.h"
 #include "gl/context.h"
+#include "io/echo.h"
 #include "scene/balls_stage.h"
 #include "scene/fluid_stage.h"
 #include "sim/balls/balls.h"
@@ -29,7 +30,7 @@ std::vector<std::string> parseProbes(const std::string& text) {
   std::stringstream ss(text);
   for (std::string p; std::getline(ss, p, ',');) {
     if (std::find(kProbes.begin(), kProbes.end(), p) == kProbes.end())
-      throw Error("--probe '" + p + "' is not one of: energy, overlap, density, front, height");
+      throw Error("--probe '" + io::printable(p) + "' is not one of: energy, overlap, density, front, height");
     out.push_back(p);
   }
   return out;
@@ -55,7 +56,8 @@ class Run {
       m_fluid = std::make_unique<fluid::Fluid>(shaders, fluidScene(scene).model);
       m_water = m_fluid->water();
     } else {
-      throw Error("validate runs balls and fluid scenes; '" + scene.name + "' is a " + scene.model + " scene");
+      throw Error("validate runs balls and fluid scenes; '" + io::printable(scene.name) + "' is a " + scene.model +
+                  " scene");
     }
   }
   const water::Setup& water() const { return m_water; }
@@ -99,7 +101,8 @@ int validate(const std::string& sceneName, const std::string& probeText, int eve
   const std::vector<std::string> probes = parseProbes(probeText);
   const Scene scene = loadScene(resolveScenePath(sceneName));
   if (scene.model != "balls" && scene.model != "fluid")
-    throw Error("validate runs balls and fluid scenes; '" + scene.name + "' is a " + scene.model + " scene");
+    throw Error("validate runs balls and fluid scenes; '" + io::printable(scene.name) + "' is a " + scene.model +
+                " scene");
   auto context = gl::createHeadlessContext({gl::parseBackend(backend), false});
   gl::ShaderLibrary shaders(gl::ShaderLibrary::findRoot());
   Run model(scene, shaders);
@@ -113,7 +116,7 @@ int validate(const std::string& sceneName, const std::string& probeText, int eve
   std::ofstream file;
   if (!csvPath.empty()) {
     file.open(csvPath);
-    if (!file) throw Error("cannot write '" + csvPath + "'");
+    if (!file) throw Error("cannot write '" + io::shownPath(csvPath) + "'");
   }
   std::ostream& out = csvPath.empty() ? std::cout : file;
   auto has = [&](const char* p) { return std::find(probes.begin(), probes.end(), p) != probes.end(); };
@@ -160,7 +163,7 @@ Command addValidate(CLI::App& app) {
   sub->add_option("scene", o->scene, "balls or fluid scene file or name")->required();
   sub->add_option("--probe", o->probes, "comma list of energy, overlap, density, front, height");
   sub->add_option("--every", o->every, "steps between samples")->check(CLI::Range(1, 100000000));
-  sub->add_option("--until", o->until, "simulated seconds")->check(CLI::Range(0.0, 1e9));
+  sub->add_option("--until", o->until, "simulated seconds")->check(finiteRange(0.0, 1e9));
   sub->add_option("--csv", o->csv, "output file (default: standard output)");
   sub->add_option("--backend", o->backend, "auto, egl or osmesa")->check(CLI::IsMember({"auto", "egl", "osmesa"}));
   return {sub, [o] { return validate(o->scene, o->probes, o->every, o->until, o->csv, o->backend); }};

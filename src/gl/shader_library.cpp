@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "base/source_dir.h"
+#include "io/echo.h"
 
 namespace tidepool::gl {
 namespace fs = std::filesystem;
@@ -64,7 +65,8 @@ fs::path ShaderLibrary::findRoot() {
     const fs::path dir(env);
     std::error_code ec;
     if (!fs::is_directory(dir, ec) || access(dir.c_str(), R_OK | X_OK) != 0)
-      throw Error("shader directory '" + dir.string() + "' (from TIDEPOOL_SHADER_DIR) is not a readable directory");
+      throw Error("shader directory '" + io::shownPath(dir) +
+                  "' (from TIDEPOOL_SHADER_DIR) is not a readable directory");
     return dir;
   }
   const fs::path exeDir = executableDir();
@@ -78,7 +80,7 @@ fs::path ShaderLibrary::findRoot() {
 ShaderLibrary::ShaderLibrary(fs::path root) : m_root(std::move(root)) {
   std::error_code ec;
   if (!fs::is_directory(m_root, ec) || access(m_root.c_str(), R_OK | X_OK) != 0)
-    throw Error("shader directory '" + m_root.string() + "' is not a readable directory");
+    throw Error("shader directory '" + io::shownPath(m_root) + "' is not a readable directory");
 }
 
 ShaderFileReader ShaderLibrary::reader() const {

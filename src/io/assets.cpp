@@ -5,6 +5,7 @@
 
 #include "base/error.h"
 #include "base/source_dir.h"
+#include "io/echo.h"
 
 namespace tidepool::io {
 namespace fs = std::filesystem;
@@ -13,7 +14,7 @@ fs::path findAssetDir() {
   if (const char* env = std::getenv("TIDEPOOL_ASSET_DIR")) {
     std::error_code ec;
     if (!fs::is_directory(env, ec))
-      throw Error(std::string("asset directory '") + env + "' (from TIDEPOOL_ASSET_DIR) not found");
+      throw Error("asset directory '" + shownPath(env) + "' (from TIDEPOOL_ASSET_DIR) not found");
     return env;
   }
   std::error_code ec;

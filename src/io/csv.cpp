@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "base/error.h"
+#include "io/echo.h"
 #include "io/json.h"
 
 namespace tidepool::io {
@@ -37,12 +38,12 @@ CsvTable::CsvTable(const std::filesystem::path& file) : m_file(file) {
       continue;
     }
     if (fields.size() != m_header.size())
-      throw Error(file.string() + ":" + std::to_string(number) + ": " + std::to_string(fields.size()) +
+      throw Error(shownPath(file) + ":" + std::to_string(number) + ": " + std::to_string(fields.size()) +
                   " fields, the header has " + std::to_string(m_header.size()));
     m_cells.push_back(std::move(fields));
     m_lines.push_back(number);
   }
-  if (m_cells.empty()) throw Error("'" + file.string() + "' holds no rows");
+  if (m_cells.empty()) throw Error("'" + shownPath(file) + "' holds no rows");
 }
 
 bool CsvTable::has(const std::string& name) const {
@@ -51,7 +52,7 @@ bool CsvTable::has(const std::string& name) const {
 
 std::size_t CsvTable::column(const std::string& name) const {
   const auto it = std::find(m_header.begin(), m_header.end(), name);
-  if (it == m_header.end()) throw Error("'" + m_file.string() + "' has no column '" + name + "'");
+  if (it == m_header.end()) throw Error("'" + shownPath(m_file) + "' has no column '" + printable(name) + "'");
   return std::size_t(it - m_header.begin());
 }
 
@@ -61,10 +62,11 @@ double CsvTable::number(std::size_t row, const std::string& name) const {
   const std::string& s = text(row, name);
   char* end = nullptr;
   const double v = std::strtod(s.c_str(), &end);
-  if (s.empty() || end == s.c_str() || *end) throw Error(where(row) + ": " + name + " '" + s + "' is not a number");
+  if (s.empty() || end == s.c_str() || *end)
+    throw Error(where(row) + ": " + printable(name) + " '" + printable(s) + "' is not a number");
   return v;
 }
 
-std::string CsvTable::where(std::size_t row) const { return m_file.string() + ":" + std::to_string(m_lines[row]); }
+std::string CsvTable::where(std::size_t row) const { return shownPath(m_file) + ":" + std::to_string(m_lines[row]); }
 
 }  // namespace tidepool::io

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "base/error.h"
+#include "io/echo.h"
 #include "io/ply_writer.h"
 
 namespace tidepool::io {
@@ -10,13 +11,13 @@ namespace tidepool::io {
 ExportFormat parseExportFormat(const std::string& name) {
   if (name == "vtk") return ExportFormat::Vtk;
   if (name == "ply") return ExportFormat::Ply;
-  throw Error("--export '" + name + "' is not a format (expected vtk, ply or surface)");
+  throw Error("--export '" + printable(name) + "' is not a format (expected vtk, ply or surface)");
 }
 
 ExportFormat parseSurfaceFormat(const std::string& name) {
   for (std::size_t k = 0; k < kExportFormatNames.size(); ++k)
     if (name == kExportFormatNames[k]) return ExportFormat(k);
-  throw Error("--surface-format '" + name + "' is not a format (expected ply, obj or vtk)");
+  throw Error("--surface-format '" + printable(name) + "' is not a format (expected ply, obj or vtk)");
 }
 
 const char* exportExtension(ExportFormat format) {
@@ -31,7 +32,7 @@ ExportSeries::ExportSeries(std::filesystem::path folder, ExportFormat format)
   std::error_code ec;
   std::filesystem::create_directories(m_folder, ec);
   if (ec || !std::filesystem::is_directory(m_folder, ec))
-    throw Error("cannot create export folder '" + m_folder.string() +
+    throw Error("cannot create export folder '" + shownPath(m_folder) +
                 "': " + (ec ? ec.message() : std::string("not a folder")));
 }
 

@@ -2,9 +2,11 @@
 
 #include <fstream>
 #include <sstream>
+#include <unordered_set>
 #include <vector>
 
 #include "base/error.h"
+#include "io/echo.h"
 
 namespace tidepool::io {
 namespace {
@@ -48,6 +50,18 @@ void checkDepth(const std::string& text, const std::string& name) {
   }
 }
 
+// Where the quoted key that ends just before byte `end` begins (its opening quote).
+std::size_t keyStart(const std::string& text, std::size_t end) {
+  for (std::size_t from = end >= 2 ? end - 2 : 0;;) {
+    const std::size_t quote = text.rfind('"', from);
+    if (quote == std::string::npos) return 0;
+    std::size_t slashes = 0;
+    while (quote > slashes && text[quote - 1 - slashes] == '\\') ++slashes;
+    if (slashes % 2 == 0 || quote == 0) return quote;
+    from = quote - 1;
+  }
+}
+
 }  // namespace
 
 std::string printable(std::string_view text, std::size_t max) {
@@ -82,18 +96,18 @@ std::string readFileLimited(const std::filesystem::path& path, std::uintmax_t ma
   namespace fs = std::filesystem;
   std::error_code ec;
   const fs::file_status status = fs::status(path, ec);
-  if (!fs::exists(status)) throw Error("file not found: '" + path.string() + "'");
-  if (fs::is_directory(status)) throw Error("'" + path.string() + "' is a directory, not a file");
+  if (!fs::exists(status)) throw Error("file not found: '" + shownPath(path) + "'");
+  if (fs::is_directory(status)) throw Error("'" + shownPath(path) + "' is a directory, not a file");
   if (!fs::is_regular_file(status))
-    throw Error("'" + path.string() + "' is not a regular file (a device, pipe or socket): give " + kind);
+    throw Error("'" + shownPath(path) + "' is not a regular file (a device, pipe or socket): give " + kind);
   const std::uintmax_t size = fs::file_size(path, ec);
   const auto tooLarge = [&](const std::string& size) {
-    return Error("'" + path.string() + "' is " + size + ", larger than the " + byteSize(maxBytes) + " allowed for " +
+    return Error("'" + shownPath(path) + "' is " + size + ", larger than the " + byteSize(maxBytes) + " allowed for " +
                  kind);
   };
   if (!ec && size > maxBytes) throw tooLarge(byteSize(size));
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error("cannot read '" + path.string() + "': permission denied or unreadable");
+  if (!in) throw Error("cannot read '" + shownPath(path) + "': permission denied or unreadable");
   // Reads in pieces, stopping one piece past the limit: a file that grows while it is read (or
   // whose size was unknown) is still refused.
   std::string text;
@@ -104,7 +118,7 @@ std::string readFileLimited(const std::filesystem::path& path, std::uintmax_t ma
     text.append(piece.data(), std::size_t(in.gcount()));
     if (text.size() > maxBytes) throw tooLarge("more than that");
   }
-  if (in.bad()) throw Error("cannot read '" + path.string() + "': read error");
+  if (in.bad()) throw Error("cannot read '" + shownPath(path) + "': read error");
   return text;
 }
 
@@ -117,8 +131,25 @@ Json parseJson(const std::string& text, const std::string& name) {
     throw Error(name + ": " + byteSize(text.size()) + " of JSON, larger than the " + byteSize(kMaxJsonFileBytes) +
                 " allowed");
   checkDepth(text, name);
+  // A key given twice in one object would silently take its last value: refused where the second
+  // one is. The callback sees no position, the stream does: its read position is just past the key.
+  std::istringstream in(text);
+  std::vector<std::unordered_set<std::string>> keys;  // of each object open around the parser
+  const auto unique = [&](int, Json::parse_event_t event, Json& parsed) {
+    if (event == Json::parse_event_t::object_start) keys.emplace_back();
+    if (event == Json::parse_event_t::object_end) keys.pop_back();
+    if (event == Json::parse_event_t::key) {
+      const std::string& key = parsed.get_ref<const std::string&>();
+      if (!keys.back().insert(key).second) {
+        const auto end = std::size_t(in.rdbuf()->pubseekoff(0, std::ios::cur, std::ios::in));
+        throw Error(name + ":" + lineColumn(text, keyStart(text, end)) + ": key \"" + printable(key) +
+                    "\" given twice in one object");
+      }
+    }
+    return true;
+  };
   try {
-    return Json::parse(text);
+    return Json::parse(in, unique);
   } catch (const Json::parse_error& e) {
     // Line and column of the byte where parsing stopped (1-based).
     const std::size_t end = std::min<std::size_t>(e.byte == 0 ? 0 : e.byte - 1, text.size());
@@ -140,12 +171,12 @@ Json parseJson(const std::string& text, const std::string& name) {
 }
 
 Json readJsonFile(const std::filesystem::path& path) {
-  return parseJson(readFileLimited(path, kMaxJsonFileBytes, "a JSON file"), path.string());
+  return parseJson(readFileLimited(path, kMaxJsonFileBytes, "a JSON file"), shownPath(path));
 }
 
 void writeJsonFile(const std::filesystem::path& path, const Json& json) {
   std::ofstream out(path);
-  if (!out) throw Error("cannot write '" + path.string() + "'");
+  if (!out) throw Error("cannot write '" + shownPath(path) + "'");
   out << json.dump(2) << "\n";
 }
 

@@ -10,6 +10,7 @@
 
 #include "base/error.h"
 #include "io/assets.h"
+#include "io/echo.h"
 #include "io/json.h"
 #include "io/limits.h"
 #include "io/output_file.h"
@@ -151,7 +152,7 @@ TriangleMesh parseObj(const std::string& text, const std::string& name) {
 }
 
 TriangleMesh readObj(const std::filesystem::path& path) {
-  return parseObj(readFileLimited(path, kMaxObjFileBytes, "an OBJ mesh"), path.string());
+  return parseObj(readFileLimited(path, kMaxObjFileBytes, "an OBJ mesh"), shownPath(path));
 }
 
 EdgeCheck checkClosed(const TriangleMesh& mesh) {
@@ -205,7 +206,8 @@ std::filesystem::path findMesh(const std::string& nameOrPath) {
   std::sort(known.begin(), known.end());
   std::string list;
   for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
-  throw Error("mesh '" + nameOrPath + "' not found: neither a file nor a name in assets/meshes (known: " + list + ")");
+  throw Error("mesh '" + printable(nameOrPath) +
+              "' not found: neither a file nor a name in assets/meshes (known: " + list + ")");
 }
 
 std::vector<std::uint8_t> objBytes(const TriangleMesh& mesh, const std::string& comment) {

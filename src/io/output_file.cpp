@@ -8,6 +8,7 @@
 #include <string>
 
 #include "base/error.h"
+#include "io/echo.h"
 
 namespace tidepool::io {
 
@@ -18,7 +19,7 @@ void replaceFile(const std::filesystem::path& file, std::span<const std::uint8_t
     const std::string why = std::strerror(errno);
     std::error_code ec;
     std::filesystem::remove(tmp, ec);
-    throw Error("cannot write '" + file.string() + "': " + step + why);
+    throw Error("cannot write '" + shownPath(file) + "': " + step + why);
   };
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) fail("");

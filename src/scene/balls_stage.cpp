@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "io/echo.h"
 #include "scene/water_stage.h"
 
 namespace tidepool {
@@ -34,7 +35,8 @@ void visitViewGroup(ParamVisitor& v, BallsViewSettings& s) {
 void visit(ParamVisitor& v, BallsSceneParams& p) { visitAll(v, p.model, p.view); }
 
 const BallsSceneParams& ballsScene(const Scene& scene) {
-  if (scene.model != "balls") throw Error(scene.file.string() + ": not a balls scene (model " + scene.model + ")");
+  if (scene.model != "balls")
+    throw Error(io::shownPath(scene.file) + ": not a balls scene (model " + scene.model + ")");
   return scene.params.as<BallsSceneParams>();
 }
 

@@ -1,5 +1,6 @@
 #include "scene/fluid_stage.h"
 
+#include "io/echo.h"
 #include "scene/water_stage.h"
 
 namespace tidepool {
@@ -10,7 +11,8 @@ void visit(ParamVisitor& v, FluidSceneParams& p) {
 }
 
 const FluidSceneParams& fluidScene(const Scene& scene) {
-  if (scene.model != "fluid") throw Error(scene.file.string() + ": not a fluid scene (model " + scene.model + ")");
+  if (scene.model != "fluid")
+    throw Error(io::shownPath(scene.file) + ": not a fluid scene (model " + scene.model + ")");
   return scene.params.as<FluidSceneParams>();
 }
 

@@ -87,7 +87,8 @@ life::Rules resolveRules(const std::string& text, const std::string& where) {
     for (const fs::path& c : {findAssetDir() / "rules" / text, findAssetDir() / "rules" / (text + ".json")})
       if (fs::exists(c, ec)) path = c.string();
   if (!fs::exists(path, ec) && !life::looksLikeShareCode(text))
-    throw Error(where + ".rules: '" + text + "' is neither a rules file, a preset in assets/rules nor a share code");
+    throw Error(where + ".rules: '" + io::printable(text) +
+                "' is neither a rules file, a preset in assets/rules nor a share code");
   try {
     return life::loadRules(path);
   } catch (const Error& e) {

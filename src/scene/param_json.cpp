@@ -1,6 +1,7 @@
 #include "scene/param_json.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <set>
 #include <sstream>
@@ -30,7 +31,7 @@ class Reader final : public ParamVisitor {
   void finish() { checkUnknown(m_stack.back()); }
 
   void real(const ParamInfo& info, float& value, float min, float max) override {
-    if (const io::Json* j = find(info)) value = float(number(*j, info, min, max));
+    if (const io::Json* j = find(info)) value = float(number(*j, info, min, max, true));
   }
   void integer(const ParamInfo& info, int& value, int min, int max) override {
     if (const io::Json* j = find(info)) {
@@ -126,10 +127,13 @@ class Reader final : public ParamVisitor {
     return it == level.object->end() ? nullptr : &*it;
   }
 
-  double number(const io::Json& j, const ParamInfo& info, double min, double max) const {
+  // A float is compared as the float it becomes: 0.05 in a file is the 0.05f a bound is written
+  // as, so the bounds hold inclusive and exact.
+  double number(const io::Json& j, const ParamInfo& info, double min, double max, bool isFloat = false) const {
     if (!j.is_number()) throw Error(path(info) + ": expected a number, got " + io::excerpt(j));
     const double v = j.get<double>();
-    if (!(v >= min && v <= max))
+    const double stored = isFloat && std::abs(v) <= double(FLT_MAX) ? double(float(v)) : v;
+    if (!(stored >= min && stored <= max))
       throw Error(path(info) + " = " + formatNumber(v) + " is out of range [" + formatNumber(min) + ", " +
                   formatNumber(max) + "]");
     return v;

@@ -1,4 +1,5 @@
 #include "scene/scene.h"
+#include "io/echo.h"
 
 #include "scene/param_json.h"
 #include "sim/balls/balls_params.h"
@@ -52,7 +53,8 @@ fs::path resolveScenePath(const std::string& arg) {
   std::string known;
   for (const auto& entry : fs::directory_iterator(findAssetDir() / "scenes", ec))
     if (entry.path().extension() == ".json") known += (known.empty() ? "" : ", ") + entry.path().stem().string();
-  throw Error("scene '" + arg + "' not found: neither a file nor a name in assets/scenes (known: " + known + ")");
+  throw Error("scene '" + io::printable(arg) +
+              "' not found: neither a file nor a name in assets/scenes (known: " + known + ")");
 }
 
 namespace {
@@ -94,6 +96,8 @@ Scene readScene(const io::Json& json, const std::string& where, const io::Json& 
     }
   readParams(
       header, [&](ParamVisitor& v) { visit(v, scene); }, where + ": scene");
+  // After the header's own checks, so a misspelled "modle" is named as such.
+  if (!json.contains("model")) throw Error(where + ": scene.model is missing: give one of " + modelNames());
   if (scene.model == kAutoModel && scene.method == MethodMode::Params && header.contains("method"))
     throw Error(where + ": scene.method = 'params' contradicts scene.model = 'auto', which picks the method too " +
                 "(remove method)");
@@ -113,14 +117,14 @@ Scene parseScene(const io::Json& json, const std::string& where) { return readSc
 Scene loadScene(const fs::path& file) { return loadScene(file, io::Json()); }
 
 Scene loadScene(const fs::path& file, const io::Json& overrides) {
-  Scene scene = readScene(io::readJsonFile(file), file.string(), overrides);
+  Scene scene = readScene(io::readJsonFile(file), io::shownPath(file), overrides);
   scene.file = file;
   if (scene.name.empty()) scene.name = file.stem().string();
   return scene;
 }
 
 std::unique_ptr<Stage> createStage(const Scene& scene, gl::ShaderLibrary& shaders) {
-  const std::string where = scene.file.string();
+  const std::string where = io::shownPath(scene.file);
   return modelNamed(scene.model, where).create(scene.params, where + ": params", shaders);
 }
 

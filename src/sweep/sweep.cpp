@@ -10,6 +10,7 @@
 #include "base/error.h"
 #include "base/source_dir.h"
 #include "io/csv.h"
+#include "io/echo.h"
 #include "io/json.h"
 #include "io/video.h"
 
@@ -79,7 +80,7 @@ void writeCsv(const Result& result, const std::string& study, const std::string&
   std::error_code ec;
   fs::create_directories(path.parent_path(), ec);
   std::ofstream out(path);
-  if (!out) throw Error("cannot write '" + path.string() + "'");
+  if (!out) throw Error("cannot write '" + io::shownPath(path) + "'");
   out << "study,model,method,dt,substeps,resolution,gpu_ms_per_sim_s";
   for (const std::string& m : result.metrics) out << "," << m;
   out << ",chart_x,chart_y,stable,pareto,device\n";
@@ -113,7 +114,7 @@ Result readResult(const fs::path& csv, const fs::path& spec, std::string& device
                j.at("log_y").get<bool>(),          j.at("pareto").get<bool>(),
                j.at("marker_x").get<double>(),     j.at("marker_label").get<std::string>()};
   } catch (const io::Json::exception& e) {
-    throw Error("'" + spec.string() + "': " + e.what());
+    throw Error("'" + io::shownPath(spec) + "': " + io::printable(e.what(), 200));
   }
   std::istringstream lines(io::readTextFile(csv));
   std::string line;
@@ -121,7 +122,7 @@ Result readResult(const fs::path& csv, const fs::path& spec, std::string& device
   for (int number = 1; std::getline(lines, line); ++number) {
     if (line.empty()) continue;
     const std::vector<std::string> f = io::splitCsvLine(line);
-    const std::string where = csv.string() + ":" + std::to_string(number);
+    const std::string where = io::shownPath(csv) + ":" + std::to_string(number);
     if (header.empty()) {
       header = f;
       if (header.size() != 12 + r.metrics.size() || header[7 + r.metrics.size()] != "chart_x")

@@ -98,6 +98,15 @@ double fillCapacity(const Setup& p) {
 void checkWaterRequest(const char* model, const char* particle, const std::string& size, double fillParticles,
                        const Setup& w, const sim::ParticleCost& cost) {
   const std::string key = size.substr(0, size.find(' '));  // "particles.radius"
+  // An inverted region would silently make no particles.
+  if ((w.fill == Fill::Block || w.fill == Fill::Random) && glm::any(glm::lessThanEqual(w.fillMax, w.fillMin))) {
+    char line[200];
+    std::snprintf(line, sizeof line,
+                  "%s: particles.fill_max = [%g, %g, %g] must exceed fill_min = [%g, %g, %g] on every axis", model,
+                  double(w.fillMax.x), double(w.fillMax.y), double(w.fillMax.z), double(w.fillMin.x),
+                  double(w.fillMin.y), double(w.fillMin.z));
+    throw Error(line);
+  }
   if (const double capacity = fillCapacity(w); fillParticles > capacity) {
     const bool random = w.fill == Fill::Random;
     char line[512];
