@@ -11,6 +11,7 @@
 #include "gl/buffer.h"
 #include "gl/buffer_ops.h"
 #include "gl/framebuffer.h"
+#include "io/echo.h"
 
 namespace tidepool::bench {
 
@@ -36,7 +37,7 @@ void Table::print() const {
 
 void Table::writeCsv(const std::string& path) const {
   std::ofstream out(path);
-  if (!out) throw Error("cannot write CSV '" + path + "'");
+  if (!out) throw Error("cannot write CSV '" + io::printable(path, io::kMaxPathEcho) + "'");
   auto row = [&](const std::vector<std::string>& cells) {
     for (std::size_t c = 0; c < cells.size(); ++c) out << (c ? "," : "") << cells[c];
     out << "\n";
@@ -114,7 +115,7 @@ StepWindow parseStepWindow(const std::string& text) {
   static const std::regex form(R"((\d+):(\d+))");
   std::smatch m;
   if (!std::regex_match(text, m, form) || std::stoi(m[1]) >= std::stoi(m[2]))
-    throw Error("--steps '" + text + "' is not FIRST:LAST with FIRST < LAST (e.g. 10:310)");
+    throw Error("--steps '" + io::printable(text) + "' is not FIRST:LAST with FIRST < LAST (e.g. 10:310)");
   return {std::stoi(m[1]), std::stoi(m[2])};
 }
 
@@ -225,7 +226,7 @@ std::vector<std::size_t> parseSizes(const std::string& text) {
       if (m[2] == "g" || m[2] == "G") v <<= 30;
       return v;
     }
-    throw Error("size '" + token + "' is not a number like 65536, 64k, 16M, 1G or 2^20");
+    throw Error("size '" + io::printable(token) + "' is not a number like 65536, 64k, 16M, 1G or 2^20");
   };
   std::vector<std::size_t> out;
   for (const std::string& token : splitCommas(text)) {
@@ -245,7 +246,7 @@ std::vector<std::size_t> parseSizes(const std::string& text) {
 
 std::vector<bool> parseOnOff(const std::string& text, const std::string& option) {
   auto one = [&](const std::string& token) {
-    if (token != "on" && token != "off") throw Error(option + " '" + token + "' is not on or off");
+    if (token != "on" && token != "off") throw Error(option + " '" + io::printable(token) + "' is not on or off");
     return token == "on";
   };
   return parseList(text, one, option + ": nothing given (on, off or on,off)");

@@ -9,6 +9,7 @@
 
 #include "base/error.h"
 #include "bench/bench.h"
+#include "io/echo.h"
 #include "scene/fluid_stage.h"
 #include "sim/fluid/fluid.h"
 
@@ -22,7 +23,7 @@ std::vector<int> parseIterations(const std::string& text) {
     char* end = nullptr;
     const long k = std::strtol(item.c_str(), &end, 10);
     if (item.empty() || *end != '\0' || k < 1 || k > 100)
-      throw Error("--iterations '" + item + "' is not a whole number in [1, 100]");
+      throw Error("--iterations '" + io::printable(item) + "' is not a whole number in [1, 100]");
     out.push_back(int(k));
   }
   if (out.empty()) throw Error("--iterations is empty");

@@ -24,6 +24,7 @@
 #include "gl/window.h"
 #include "grid/grid.h"
 #include "grid/prefix_scan.h"
+#include "io/echo.h"
 
 namespace tidepool::bench {
 namespace {
@@ -52,7 +53,8 @@ std::vector<double> parsePerCell(const std::string& text) {
   auto one = [](const std::string& token) {
     char* end = nullptr;
     const double v = std::strtod(token.c_str(), &end);
-    if (end == token.c_str() || *end || !(v > 0)) throw Error("--ppc '" + token + "' is not a positive number");
+    if (end == token.c_str() || *end || !(v > 0))
+      throw Error("--ppc '" + io::printable(token) + "' is not a positive number");
     return v;
   };
   return parseList(text, one, "--ppc: no values given");

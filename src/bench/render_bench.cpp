@@ -10,6 +10,7 @@
 
 #include "base/error.h"
 #include "bench/bench.h"
+#include "io/echo.h"
 #include "render/balls_view.h"
 #include "scene/balls_stage.h"
 #include "sim/balls/balls.h"
@@ -26,7 +27,7 @@ glm::ivec2 parseImage(const std::string& text) {
   static const std::regex form(R"((\d+)x(\d+))");
   std::smatch m;
   if (!std::regex_match(text, m, form) || std::stoi(m[1]) <= 0 || std::stoi(m[2]) <= 0)
-    throw Error("--size '" + text + "' is not WIDTHxHEIGHT (e.g. 1920x1080)");
+    throw Error("--size '" + io::printable(text) + "' is not WIDTHxHEIGHT (e.g. 1920x1080)");
   return {std::stoi(m[1]), std::stoi(m[2])};
 }
 

@@ -12,6 +12,7 @@
 
 #include "base/error.h"
 #include "io/checkpoint_path.h"
+#include "io/echo.h"
 #include "io/json.h"
 #include "io/limits.h"
 
@@ -120,7 +121,7 @@ void writeAll(int fd, const std::uint8_t* data, std::size_t n, const std::filesy
   while (n > 0) {
     const ssize_t w = ::write(fd, data, n);
     if (w < 0 && errno == EINTR) continue;
-    if (w <= 0) throw Error("cannot write checkpoint '" + tmp.string() + "': " + systemError());
+    if (w <= 0) throw Error("cannot write checkpoint '" + shownPath(tmp) + "': " + systemError());
     data += w;
     n -= std::size_t(w);
   }
@@ -258,7 +259,7 @@ Checkpoint parseCheckpoint(std::span<const std::uint8_t> bytes, const std::strin
 }
 
 Checkpoint readCheckpointFile(const std::filesystem::path& file) {
-  const std::string where = file.string();
+  const std::string where = shownPath(file);
   // O_NONBLOCK: opening a pipe does not wait for a writer; fstat then refuses it.
   const int fd = ::open(file.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
   if (fd < 0) {
@@ -297,7 +298,7 @@ std::filesystem::path checkpointTarget(const std::filesystem::path& file) {
   const fs::file_status link = fs::symlink_status(file, ec);
   if (!fs::exists(link)) return file;  // a new name
   const auto refuse = [&](const std::string& what) {
-    return Error("cannot write checkpoint '" + file.string() + "': " + what + "; give a regular file or a new name");
+    return Error("cannot write checkpoint '" + shownPath(file) + "': " + what + "; give a regular file or a new name");
   };
   if (fs::is_symlink(link)) {
     const fs::path target = fs::canonical(file, ec);
@@ -326,30 +327,30 @@ void writeFileAtomically(const std::filesystem::path& given, std::span<const std
   const std::filesystem::path folder = file.parent_path().empty() ? std::filesystem::path(".") : file.parent_path();
   // A stale temporary file is replaced; a link or a pipe by that name is not followed or waited on.
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK, 0644);
-  if (fd < 0) throw Error("cannot write checkpoint '" + tmp.string() + "': " + systemError());
+  if (fd < 0) throw Error("cannot write checkpoint '" + shownPath(tmp) + "': " + systemError());
   if (struct stat st{}; ::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
     ::close(fd);
-    throw Error("cannot write checkpoint '" + tmp.string() + "': not a regular file (remove it)");
+    throw Error("cannot write checkpoint '" + shownPath(tmp) + "': not a regular file (remove it)");
   }
   try {
     const std::size_t half = bytes.size() / 2;
     writeAll(fd, bytes.data(), half, tmp);
     if (crashPoint) crashPoint(WriteStep::HalfWritten);
     writeAll(fd, bytes.data() + half, bytes.size() - half, tmp);
-    if (::fsync(fd) != 0) throw Error("cannot write checkpoint '" + tmp.string() + "': fsync: " + systemError());
+    if (::fsync(fd) != 0) throw Error("cannot write checkpoint '" + shownPath(tmp) + "': fsync: " + systemError());
   } catch (...) {
     ::close(fd);
     std::error_code ec;
     std::filesystem::remove(tmp, ec);
     throw;
   }
-  if (::close(fd) != 0) throw Error("cannot write checkpoint '" + tmp.string() + "': " + systemError());
+  if (::close(fd) != 0) throw Error("cannot write checkpoint '" + shownPath(tmp) + "': " + systemError());
   if (crashPoint) crashPoint(WriteStep::BeforeRename);
   if (::rename(tmp.c_str(), file.c_str()) != 0) {
     const std::string why = systemError();
     std::error_code ec;
     std::filesystem::remove(tmp, ec);
-    throw Error("cannot write checkpoint '" + file.string() + "': rename: " + why);
+    throw Error("cannot write checkpoint '" + shownPath(file) + "': rename: " + why);
   }
   // The rename is durable once the folder's entry is on disk.
   if (const int dir = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC); dir >= 0) {

@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "base/error.h"
+#include "io/echo.h"
 #include "io/json.h"
 #include "io/limits.h"
 
@@ -86,9 +87,9 @@ void checkChunks(std::span<const std::uint8_t> b, const std::string& name) {
 
 void writePng(const std::filesystem::path& path, const Image& image) {
   if (image.width <= 0 || image.height <= 0 || image.rgba.size() != std::size_t(image.width) * image.height * 4)
-    throw Error("cannot write '" + path.string() + "': image is empty or its size does not match its pixels");
+    throw Error("cannot write '" + shownPath(path) + "': image is empty or its size does not match its pixels");
   if (!stbi_write_png(path.c_str(), image.width, image.height, 4, image.rgba.data(), image.width * 4))
-    throw Error("cannot write '" + path.string() + "': check that the folder exists and is writable");
+    throw Error("cannot write '" + shownPath(path) + "': check that the folder exists and is writable");
 }
 
 Image decodePng(std::span<const std::uint8_t> bytes, const std::string& name) {
@@ -119,7 +120,7 @@ Image decodePng(std::span<const std::uint8_t> bytes, const std::string& name) {
 
 Image readPng(const std::filesystem::path& path) {
   const std::string bytes = readFileLimited(path, kMaxPngFileBytes, "a PNG image");
-  return decodePng({reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()}, path.string());
+  return decodePng({reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()}, shownPath(path));
 }
 
 }  // namespace tidepool::io

@@ -10,6 +10,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
+constexpr std::size_t kMaxShownName = 80;  // characters of a scene's name: control bytes escaped
+
 std::string modelNames() {
   std::string names;
   for (const ModelEntry& m : models()) names += (names.empty() ? "" : ", ") + std::string(m.name);
@@ -96,6 +98,7 @@ Scene readScene(const io::Json& json, const std::string& where, const io::Json& 
     }
   readParams(
       header, [&](ParamVisitor& v) { visit(v, scene); }, where + ": scene");
+  scene.name = io::printable(scene.name, kMaxShownName);  // shown in titles, progress lines and errors
   // After the header's own checks, so a misspelled "modle" is named as such.
   if (!json.contains("model")) throw Error(where + ": scene.model is missing: give one of " + modelNames());
   if (scene.model == kAutoModel && scene.method == MethodMode::Params && header.contains("method"))
@@ -119,7 +122,7 @@ Scene loadScene(const fs::path& file) { return loadScene(file, io::Json()); }
 Scene loadScene(const fs::path& file, const io::Json& overrides) {
   Scene scene = readScene(io::readJsonFile(file), io::shownPath(file), overrides);
   scene.file = file;
-  if (scene.name.empty()) scene.name = file.stem().string();
+  if (scene.name.empty()) scene.name = io::printable(file.stem().string(), kMaxShownName);
   return scene;
 }
 

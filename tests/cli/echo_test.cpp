@@ -111,3 +111,16 @@ TEST(Echo, DuplicateJsonKeysAreRefused) {
   expectEchoed({"render", (dir / "t.json").string(), "--out", (dir / "o").string()},
                (dir / "t.json").string() + ":1:35: key \"a\\x0ab\" given twice in one object");
 }
+
+TEST(Echo, BenchTokensAndCheckpointPaths) {
+  expectEchoed({"bench", "balls", "--n", control()}, "size 'a\\x0ab\\x1b[31mc\\x09dxxx", 1, 200);
+  expectEchoed({"bench", "balls", "--n", "1M", "--steps", control()}, "--steps 'a\\x0ab\\x1b[31mc\\x09dxxx", 1, 200);
+  expectEchoed({"render", "blank", "--resume", "/nonexistent/" + control(), "--out", "/tmp/x"},
+               "checkpoint '/nonexistent/a\\x0ab\\x1b[31mc\\x09dxxx", 1, 400);
+}
+
+TEST(Echo, SceneNamesAreShownEscapedAndCut) {
+  test::TempDir dir;
+  dir.write("s.json", R"({"model": "blank", "name": "a\nb\u001b[31mc\u0000d)" + std::string(100000, 'x') + R"("})");
+  expectEchoed({"soak", (dir / "s.json").string()}, "soak: 'a\\x0ab\\x1b[31mc\\x00dxxx", 1, 200);
+}
