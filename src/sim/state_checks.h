@@ -6,9 +6,11 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <type_traits>
 
+#include "base/error.h"
 #include "sim/model_state.h"
 
 namespace tidepool::sim {
@@ -31,6 +33,29 @@ void finiteValue(StateVisitor& v, const char* name, T& x) {
     requireFinite(v, name, &x);
   else
     requireFinite(v, name, &x[0], sizeof(T) / sizeof(x[0]));
+}
+
+// The entry "model.capacity" of a particle model whose tap may still add particles (balls, fluid):
+// `capacity` is what the parameters' fill and tap need. Loading another value calls
+// reallocate(value); more than the parameters need is accepted only as an upload's own count (a
+// model that took over another's particles), never beyond the entry "model.count".
+template <class Reallocate>
+void capacityEntry(StateVisitor& v, std::size_t capacity, Reallocate&& reallocate) {
+  std::size_t saved = capacity;
+  v.value("model.capacity", saved);
+  if (!v.loading() || saved == capacity) return;
+  if (saved > capacity) {
+    std::uint64_t count = 0;
+    v.value("model.count", count);
+    if (saved > count)
+      v.fail("entry 'model.capacity' = " + std::to_string(saved) + " is more than the parameters' fill and tap (" +
+             std::to_string(capacity) + ") and the count (" + std::to_string(count) + ")");
+  }
+  try {
+    reallocate(saved);
+  } catch (const Error& e) {
+    v.fail(std::string("entry 'model.capacity': ") + e.what());
+  }
 }
 
 }  // namespace tidepool::sim

@@ -161,22 +161,7 @@ void Balls::resume(const sim::StateStamp& good) {
 void Balls::visitOwnState(sim::StateVisitor& v) {
   std::uint64_t steps = 0;
   v.clock(m_time, steps);
-  // The capacity bounds what the tap may still add: a model that took over another's particles
-  // (upload) may hold more than its own fill and tap.
-  std::size_t capacity = m_capacity;
-  v.value("model.capacity", capacity);
-  if (v.loading() && capacity > m_capacity) {  // more than the fill and tap need: only an upload's own count
-    std::uint64_t count = 0;
-    v.value("model.count", count);
-    if (capacity > count)
-      v.fail("entry 'model.capacity' = " + std::to_string(capacity) + " is more than the parameters' fill and tap (" +
-             std::to_string(m_capacity) + ") and the count (" + std::to_string(count) + ")");
-  }
-  if (v.loading() && capacity != m_capacity) try {
-      allocate(0, capacity);
-    } catch (const Error& e) {
-      v.fail(std::string("entry 'model.capacity': ") + e.what());
-    }
+  sim::capacityEntry(v, m_capacity, [&](std::size_t capacity) { allocate(0, capacity); });
   v.count("model.count", m_count, m_capacity);
   v.count("model.tap_emitted", m_tapEmitted, m_capacity);
   sim::finiteValue(v, "model.tap_next_layer", m_tapNextLayer);
