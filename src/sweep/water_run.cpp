@@ -1,6 +1,7 @@
 #include "sweep/water_run.h"
 
 #include <cmath>
+#include <limits>
 
 #include "sim/balls/balls.h"
 #include "sim/balls/measure/balls_measure.h"
@@ -8,6 +9,32 @@
 #include "sim/water/water_init.h"
 
 namespace tidepool::sweep {
+
+namespace {
+
+// Martin & Moyce (1952), "An experimental study of the collapse of liquid columns on a rigid
+// horizontal plane", Phil. Trans. R. Soc. A 244, fig. 3, n² = 2 (a column 2a high), a = 2.25 in:
+// the front Z = z/a against T = t·sqrt(2g/a), as digitised in pypr/pysph
+// pysph/examples/db_exp_data.py (mm_data_2); the points to T = 5.1.
+constexpr double kMartinMoyce[][2] = {{0.832, 1.217}, {1.219, 1.474}, {1.997, 2.292}, {2.547, 2.995},
+                                      {3.345, 4.134}, {4.034, 4.944}, {4.418, 5.881}, {5.091, 6.980}};
+
+}  // namespace
+
+double rmsFromMartinMoyce(const std::vector<double>& front, double every, double a, double g, int& points) {
+  double sum = 0;
+  points = 0;
+  for (const auto& [T, Z] : kMartinMoyce) {
+    const double at = T / std::sqrt(2.0 * g / a) / every;  // in samples; sample j − 1 is at j·every
+    const std::size_t i = std::size_t(at);
+    if (i >= front.size()) break;
+    const double before = i == 0 ? 1.0 : front[i - 1], after = front[i];
+    const double z = before + (after - before) * (at - double(i));
+    sum += (z - Z) * (z - Z);
+    ++points;
+  }
+  return points > 0 ? std::sqrt(sum / points) : std::numeric_limits<double>::quiet_NaN();
+}
 
 WaterRun::WaterRun(gl::ShaderLibrary& shaders, const balls::Params& params) : m_probe(shaders) {
   balls::Params p = params;

@@ -15,6 +15,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "gl/gpu_profiler.h"
 #include "gl/shader_library.h"
@@ -37,6 +38,12 @@ namespace tidepool::sweep {
 // GPU ms of `steps` calls of `step`, in chunks (GL timer queries; wall clock between glFinish
 // calls on a software renderer): balls_studies.cpp.
 double timedSteps(long steps, const std::function<void()>& step);
+
+// The RMS of (front − Z) over the points of Martin & Moyce's measured dam-break front (1952, fig. 3,
+// n² = 2: Z = z/a against T = t·sqrt(2g/a)) inside a run's front, sampled every `every` s in
+// column widths a (m) under gravity g (m/s²), linearly interpolated from 1 at t = 0; `points`
+// gets how many of their points the run reached (NaN when none).
+double rmsFromMartinMoyce(const std::vector<double>& front, double every, double a, double g, int& points);
 
 struct WaterSample {
   double time = 0;             // simulated s
@@ -65,6 +72,7 @@ class WaterRun {
   double speedBound() const;  // m/s: faster moves more than the neighbour reach per step (fluid h, balls 2r)
   std::size_t count() const;
   double spacing() const { return 2.0 * m_radius; }  // m: the fluid's d, the balls' 2r
+  double columnWidth() const { return m_width; }     // m: the dam-break column's a, the front's unit
 
  private:
   sim::Model& model();

@@ -143,13 +143,6 @@ Result fluidDensity(Env& env) {
 
 constexpr double kFrontEvery = 0.004;  // s: a whole number of steps of every run below
 
-// Martin & Moyce (1952), "An experimental study of the collapse of liquid columns on a rigid
-// horizontal plane", Phil. Trans. R. Soc. A 244, fig. 3, n² = 2 (a column 2a high), a = 2.25 in:
-// the front Z = z/a against T = t·sqrt(2g/a), as digitised in pypr/pysph
-// pysph/examples/db_exp_data.py (mm_data_2); the points to T = 5.1.
-constexpr double kMartinMoyce[][2] = {{0.832, 1.217}, {1.219, 1.474}, {1.997, 2.292}, {2.547, 2.995},
-                                      {3.345, 4.134}, {4.034, 4.944}, {4.418, 5.881}, {5.091, 6.980}};
-
 struct Front {
   std::vector<double> front;  // / a at kFrontEvery, 2 kFrontEvery, ... (NaN after a failure)
   double cost = 0;
@@ -176,23 +169,6 @@ double rmsDifference(const std::vector<double>& a, const std::vector<double>& b)
   double sum = 0;
   for (std::size_t i = 0; i < a.size(); ++i) sum += (a[i] - b[i]) * (a[i] - b[i]);
   return std::sqrt(sum / double(a.size()));  // NaN when either failed
-}
-
-// RMS of (front − Z) over Martin & Moyce's points inside the run (the curve interpolated linearly;
-// the front starts at 1 at t = 0); the number of points in `points`.
-double againstMartinMoyce(const Front& f, double a, double g, int& points) {
-  double sum = 0;
-  points = 0;
-  for (const auto& [T, Z] : kMartinMoyce) {
-    const double at = T / std::sqrt(2.0 * g / a) / kFrontEvery;  // in samples; sample j − 1 is at j·kFrontEvery
-    const std::size_t i = std::size_t(at);
-    if (i >= f.front.size()) break;
-    const double before = i == 0 ? 1.0 : f.front[i - 1], after = f.front[i];
-    const double front = before + (after - before) * (at - double(i));
-    sum += (front - Z) * (front - Z);
-    ++points;
-  }
-  return points > 0 ? std::sqrt(sum / points) : std::numeric_limits<double>::quiet_NaN();
 }
 
 Result waterFront(Env& env) {
@@ -232,7 +208,7 @@ Result waterFront(Env& env) {
     const double error = rmsDifference(run.front.front, finest.front.front);
     const double between = rmsDifference(run.front.front, other.front.front);
     int points = 0;
-    const double measured = againstMartinMoyce(run.front, a, g, points);
+    const double measured = rmsFromMartinMoyce(run.front.front, kFrontEvery, a, g, points);
     Row row;
     row.model = run.model;
     row.method = run.method;

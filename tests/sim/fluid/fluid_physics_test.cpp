@@ -1,6 +1,7 @@
-// The fluid behaves like water: a resting tank keeps its density within 1% with four
-// iterations (less with more), keeps its surface and every particle; the dam break runs 2 s
-// stable with every particle kept and a front that only advances.
+// The fluid behaves like water, to the figures the README gives: a resting tank keeps its density
+// error near 0.071% with four iterations (0.027% with eight), its surface and every particle; the
+// dam break runs 2 s stable with every particle kept and a front that only advances, and follows
+// Martin & Moyce's measured front to the RMS docs/ACCURACY.md gives.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,6 +10,7 @@
 #include "scene/fluid_stage.h"
 #include "sim/fluid/fluid.h"
 #include "support/gl_test.h"
+#include "sweep/water_run.h"
 
 using namespace tidepool;
 using namespace tidepool::fluid;
@@ -45,7 +47,7 @@ void expectInsideTheWalls(Fluid& f) {
 
 }  // namespace
 
-TEST_F(FluidTest, RestingTankDensityErrorIsBelowOnePercentAndFallsWithIterations) {
+TEST_F(FluidTest, RestingTankDensityErrorIsTheDocumentedFigureAndFallsWithIterations) {
   std::vector<double> errors;
   for (int iterations : {1, 2, 4, 8}) {
     Params p = sceneParams("fluid-tank");
@@ -60,7 +62,9 @@ TEST_F(FluidTest, RestingTankDensityErrorIsBelowOnePercentAndFallsWithIterations
     errors.push_back(sum / 5);
     std::printf("resting tank, %d iterations: mean density error %.3g%%\n", iterations, 100 * errors.back());
   }
-  EXPECT_LT(errors[2], 0.01);  // 4 iterations
+  // The README's 0.071% (4 iterations) and 0.027% (8), each with a margin of about 12%.
+  EXPECT_LT(errors[2], 0.0008);
+  EXPECT_LT(errors[3], 0.0003);
   for (std::size_t k = 1; k < errors.size(); ++k) EXPECT_LE(errors[k], errors[k - 1] * 1.05) << k;
   EXPECT_LT(errors.back(), 0.5 * errors.front());
 }
@@ -77,7 +81,7 @@ TEST_F(FluidTest, RestingTankKeepsItsSurfaceAndEveryParticleForTwoSeconds) {
     const Stats st = f.stats();
     std::printf("t = %.2f s: surface %.4f m (fill %.4f m), density error %.3g%%\n", f.time(), s, filled,
                 100 * st.compressionMean);
-    EXPECT_NEAR(s, filled, 0.01 * filled) << "t = " << f.time();
+    EXPECT_NEAR(s, filled, 0.005 * filled) << "t = " << f.time();  // the README's 0.5% (it settles 0.45% low)
     EXPECT_EQ(st.count, count);
     EXPECT_EQ(st.nonFinite, 0u);
     EXPECT_EQ(st.outside, 0u);
@@ -103,6 +107,29 @@ TEST_F(FluidTest, DamBreakRunsTwoSecondsStableWithEveryParticleAndAnAdvancingFro
   }
   EXPECT_GE(front, wall - 1e-3);  // the surge reached the far wall
   expectInsideTheWalls(f);
+}
+
+// The scene's front (d = 0.02 m, dt = 1 ms, 4 iterations) against Martin & Moyce's measured
+// front over their four points to t = 0.3 s, sampled and compared as the water-front study does:
+// docs/ACCURACY.md gives RMS 0.22 a at this spacing; held to it within 0.03 a (about 12%) both
+// ways, since a front that slows (more viscosity) first comes closer to theirs.
+TEST_F(FluidTest, DamBreakFrontFollowsMartinAndMoyce) {
+  const Params p = sceneParams("dam-break-fluid");
+  sweep::WaterRun run(shaders(), p);
+  constexpr double every = 0.004;  // s, as the study
+  std::vector<double> front;
+  for (int j = 1; j * every <= 0.3 + 1e-9; ++j) {
+    run.advanceTo(j * every);
+    const sweep::WaterSample s = run.sample(false);
+    ASSERT_TRUE(s.healthy) << "t = " << s.time;
+    front.push_back(s.front);
+  }
+  int points = 0;
+  const double rms = sweep::rmsFromMartinMoyce(front, every, run.columnWidth(), -double(p.gravity.z), points);
+  std::printf("dam break front at 0.3 s: %.3f a; RMS from Martin & Moyce %.3f a over %d points\n", front.back(), rms,
+              points);
+  EXPECT_EQ(points, 4);
+  EXPECT_NEAR(rms, 0.22, 0.03);
 }
 
 // Boundary particles hold the water: the fluid-cup scene (coarser) pours a block into the cup; no
