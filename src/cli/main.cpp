@@ -40,7 +40,16 @@ int main(int argc, char** argv) {
   } catch (const CLI::Success& e) {  // --help, --version
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "tidepool: %s (see 'tidepool --help')\n", shown(e.what()).c_str());
+    // The help page of the (sub)command the options belong to: `tidepool bench balls --help`.
+    std::string page = "tidepool";
+    const CLI::App* level = &app;
+    for (int i = 1; i < argc; ++i) {
+      const auto subs = level->get_subcommands([&](const CLI::App* s) { return s->get_name() == argv[i]; });
+      if (subs.empty()) break;
+      level = subs.front();
+      page += " " + level->get_name();
+    }
+    std::fprintf(stderr, "tidepool: %s (see '%s --help')\n", shown(e.what()).c_str(), page.c_str());
     return 2;
   }
   try {

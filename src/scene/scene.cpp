@@ -1,6 +1,8 @@
 #include "scene/scene.h"
-#include "io/echo.h"
 
+#include <algorithm>
+
+#include "io/echo.h"
 #include "scene/param_json.h"
 #include "sim/balls/balls_params.h"
 #include "sim/fluid/fluid_params.h"
@@ -52,9 +54,12 @@ fs::path resolveScenePath(const std::string& arg) {
   if (fs::exists(given, ec) || given.has_parent_path() || given.has_extension()) return given;
   const fs::path named = findAssetDir() / "scenes" / (arg + ".json");
   if (fs::exists(named, ec)) return named;
-  std::string known;
+  std::vector<std::string> names;
   for (const auto& entry : fs::directory_iterator(findAssetDir() / "scenes", ec))
-    if (entry.path().extension() == ".json") known += (known.empty() ? "" : ", ") + entry.path().stem().string();
+    if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
+  std::sort(names.begin(), names.end());
+  std::string known;
+  for (const std::string& name : names) known += (known.empty() ? "" : ", ") + name;
   throw Error("scene '" + io::printable(arg) +
               "' not found: neither a file nor a name in assets/scenes (known: " + known + ")");
 }
