@@ -15,6 +15,10 @@ Command addBench(CLI::App& app) {
   sub->fallthrough();  // shared options may follow the benchmark name
   auto benches = std::make_shared<std::vector<bench::Benchmark>>();
   for (bench::Registrar r : bench::registrars()) benches->push_back(r(*sub));
+  for (bench::Benchmark& b : *benches)  // shown by `tidepool bench <name> --help` too
+    b.sub->footer(
+        "Options of every benchmark, before or after its name: --csv FILE (the table as CSV), --repeats N "
+        "(timed repeats), --warmup N (untimed runs first), --backend auto|egl|osmesa");
   return {sub, [sub, common, benches] {
             auto context = gl::createHeadlessContext({gl::parseBackend(common->backend), false});
             gl::ShaderLibrary shaders(gl::ShaderLibrary::findRoot());

@@ -21,7 +21,7 @@ int soakScene(const std::string& sceneName, const sweep::SoakRun& run, const swe
   const long every = run.every > 0 ? run.every : std::max(1L, run.steps / 20);
   std::printf("soak: %s (%s), %ld frames, a sample every %ld\n", scene.name.c_str(), scene.model.c_str(), run.steps,
               every);
-  std::printf("%9s %10s %9s %9s %9s %9s %12s\n", "step", "time_s", "wall_s", "rss_MiB", "count", "held", "energy");
+  std::printf("%9s %10s %9s %9s %9s %9s %12s\n", "frame", "time_s", "wall_s", "rss_MiB", "count", "held", "energy");
   const sweep::SoakResult r = sweep::soak(scene, shaders, run, [](const sweep::SoakSample& s) {
     std::printf("%9ld %10.3f %9.1f %9.1f %9zu %9zu %12.5g\n", s.step, s.time, s.wallSeconds, s.rssMiB, s.count, s.held,
                 s.energy);

@@ -1,5 +1,6 @@
 // Messages a new user reads: the list of known scenes is sorted, an option error points at the
-// help page of the command it belongs to, and the progress lines give each line's own share.
+// help page of the command it belongs to, every benchmark's help lists the options all of them
+// take, and the progress lines give each line's own share.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -26,6 +27,15 @@ TEST(CliMessages, AnOptionErrorPointsAtItsCommandsHelp) {
   test::expectOneLineError({"render", "blank", "--every", "5", "--out", "/tmp/x"}, "(see 'tidepool render --help')", 2);
   test::expectOneLineError({"bench", "balls", "--no-such-option"}, "(see 'tidepool bench balls --help')", 2);
   test::expectOneLineError({"--no-such-option"}, "(see 'tidepool --help')", 2);
+}
+
+TEST(CliMessages, EveryBenchmarksHelpListsTheSharedOptions) {
+  for (const char* name : {"balls", "fluid", "render"}) {
+    const test::ProcessResult r = runTidepool({"bench", name, "--help"});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    for (const char* option : {"--csv FILE", "--repeats N", "--warmup N"})
+      EXPECT_NE(r.out.find(option), std::string::npos) << name << ": " << option << " in\n" << r.out;
+  }
 }
 
 TEST(CliMessages, ProgressLinesGiveTheirOwnShare) {
