@@ -41,4 +41,9 @@ struct UiState {
 bool drawMainPanel(const Scene& scene, Stage& stage, const gl::GpuProfiler& profiler, UiState& ui,
                    float& autosaveEvery);
 
+// What runs now (Stage::running(), else the scene's model), as the panel's first line and the
+// window's title say it; the title follows it when M or N changes it: "tidepool - Dam break [fluid]".
+std::string runningLabel(const Scene& scene, const Stage& stage);
+std::string windowTitle(const std::string& sceneName, const std::string& running);
+
 }  // namespace tidepool

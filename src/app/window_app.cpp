@@ -148,6 +148,7 @@ int runWindow(const WindowJob& job) {
   glm::vec2 lastCursor{0.0f};
   gl::FramePacer pacer(job.framesInFlight);
   Indicators counters;
+  std::string title;  // as last set: the title follows what runs (M switches the water model, N life's rules)
   double lastTime = glfwGetTime();
 
   for (int frame = 0; !context.shouldClose(); ++frame) {
@@ -218,6 +219,8 @@ int runWindow(const WindowJob& job) {
     profiler.beginFrame();
     const bool stepped = !ui.paused || std::exchange(ui.stepOnce, false);
     if (stepped) stage->step(profiler);  // the model's frame, as `tidepool render` steps it, whatever the refresh rate
+    if (std::string t = windowTitle(scene.name, runningLabel(scene, *stage)); t != title)  // M, N: at the step
+      glfwSetWindowTitle(window, (title = std::move(t)).c_str());
     stage->render(target, profiler);
     profiler.endFrame();
     if (auto m = exports.afterFrame(*stage, stepped)) show(*m);
