@@ -100,7 +100,7 @@ bool drawMainPanel(const Scene& scene, Stage& stage, const gl::GpuProfiler& prof
 
   ImGui::Checkbox("Pause (Space)", &ui.paused);
   ImGui::SameLine();
-  if (ImGui::Button("Step (.)")) ui.stepOnce = true;
+  if (ImGui::Button("Step (.)")) ++ui.stepsPending;
   ImGui::SameLine();
   if (ImGui::Button("Restart (R)")) ui.resetRequested = true;
   if (ImGui::Button("Reload shaders (F5)")) ui.reloadRequested = true;

@@ -20,7 +20,7 @@ struct History {
 
 struct UiState {
   bool paused = false;
-  bool stepOnce = false;
+  int stepsPending = 0;  // . presses and Step clicks not yet taken: one step a frame while paused
   bool resetRequested = false;
   bool reloadRequested = false;
   bool screenshotRequested = false;
