@@ -11,8 +11,9 @@ packages=(
   libgtest-dev
   # run: Mesa (llvmpipe through EGL/GLX/OSMesa) for machines without a GPU driver of their own
   libegl-mesa0 libgl1-mesa-dri libosmesa6
-  # tests: the window path runs under Xvfb; CI checks formatting; VTK's own reader reads the exports back
-  xvfb xauth clang-format python3-vtk9
+  # tests: the window path runs under Xvfb (Xlib sends it key events); CI checks formatting; VTK's own reader
+  # reads the exports back
+  xvfb xauth libx11-dev clang-format python3-vtk9
   # charts of speed against accuracy (tidepool sweep); --video clips (MP4, GIF)
   gnuplot-nox ffmpeg
 )

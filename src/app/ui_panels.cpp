@@ -72,13 +72,22 @@ void autoChoicePanel(const AutoChoice& c) {
 }
 }  // namespace
 
+std::string runningLabel(const Scene& scene, const Stage& stage) {
+  const std::string running = stage.running();
+  return running.empty() ? scene.model : running;
+}
+
+std::string windowTitle(const std::string& sceneName, const std::string& running) {
+  return "tidepool - " + sceneName + " [" + running + "]";
+}
+
 bool drawMainPanel(const Scene& scene, Stage& stage, const gl::GpuProfiler& profiler, UiState& ui,
                    float& autosaveEvery) {
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSizeConstraints(ImVec2(340, 0), ImVec2(520, 10000));
   ImGui::Begin("tidepool", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
   const bool modelAuto = scene.autoChoice && !scene.autoChoice->model.empty();
-  ImGui::Text("%s  [%s%s]", scene.name.c_str(), scene.model.c_str(), modelAuto ? ", model auto" : "");
+  ImGui::Text("%s  [%s%s]", scene.name.c_str(), runningLabel(scene, stage).c_str(), modelAuto ? ", model auto" : "");
   if (const std::string s = stage.status(); !s.empty()) ImGui::TextDisabled("%s", s.c_str());
   ImGui::Text("simulated time %.3f s", stage.simTime());
   if (ui.showTimings) timingTable(profiler);
@@ -91,7 +100,7 @@ bool drawMainPanel(const Scene& scene, Stage& stage, const gl::GpuProfiler& prof
 
   ImGui::Checkbox("Pause (Space)", &ui.paused);
   ImGui::SameLine();
-  if (ImGui::Button("Step (.)")) ui.stepOnce = true;
+  if (ImGui::Button("Step (.)")) ++ui.stepsPending;
   ImGui::SameLine();
   if (ImGui::Button("Restart (R)")) ui.resetRequested = true;
   if (ImGui::Button("Reload shaders (F5)")) ui.reloadRequested = true;

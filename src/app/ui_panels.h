@@ -20,7 +20,7 @@ struct History {
 
 struct UiState {
   bool paused = false;
-  bool stepOnce = false;
+  int stepsPending = 0;  // . presses and Step clicks not yet taken: one step a frame while paused
   bool resetRequested = false;
   bool reloadRequested = false;
   bool screenshotRequested = false;
@@ -40,5 +40,10 @@ struct UiState {
 // `autosaveEvery`: the checkpoint autosave period, simulated s (0: off).
 bool drawMainPanel(const Scene& scene, Stage& stage, const gl::GpuProfiler& profiler, UiState& ui,
                    float& autosaveEvery);
+
+// What runs now (Stage::running(), else the scene's model), as the panel's first line and the
+// window's title say it; the title follows it when M or N changes it: "tidepool - Dam break [fluid]".
+std::string runningLabel(const Scene& scene, const Stage& stage);
+std::string windowTitle(const std::string& sceneName, const std::string& running);
 
 }  // namespace tidepool

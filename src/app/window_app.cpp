@@ -15,6 +15,7 @@
 #include "app/fit_gpu.h"
 #include "app/indicators.h"
 #include "app/key_bindings.h"
+#include "app/key_queue.h"
 #include "app/ui_panels.h"
 #include "app/window_checkpoints.h"
 #include "app/window_export.h"
@@ -25,22 +26,6 @@
 
 namespace tidepool {
 namespace {
-
-// Key presses as edges (held keys do not repeat), ignored while ImGui has the keyboard.
-class Keys {
- public:
-  explicit Keys(GLFWwindow* w) : m_window(w) {}
-  bool pressed(int key) {
-    const bool down = glfwGetKey(m_window, key) == GLFW_PRESS && !ImGui::GetIO().WantCaptureKeyboard;
-    const bool edge = down && !m_down[key];
-    m_down[key] = down;
-    return edge;
-  }
-
- private:
-  GLFWwindow* m_window;
-  bool m_down[GLFW_KEY_LAST + 1] = {};
-};
 
 io::Image readWindow(int width, int height) {
   io::Image img{width, height, std::vector<std::uint8_t>(std::size_t(width) * height * 4)};
@@ -86,7 +71,7 @@ void apply(KeyAction action, UiState& ui, GLFWwindow* window) {
   switch (action) {
     case KeyAction::Quit: glfwSetWindowShouldClose(window, GLFW_TRUE); break;
     case KeyAction::Pause: ui.paused = !ui.paused; break;
-    case KeyAction::StepOnce: ui.stepOnce = true; break;
+    case KeyAction::StepOnce: ++ui.stepsPending; break;
     case KeyAction::Restart: ui.resetRequested = true; break;
     case KeyAction::ReloadShaders: ui.reloadRequested = true; break;
     case KeyAction::SaveCheckpoint: ui.checkpointRequested = true; break;
@@ -123,6 +108,8 @@ int runWindow(const WindowJob& job) {
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini next to the user's files
   ImGui::StyleColorsDark();
+  KeyQueue keys;
+  installKeyQueue(window, keys);  // before ImGui's backend, which then chains its key callback to ours
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   ImGui_ImplOpenGL3_Init("#version 430 core");
   glfwSetScrollCallback(window, [](GLFWwindow* w, double dx, double dy) {
@@ -144,19 +131,21 @@ int runWindow(const WindowJob& job) {
     ui.message = m.text;
     ui.messageIsError = m.error;
   };
-  Keys keys(window);
   glm::vec2 lastCursor{0.0f};
   gl::FramePacer pacer(job.framesInFlight);
   Indicators counters;
+  std::string title;  // as last set: the title follows what runs (M switches the water model, N life's rules)
   double lastTime = glfwGetTime();
 
   for (int frame = 0; !context.shouldClose(); ++frame) {
     pacer.waitForSlot();  // before reading input: what the frame shows is as fresh as the GPU allows
     glfwPollEvents();
-    for (const KeyBinding& b : keyBindings())
-      if (keys.pressed(b.key)) apply(b.action, ui, window);
-    for (int k = GLFW_KEY_A; k <= GLFW_KEY_Z; ++k)  // other letters are the model's (life: C, N, W)
-      if (!appAction(k) && keys.pressed(k)) stage->key('A' + (k - GLFW_KEY_A));
+    for (const int k : keys.take()) {  // every press since the last frame, in order, however long it was
+      if (const std::optional<KeyAction> action = appAction(k))
+        apply(*action, ui, window);
+      else if (k >= GLFW_KEY_A && k <= GLFW_KEY_Z)  // other letters are the model's (life: C, N, W)
+        stage->key('A' + (k - GLFW_KEY_A));
+    }
     if (std::exchange(ui.fullscreenRequested, false) && !context.setFullscreen(!context.fullscreen())) {
       ui.message = "no monitor to go fullscreen on";
       ui.messageIsError = true;
@@ -216,8 +205,12 @@ int runWindow(const WindowJob& job) {
     context.framebufferSize(fbw, fbh);
     if (fbw > 0 && fbh > 0) target.resize(fbw, fbh);
     profiler.beginFrame();
-    const bool stepped = !ui.paused || std::exchange(ui.stepOnce, false);
+    const bool stepOnce = ui.paused && ui.stepsPending > 0;  // one . press a frame
+    ui.stepsPending = stepOnce ? ui.stepsPending - 1 : 0;
+    const bool stepped = !ui.paused || stepOnce;
     if (stepped) stage->step(profiler);  // the model's frame, as `tidepool render` steps it, whatever the refresh rate
+    if (std::string t = windowTitle(scene.name, runningLabel(scene, *stage)); t != title)  // M, N: at the step
+      glfwSetWindowTitle(window, (title = std::move(t)).c_str());
     stage->render(target, profiler);
     profiler.endFrame();
     if (auto m = exports.afterFrame(*stage, stepped)) show(*m);

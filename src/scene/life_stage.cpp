@@ -186,6 +186,15 @@ class LifeStage final : public ModelStage<life::Life> {
     return m_error;
   }
   std::string shareText() const override { return m_shareCode; }
+  // The preset or file the rules came from (its name without .json), or the seed they were made
+  // from once N or a species change made new ones.
+  std::string running() const override {
+    const std::string& from = m_applied.rules;
+    if (from.empty()) return "seed " + std::to_string(m_applied.seed);
+    std::error_code ec;
+    if (life::looksLikeShareCode(from) && !std::filesystem::exists(from, ec)) return "share code";
+    return std::filesystem::path(from).stem().string();
+  }
   StageIndicators indicators() override {
     StageIndicators s = ModelStage::indicators();
     s.gridCells = m_model.grid().dims();
@@ -225,6 +234,7 @@ class LifeStage final : public ModelStage<life::Life> {
     life::Rules rules = m_model.rules();
     if (m_setup.seed != m_applied.seed || m_setup.species != m_applied.species) {
       rules = rulesFor(m_setup);
+      m_setup.rules.clear();  // made from the seed: no longer the preset or file named
     } else {
       rules.particleCount = m_setup.particleCount;
       rules.size = {m_setup.width, m_setup.height};

@@ -58,6 +58,9 @@ class Stage {
   virtual std::string status() const { return ""; }     // one line for the UI (counts, warnings)
   virtual std::string shareText() const { return ""; }  // the UI offers to copy it (e.g. a rules share code)
   virtual StageIndicators indicators() { return {}; }   // steps, count, grid, camera (the window's overlay)
+  // What runs now, for the window title and the panel: water "balls" or "fluid" (M switches), life
+  // its preset or "seed N" (N makes new rules); "": the scene's model, which never changes.
+  virtual std::string running() const { return ""; }
 
   // Failing loudly: a model that watches itself reports a blow-up here (non-blocking, a frame or
   // two late), can go back to its last good state with half the time step, and settles the

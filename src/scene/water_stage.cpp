@@ -91,6 +91,7 @@ class WaterStage final : public Stage {
     p.obstacles.push_back(o);
     return "";
   }
+  std::string running() const override { return kWaterModelNames[index(m_active)]; }
   double simTime() const override { return m_runs[index(m_active)]->model()->time(); }
   double frameSeconds() const override { return m_runs[index(m_active)]->model()->frameSeconds(); }
   std::pair<std::string, double> liveMetric() const override {

@@ -62,6 +62,21 @@ TEST_F(LifeStage, ShareCodeFollowsTheRulesAndNMakesNewOnes) {
   EXPECT_EQ(again->shareText(), stage->shareText()) << "N is reproducible too";
 }
 
+// What the window's title names: the preset, until N makes new rules from a new seed.
+TEST_F(LifeStage, RunningNamesThePresetUntilNMakesNewRules) {
+  io::Json p = smallScene();
+  p["rules"] = "cells";
+  auto stage = lifeStage(p, shaders());
+  EXPECT_EQ(stage->running(), "cells");
+  gl::GpuProfiler profiler;
+  stage->step(profiler);
+  EXPECT_EQ(stage->running(), "cells");
+  stage->key('N');
+  stage->step(profiler);
+  EXPECT_EQ(stage->running().rfind("seed ", 0), 0u) << stage->running();
+  EXPECT_EQ(lifeStage(smallScene(), shaders())->running(), "seed 4");
+}
+
 TEST_F(LifeStage, BadRulesKeyIsReportedWithTheSceneKey) {
   io::Json p = smallScene();
   p["rules"] = "AAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAA";

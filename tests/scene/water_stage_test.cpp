@@ -55,9 +55,11 @@ TEST_F(WaterStage, SwitchingBetweenBallsAndFluidKeepsTheParticles) {
     ASSERT_GT(before, 0);
     const bool wasFluid = isFluid(*stage);
     EXPECT_EQ(wasFluid, std::string(start) == "fluid");
+    EXPECT_EQ(stage->running(), start);                  // as the window's title says it
     stage->key('M');                                     // the next step switches
     for (int i = 0; i < 10; ++i) stage->step(profiler);  // and the other model runs on with them
     EXPECT_NE(isFluid(*stage), wasFluid) << stage->status();
+    EXPECT_EQ(stage->running(), wasFluid ? "balls" : "fluid");
     EXPECT_EQ(countOf(*stage), before) << stage->status();
     ChooseModel back;  // and back through the UI's choice
     back.index = wasFluid ? 1 : 0;
