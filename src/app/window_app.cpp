@@ -116,7 +116,8 @@ int runWindow(const WindowJob& job) {
   gl::ShaderLibrary shaders(gl::ShaderLibrary::findRoot());
   if (job.fitBudgetMs) scene = fitScene(file, job, shaders);
   auto stage = createStage(scene, shaders);
-  if (!job.resume.empty()) loadCheckpoint(*stage, scene, job.resume);
+  std::uint64_t frameNumber = 0;  // the frame the window shows, as render numbers it: steps since t = 0
+  if (!job.resume.empty()) frameNumber = loadCheckpoint(*stage, scene, job.resume);
   WindowCheckpoints checkpoints(scene, job.checkpoint, job.autosaveEvery, stage->simTime());
 
   IMGUI_CHECKVERSION();
@@ -192,6 +193,7 @@ int runWindow(const WindowJob& job) {
       ui.divergence.clear();
       if (exports.running()) show(exports.stop());  // the series ends where the run restarts
       stage->restart();
+      frameNumber = 0;
     }
     if (ui.recoverRequested) {
       ui.recoverRequested = false;
@@ -217,7 +219,10 @@ int runWindow(const WindowJob& job) {
     if (fbw > 0 && fbh > 0) target.resize(fbw, fbh);
     profiler.beginFrame();
     const bool stepped = !ui.paused || std::exchange(ui.stepOnce, false);
-    if (stepped) stage->step(profiler);  // the model's frame, as `tidepool render` steps it, whatever the refresh rate
+    if (stepped) {
+      stage->step(profiler);  // the model's frame, as `tidepool render` steps it, whatever the refresh rate
+      ++frameNumber;
+    }
     stage->render(target, profiler);
     profiler.endFrame();
     if (auto m = exports.afterFrame(*stage, stepped)) show(*m);
@@ -230,7 +235,7 @@ int runWindow(const WindowJob& job) {
       log::error(d->message);
       ui.paused = true;  // say which method failed at which dt, and wait for the user
     }
-    if (auto saved = checkpoints.afterFrame(*stage, std::exchange(ui.checkpointRequested, false))) {
+    if (auto saved = checkpoints.afterFrame(*stage, frameNumber, std::exchange(ui.checkpointRequested, false))) {
       ui.message = saved->message;
       ui.messageIsError = saved->error;
     }

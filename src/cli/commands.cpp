@@ -36,7 +36,9 @@ struct CheckpointOpts {
 };
 
 void addCheckpointOptions(CLI::App* sub, CheckpointOpts& o) {
-  sub->add_option("--resume", o.resume, "start from this checkpoint (a file --checkpoint wrote) instead of t = 0");
+  sub->add_option("--resume", o.resume,
+                  "start from this checkpoint (a file --checkpoint wrote) instead of t = 0; render numbers its "
+                  "frames on after the checkpoint's");
   sub->add_option("--checkpoint", o.checkpoint,
                   "write checkpoints to this file (atomically; default: beside the output, e.g. out/dam.ckpt)");
   sub->add_option("--checkpoint-every", o.every,
@@ -228,7 +230,8 @@ Command addRender(CLI::App& app) {
   };
   auto o = std::make_shared<Opts>();
   sub->add_option("scene", o->job.scene, "scene file, or a name from assets/scenes (e.g. blank)")->required();
-  sub->add_option("--frames", o->frames, "number of frames (default: the scene's clip.frames)")
+  sub->add_option("--frames", o->frames,
+                  "number of frames (default: the scene's clip.frames); with --resume, frames after the checkpoint's")
       ->check(CLI::Range(1, 1000000));
   sub->add_option("--size", o->size, "image size WIDTHxHEIGHT (default: the scene's clip size)");
   sub->add_option("--out", o->job.outDir,
