@@ -63,9 +63,15 @@ int renderHeadless(const RenderJob& request) {
   auto context = gl::createHeadlessContext({job.backend, job.debugGl});
   gl::ShaderLibrary shaders(gl::ShaderLibrary::findRoot());
   auto stage = createStage(scene, shaders);
-  if (!job.resume.empty()) {
-    loadCheckpoint(*stage, scene, job.resume);
-    log::info("resumed from " + job.resume.string() + " at t = " + std::to_string(stage->simTime()) + " s");
+  // Frame numbers: a fresh run's frame i shows the state after i steps (frame 0 the initial
+  // state); a resumed run goes on after the checkpoint's frame, each of its frames a step on, so
+  // that its frames join the first run's as one clip, without the checkpoint's frame twice.
+  const bool resumed = !job.resume.empty();
+  std::uint64_t first = 0;
+  if (resumed) {
+    first = loadCheckpoint(*stage, scene, job.resume) + 1;
+    log::info("resumed from " + job.resume.string() + " at t = " + std::to_string(stage->simTime()) +
+              " s: frames from " + std::to_string(first));
   }
   const bool checkpoints = job.saveLast || !job.checkpoint.empty() || job.checkpointEvery > 0;
   const std::filesystem::path checkpoint =
@@ -91,25 +97,25 @@ int renderHeadless(const RenderJob& request) {
   Progress progress("rendering " + scene.name, frames, job.progress);
 
   for (int i = 0; i < frames; ++i) {
-    // Frame i shows the state after i steps: frame 0 is the initial state.
+    const std::uint64_t frame = first + std::uint64_t(i);
     profiler.beginFrame();
-    if (i > 0) stage->step(profiler);
+    if (resumed || i > 0) stage->step(profiler);
     if (const auto d = stage->divergence()) throw Error(d->message);
     if (checkpoints && i + 1 < frames && schedule.due(stage->simTime())) {
-      saveCheckpoint(*stage, scene, checkpoint);
+      saveCheckpoint(*stage, scene, checkpoint, frame);
       ++saved;
     }
     stage->render(target, profiler);
     profiler.endFrame();
     if (exporter) {
       // After render(): a view may set what the state means (the swarm's aspect, its image colours).
-      if (exporter->due(i) && mesher) {
+      if (exporter->due(int(frame)) && mesher) {
         const auto start = std::chrono::steady_clock::now();
         mesher->build(*stage->surfaceInput(), *job.surface);
         surfaceMs += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-        exporter->capture(i, stage->simTime(), mesher->exportSource());  // back a frame or two later
-      } else if (exporter->due(i)) {
-        exporter->capture(i, stage->simTime(), *stage->exportSource());
+        exporter->capture(int(frame), stage->simTime(), mesher->exportSource());  // back a frame or two later
+      } else if (exporter->due(int(frame))) {
+        exporter->capture(int(frame), stage->simTime(), *stage->exportSource());
       }
       if (i == 0) exporter->writeObstacles(stage->exportObstacles());
       exporter->poll();
@@ -118,7 +124,7 @@ int renderHeadless(const RenderJob& request) {
     if (video) video->write(pixels);
     if (pngFrames) {
       char name[32];
-      std::snprintf(name, sizeof name, "frame_%05d.png", i);
+      std::snprintf(name, sizeof name, "frame_%05llu.png", static_cast<unsigned long long>(frame));
       writer.write(job.outDir / name, io::Image{width, height, std::move(pixels)});
     }
     progress.update(i + 1);
@@ -128,7 +134,7 @@ int renderHeadless(const RenderJob& request) {
   stage->flushChecks();
   if (const auto d = stage->divergence()) throw Error(d->message);
   if (checkpoints) {
-    saveCheckpoint(*stage, scene, checkpoint);
+    saveCheckpoint(*stage, scene, checkpoint, first + std::uint64_t(frames - 1));
     log::info("wrote checkpoint " + checkpoint.string() + " at t = " + std::to_string(stage->simTime()) + " s (" +
               std::to_string(saved + 1) + " saved)");
   }
@@ -143,7 +149,8 @@ int renderHeadless(const RenderJob& request) {
   if (exporter) log::info(exporter->summary());
   if (pngFrames)
     log::info("wrote " + std::to_string(frames) + " frames (" + std::to_string(width) + "x" + std::to_string(height) +
-              ") to " + std::filesystem::absolute(job.outDir).string() + "/frame_*.png");
+              ") to " + std::filesystem::absolute(job.outDir).string() + "/frame_*.png" +
+              (resumed ? " (frames " + std::to_string(first) + " to " + std::to_string(first + frames - 1) + ")" : ""));
   if (video) log::info("wrote video " + std::filesystem::absolute(job.video).string());
   return frames;
 }

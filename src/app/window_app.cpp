@@ -101,7 +101,8 @@ int runWindow(const WindowJob& job) {
   gl::ShaderLibrary shaders(gl::ShaderLibrary::findRoot());
   if (job.fitBudgetMs) scene = fitScene(file, job, shaders);
   auto stage = createStage(scene, shaders);
-  if (!job.resume.empty()) loadCheckpoint(*stage, scene, job.resume);
+  std::uint64_t frameNumber = 0;  // the frame the window shows, as render numbers it: steps since t = 0
+  if (!job.resume.empty()) frameNumber = loadCheckpoint(*stage, scene, job.resume);
   WindowCheckpoints checkpoints(scene, job.checkpoint, job.autosaveEvery, stage->simTime());
 
   IMGUI_CHECKVERSION();
@@ -181,6 +182,7 @@ int runWindow(const WindowJob& job) {
       ui.divergence.clear();
       if (exports.running()) show(exports.stop());  // the series ends where the run restarts
       stage->restart();
+      frameNumber = 0;
     }
     if (ui.recoverRequested) {
       ui.recoverRequested = false;
@@ -208,7 +210,10 @@ int runWindow(const WindowJob& job) {
     const bool stepOnce = ui.paused && ui.stepsPending > 0;  // one . press a frame
     ui.stepsPending = stepOnce ? ui.stepsPending - 1 : 0;
     const bool stepped = !ui.paused || stepOnce;
-    if (stepped) stage->step(profiler);  // the model's frame, as `tidepool render` steps it, whatever the refresh rate
+    if (stepped) {
+      stage->step(profiler);  // the model's frame, as `tidepool render` steps it, whatever the refresh rate
+      ++frameNumber;
+    }
     if (std::string t = windowTitle(scene.name, runningLabel(scene, *stage)); t != title)  // M, N: at the step
       glfwSetWindowTitle(window, (title = std::move(t)).c_str());
     stage->render(target, profiler);
@@ -223,7 +228,7 @@ int runWindow(const WindowJob& job) {
       log::error(d->message);
       ui.paused = true;  // say which method failed at which dt, and wait for the user
     }
-    if (auto saved = checkpoints.afterFrame(*stage, std::exchange(ui.checkpointRequested, false))) {
+    if (auto saved = checkpoints.afterFrame(*stage, frameNumber, std::exchange(ui.checkpointRequested, false))) {
       ui.message = saved->message;
       ui.messageIsError = saved->error;
     }

@@ -21,9 +21,10 @@ class WindowCheckpoints {
   // `file` empty: "<scene name>.ckpt" in the working folder.
   WindowCheckpoints(const Scene& scene, std::filesystem::path file, double autosaveEvery, double time);
 
-  // After a frame: saves when `requested` (F6) or when the autosave is due. A failure (a diverged
-  // state, a full disk) is a message, never an exception: the window runs on.
-  std::optional<Saved> afterFrame(Stage& stage, bool requested);
+  // After a frame, `frame` as render numbers it (steps since t = 0): saves when `requested` (F6) or
+  // when the autosave is due. A failure (a diverged state, a full disk) is a message, never an
+  // exception: the window runs on.
+  std::optional<Saved> afterFrame(Stage& stage, std::uint64_t frame, bool requested);
   float& autosaveEvery() { return m_every; }  // the panel's field; a change starts a new period now
   const std::filesystem::path& file() const { return m_file; }
 

@@ -14,6 +14,7 @@
 #include "gl/context_window.h"
 #include "gl/info.h"
 #include "gl/selftest.h"
+#include "io/echo.h"
 #include "io/json.h"
 #include "scene/scene.h"
 
@@ -35,7 +36,9 @@ struct CheckpointOpts {
 };
 
 void addCheckpointOptions(CLI::App* sub, CheckpointOpts& o) {
-  sub->add_option("--resume", o.resume, "start from this checkpoint (a file --checkpoint wrote) instead of t = 0");
+  sub->add_option("--resume", o.resume,
+                  "start from this checkpoint (a file --checkpoint wrote) instead of t = 0; render numbers its "
+                  "frames on after the checkpoint's");
   sub->add_option("--checkpoint", o.checkpoint,
                   "write checkpoints to this file (atomically; default: beside the output, e.g. out/dam.ckpt)");
   sub->add_option("--checkpoint-every", o.every,
@@ -109,6 +112,11 @@ io::Json setOverride(const std::string& text) {
     patch = std::move(level);
   }
   return patch;
+}
+
+// Where a clip goes when the command line names no folder: "<root>/<scene file's stem>".
+std::filesystem::path defaultOutDir(const std::string& scene, const std::filesystem::path& root = "out") {
+  return root / resolveScenePath(scene).stem();
 }
 
 void addResolutionOptions(CLI::App* sub, ResolutionOpts& o) {
@@ -222,10 +230,12 @@ Command addRender(CLI::App& app) {
   };
   auto o = std::make_shared<Opts>();
   sub->add_option("scene", o->job.scene, "scene file, or a name from assets/scenes (e.g. blank)")->required();
-  sub->add_option("--frames", o->frames, "number of frames (default: the scene's clip.frames)")
+  sub->add_option("--frames", o->frames,
+                  "number of frames (default: the scene's clip.frames); with --resume, frames after the checkpoint's")
       ->check(CLI::Range(1, 1000000));
   sub->add_option("--size", o->size, "image size WIDTHxHEIGHT (default: the scene's clip size)");
-  sub->add_option("--out", o->job.outDir, "folder for frame_00000.png ...");
+  sub->add_option("--out", o->job.outDir,
+                  "folder for frame_00000.png ... (default, when there is no --video either: out/<scene>)");
   sub->add_option("--video", o->job.video, "video file written through ffmpeg (e.g. clip.mp4)");
   auto* exportOpt = sub->add_option("--export", o->exportFormat,
                                     "also write the particles to --out: vtk (frame_*.vtp + particles.pvd for "
@@ -257,6 +267,10 @@ Command addRender(CLI::App& app) {
   addResolutionOptions(sub, o->resolution);
   return {sub, [o, sub] {
             RenderJob job = o->job;
+            if (job.outDir.empty() && job.video.empty()) {  // as `run` without a display: out/<scene>
+              job.outDir = defaultOutDir(job.scene);
+              log::info("no --out or --video: writing to " + io::shownPath(job.outDir));
+            }
             applyCheckpointOptions(o->checkpoints, job);
             if (o->frames > 0) job.frames = o->frames;
             if (!o->size.empty()) {
@@ -342,7 +356,7 @@ Command addRun(CLI::App& app) {
             job.paramOverrides = overrides;
             job.fitBudgetMs = fitBudgetMs;
             const Scene scene = loadScene(resolveScenePath(o->scene));
-            job.outDir = std::filesystem::path(o->out) / std::filesystem::path(scene.file).stem();
+            job.outDir = defaultOutDir(o->scene, o->out);
             if (o->frames > 0) job.frames = o->frames;
             job.backend = backend;
             job.debugGl = o->debugGl || kDebugBuild;

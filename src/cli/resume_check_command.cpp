@@ -1,7 +1,8 @@
 // `tidepool check-resume <scene>`: does a resumed run equal the uninterrupted one on this GPU? It
-// renders the scene three times through the same path as `render`: 2N frames straight, N frames
-// with a checkpoint, and N frames resumed from it; then compares the two final checkpoints (every
-// state buffer and every value the scene keeps, byte for byte) and the two final frames.
+// renders the scene three times through the same path as `render`: 2N steps straight (frames 0 to
+// 2N), N steps with a checkpoint (frames 0 to N), and N steps resumed from it (frames N + 1 to 2N);
+// then compares the two final checkpoints (every state buffer and every value the scene keeps,
+// byte for byte) and the two frames numbered 2N.
 // docs/RELIABILITY.md ("Resume on your GPU") says what it has found and where.
 #include <cstdio>
 #include <cstdlib>
@@ -56,7 +57,7 @@ int checkResume(const Opts& o) {
   const int n = o.frames;
   const auto job = [&](const char* name, int frames, const std::filesystem::path& resume) {
     RenderJob j = base;
-    j.frames = frames + 1;  // frame 0 is the starting state: `frames` steps
+    j.frames = resume.empty() ? frames + 1 : frames;  // a fresh run's frame 0 is the starting state: `frames` steps
     j.outDir = dir / name;
     j.checkpoint = dir / (std::string(name) + ".ckpt");
     j.resume = resume;
@@ -71,7 +72,7 @@ int checkResume(const Opts& o) {
     renderHeadless(job("resumed", n, dir / "first.ckpt"));
     stateDiff = io::checkpointDifference(io::readCheckpointFile(dir / "straight.ckpt"),
                                          io::readCheckpointFile(dir / "resumed.ckpt"));
-    sameFrame = fileBytes(frameFile(dir / "straight", 2 * n)) == fileBytes(frameFile(dir / "resumed", n));
+    sameFrame = fileBytes(frameFile(dir / "straight", 2 * n)) == fileBytes(frameFile(dir / "resumed", 2 * n));
   } catch (...) {
     log::setLevel(log::Level::Info);
     if (!keep) std::filesystem::remove_all(dir);

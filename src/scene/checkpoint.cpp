@@ -14,6 +14,7 @@ namespace {
 // Simulated times are sums of frame steps (1/30 s ten times is not exactly 1/3): a save is due
 // within this fraction of a period before its time.
 constexpr double kDueSlack = 1e-9;
+constexpr const char* kFrameEntry = "clip.frame";  // u64, the frame number (see checkpoint.h)
 
 // Visits a stage's state as a save does, keeping nothing: a model first runs its health check on
 // the state as it is and refuses an unhealthy one through fail(), which names the file.
@@ -41,7 +42,7 @@ void judgeLoadedState(Stage& stage, const std::string& where) {
 }
 }  // namespace
 
-io::Checkpoint captureCheckpoint(Stage& stage, const Scene& scene) {
+io::Checkpoint captureCheckpoint(Stage& stage, const Scene& scene, std::uint64_t frame) {
   stage.flushChecks();  // the watch's check in flight is judged: a checkpoint never holds one
   io::Checkpoint c;
   c.model = scene.model;
@@ -50,20 +51,22 @@ io::Checkpoint captureCheckpoint(Stage& stage, const Scene& scene) {
   stage.visitSetupState(saver);
   c.params = writeParams([&](ParamVisitor& v) { stage.visitParams(v); }).dump();
   stage.visitState(saver);
+  saver.value(kFrameEntry, frame);
   return c;
 }
 
-void saveCheckpoint(Stage& stage, const Scene& scene, const std::filesystem::path& file) {
-  const io::Checkpoint c = captureCheckpoint(stage, scene);
+void saveCheckpoint(Stage& stage, const Scene& scene, const std::filesystem::path& file, std::uint64_t frame) {
+  const io::Checkpoint c = captureCheckpoint(stage, scene, frame);
   io::writeFileAtomically(file, io::encodeCheckpoint(c));
 }
 
-void restoreCheckpoint(Stage& stage, const Scene& scene, const io::Checkpoint& c, const std::string& where) {
+std::uint64_t restoreCheckpoint(Stage& stage, const Scene& scene, const io::Checkpoint& c, const std::string& where) {
   if (c.model != scene.model)
     throw Error(where + " is a " + io::printable(c.model) + " checkpoint" +
                 (c.scene.empty() ? "" : " (of " + io::printable(c.scene, 200) + ")") + ", the scene runs " +
                 scene.model);
   sim::StateLoader loader(c, where);
+  std::uint64_t frame = 0;
   try {
     stage.visitSetupState(loader);
     readParams(
@@ -71,16 +74,21 @@ void restoreCheckpoint(Stage& stage, const Scene& scene, const io::Checkpoint& c
         where + ": params");
     stage.reset();
     stage.visitState(loader);
+    if (c.find(kFrameEntry)) loader.value(kFrameEntry, frame);
+    if (frame > kMaxCheckpointFrame)
+      loader.fail(std::string("entry '") + kFrameEntry + "' = " + std::to_string(frame) + " is more than " +
+                  std::to_string(kMaxCheckpointFrame) + " frames");
     loader.finish();
     judgeLoadedState(stage, where);
   } catch (const Error& e) {  // what a model built at these parameters says (too many particles, ...)
     if (std::string(e.what()).rfind(where, 0) == 0) throw;
     throw Error(where + ": " + e.what());
   }
+  return frame;
 }
 
-void loadCheckpoint(Stage& stage, const Scene& scene, const std::filesystem::path& file) {
-  restoreCheckpoint(stage, scene, io::readCheckpointFile(file), file.string());
+std::uint64_t loadCheckpoint(Stage& stage, const Scene& scene, const std::filesystem::path& file) {
+  return restoreCheckpoint(stage, scene, io::readCheckpointFile(file), file.string());
 }
 
 void CheckpointSchedule::reset(double every, double time) {

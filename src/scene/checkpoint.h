@@ -9,8 +9,12 @@
 //   loadCheckpoint(*fresh, scene, "run.ckpt");          // throws Error "run.ckpt: ..." naming the problem
 //
 // Periodic saves (`--checkpoint-every`, the window's autosave) follow a CheckpointSchedule.
+//
+// A checkpoint also holds the number of the frame it is, as `render` numbers them (frame i shows
+// the state after i frame steps from t = 0), so that a resumed render goes on with the next number.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 
@@ -20,19 +24,25 @@
 
 namespace tidepool {
 
-// The checkpoint of `stage`, a stage of `scene`. Throws Error when the model's state is diverged.
-io::Checkpoint captureCheckpoint(Stage& stage, const Scene& scene);
+// At most this frame number in a checkpoint: a resumed run's numbers stay well inside an int.
+inline constexpr std::uint64_t kMaxCheckpointFrame = 1'000'000'000;
+
+// The checkpoint of `stage`, a stage of `scene`, shown as frame `frame`. Throws Error when the
+// model's state is diverged.
+io::Checkpoint captureCheckpoint(Stage& stage, const Scene& scene, std::uint64_t frame = 0);
 // captureCheckpoint, written atomically to `file` (a previous checkpoint there stays whole until
 // the new one is complete). Throws Error.
-void saveCheckpoint(Stage& stage, const Scene& scene, const std::filesystem::path& file);
+void saveCheckpoint(Stage& stage, const Scene& scene, const std::filesystem::path& file, std::uint64_t frame = 0);
 
 // Puts `checkpoint` into `stage`, a freshly created stage of `scene`: its model must be the
 // scene's; its parameters override the scene file's; every entry must fit the state at those
 // parameters; the state as loaded must pass the model's health check and, for balls and fluid,
 // water::kMaxPerDiameterCube (sim/water/cell_load.h). Errors start with `where` (the file).
-// After a failure the stage is half restored: reset it or make a new one.
-void restoreCheckpoint(Stage& stage, const Scene& scene, const io::Checkpoint& checkpoint, const std::string& where);
-void loadCheckpoint(Stage& stage, const Scene& scene, const std::filesystem::path& file);  // read, then restore
+// After a failure the stage is half restored: reset it or make a new one. Returns the checkpoint's
+// frame number (0 for a file that holds none, from a build before frames were numbered).
+std::uint64_t restoreCheckpoint(Stage& stage, const Scene& scene, const io::Checkpoint& checkpoint,
+                                const std::string& where);
+std::uint64_t loadCheckpoint(Stage& stage, const Scene& scene, const std::filesystem::path& file);  // read, restore
 
 // When periodic checkpoints are due: at every multiple of `every` simulated seconds (0: never),
 // counted from t = 0 so that a resumed run keeps the cadence of the run it continues.

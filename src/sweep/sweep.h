@@ -1,8 +1,9 @@
 // Speed-against-accuracy studies: `tidepool sweep <study>` runs one headless, writes a CSV row per
-// run to bench/results/<study>.csv and draws its chart with gnuplot (bench/chart.gp) into
-// docs/charts/<study>.png and .svg: measured cost on x, error on y, one curve per method, a point
-// per dt / resolution, the Pareto front marked. The device is written into every row and into the
-// chart title; software-renderer runs are labelled as development figures.
+// run to <study>.csv and draws its chart with gnuplot (bench/chart.gp) into <study>.png and .svg
+// (out/sweep/ by default; the shipped ones, with --ship, in bench/results/ and docs/charts/):
+// measured cost on x, error on y, one curve per method, a point per dt / resolution, the Pareto
+// front marked. The device is written into every row and into the chart title; software-renderer
+// runs are labelled as development figures.
 #pragma once
 
 #include <filesystem>

@@ -22,9 +22,10 @@ TEST_F(WindowCheckpointLogic, SavesOnRequestAndAtEveryAutosavePeriod) {
   WindowCheckpoints checkpoints(scene, dir / "w.ckpt", 0.25, stage->simTime());
   gl::GpuProfiler profiler;
   std::vector<std::string> messages;
+  std::uint64_t frames = 0;
   const auto frame = [&](bool f6) {
     stage->step(profiler);
-    if (auto saved = checkpoints.afterFrame(*stage, f6)) {
+    if (auto saved = checkpoints.afterFrame(*stage, ++frames, f6)) {
       EXPECT_FALSE(saved->error) << saved->message;
       messages.push_back(saved->message);
     }
@@ -54,7 +55,7 @@ TEST_F(WindowCheckpointLogic, AFailedSaveIsAPanelMessageAndTheDefaultFileIsNamed
   auto stage = createStage(scene, shaders());
   EXPECT_EQ(WindowCheckpoints(scene, "", 0, 0).file(), "pool.ckpt");
   WindowCheckpoints checkpoints(scene, dir / "missing-folder/x.ckpt", 0, 0);
-  const auto saved = checkpoints.afterFrame(*stage, true);
+  const auto saved = checkpoints.afterFrame(*stage, 0, true);
   ASSERT_TRUE(saved.has_value());
   EXPECT_TRUE(saved->error);
   EXPECT_NE(saved->message.find("cannot write checkpoint"), std::string::npos) << saved->message;

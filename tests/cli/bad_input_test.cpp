@@ -39,7 +39,6 @@ TEST(BadInput, UnknownSubcommandOrOption) {
   expectOneLineError({"render", "blank", "--frames", "0", "--out", "/tmp/x"}, "--frames", 2);
   expectOneLineError({"info", "--backend", "vulkan"}, "--backend", 2);
   expectOneLineError({"render", "blank", "--size", "12x", "--out", "/tmp/x"}, "--size '12x' is not WIDTHxHEIGHT", 1);
-  expectOneLineError({"render", "blank"}, "nothing to write: give --out DIR and/or --video FILE", 1);
 }
 
 TEST(BadInput, ObstacleMeshMissingMalformedOrOpen) {

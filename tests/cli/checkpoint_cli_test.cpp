@@ -1,11 +1,13 @@
-// Checkpoints through the program: render 41 frames straight, or 21 with a checkpoint and 21 more
-// resumed from it, and get the same state and the same last image; periodic checkpoints beside
+// Checkpoints through the program: render 41 frames straight, or 21 with a checkpoint and 20 more
+// resumed from it (numbered 21 to 40), and get the same state and the same frames; periodic checkpoints beside
 // the output; bad checkpoints refused in one line; the window's autosave and --resume.
 #include <gtest/gtest.h>
 
 #include <sys/stat.h>
 
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <fstream>
 
 #include "io/checkpoint_file.h"
@@ -48,14 +50,56 @@ TEST(CheckpointCli, ResumedRenderEqualsTheStraightOne) {
   const std::string scene = (dir / "r.json").string();
   render({scene, "--frames", "41", "--out", (dir / "straight").string(), "--checkpoint", (dir / "s.ckpt").string()});
   render({scene, "--frames", "21", "--out", (dir / "first").string(), "--checkpoint", (dir / "half.ckpt").string()});
-  render({scene, "--resume", (dir / "half.ckpt").string(), "--frames", "21", "--out", (dir / "second").string(),
+  render({scene, "--resume", (dir / "half.ckpt").string(), "--frames", "20", "--out", (dir / "second").string(),
           "--checkpoint", (dir / "end.ckpt").string()});
   EXPECT_EQ(io::readCheckpointFile(dir / "s.ckpt").time, io::readCheckpointFile(dir / "end.ckpt").time);
   EXPECT_TRUE(buffersOf(dir / "s.ckpt") == buffersOf(dir / "end.ckpt"));
   EXPECT_FALSE(buffersOf(dir / "half.ckpt") == buffersOf(dir / "end.ckpt"));
-  // Frame 0 of a resumed render shows the restored state; its last frame is the straight run's.
-  EXPECT_EQ(io::readPng(dir / "straight/frame_00040.png").rgba, io::readPng(dir / "second/frame_00020.png").rgba);
-  EXPECT_EQ(io::readPng(dir / "straight/frame_00020.png").rgba, io::readPng(dir / "second/frame_00000.png").rgba);
+  // The resumed render goes on after the checkpoint's frame (20), a step a frame: frames 21 to 40,
+  // each the straight run's frame of that number; the two folders join into the straight clip.
+  for (int i = 0; i <= 40; ++i) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%05d.png", i);
+    EXPECT_EQ(std::filesystem::exists(dir / "first" / name), i <= 20) << name;
+    EXPECT_EQ(std::filesystem::exists(dir / "second" / name), i > 20) << name;
+  }
+  for (const char* name : {"frame_00021.png", "frame_00030.png", "frame_00040.png"})
+    EXPECT_EQ(io::readPng(dir / "straight" / name).rgba, io::readPng(dir / "second" / name).rgba) << name;
+  EXPECT_EQ(io::readPng(dir / "straight/frame_00020.png").rgba, io::readPng(dir / "first/frame_00020.png").rgba);
+}
+
+// A checkpoint holds the number of its frame: resumed, a render numbers its frames on from the
+// next one, whatever it was told to write; a hostile frame number is refused in one line.
+TEST(CheckpointCli, ResumeNumbersOnFromTheCheckpointsFrame) {
+  test::TempDir dir;
+  dir.write("r.json", kRipples);
+  const std::string scene = (dir / "r.json").string();
+  render({scene, "--frames", "12", "--out", (dir / "a").string(), "--checkpoint", (dir / "a.ckpt").string()});
+  std::uint64_t saved = 0;
+  const io::Checkpoint a = io::readCheckpointFile(dir / "a.ckpt");
+  ASSERT_NE(a.find("clip.frame"), nullptr);
+  std::memcpy(&saved, a.find("clip.frame")->bytes.data(), sizeof saved);
+  EXPECT_EQ(saved, 11u);
+  const auto resumed = [&](const std::string& ckpt, const std::string& out) {
+    return runTidepool({"render", scene, "--frames", "3", "--out", (dir / out).string(), "--resume",
+                        (dir / ckpt).string(), "--quiet"});
+  };
+  auto r = resumed("a.ckpt", "b");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("frames from 12"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("(frames 12 to 14)"), std::string::npos) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(dir / "b/frame_00014.png"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "b/frame_00000.png"));
+  test::editCheckpointFile(dir / "a.ckpt", dir / "eight.ckpt",
+                           [](io::Checkpoint& c) { test::setValue(c, "clip.frame", std::uint64_t(8)); });
+  r = resumed("eight.ckpt", "c");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(dir / "c/frame_00009.png"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "c/frame_00011.png"));
+  test::editCheckpointFile(dir / "a.ckpt", dir / "far.ckpt",
+                           [](io::Checkpoint& c) { test::setValue(c, "clip.frame", std::uint64_t(1) << 40); });
+  test::expectOneLineError({"render", scene, "--out", (dir / "d").string(), "--resume", (dir / "far.ckpt").string()},
+                           "far.ckpt: entry 'clip.frame' = 1099511627776 is more than 1000000000 frames");
 }
 
 TEST(CheckpointCli, CheckpointEverySavesBesideTheOutputAndAfterTheLastFrame) {
@@ -109,7 +153,7 @@ TEST(CheckpointCli, RunWithoutADisplayResumesAndCheckpoints) {
                              {"DISPLAY=", "WAYLAND_DISPLAY="});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.err.find("resumed from " + (dir / "a.ckpt").string()), std::string::npos) << r.err;
-  EXPECT_NEAR(io::readCheckpointFile(dir / "b.ckpt").time, 8.0 / 30, 1e-9);
+  EXPECT_NEAR(io::readCheckpointFile(dir / "b.ckpt").time, 9.0 / 30, 1e-9);  // 4 steps, then 5 more
 }
 
 TEST(CheckpointCli, TheWindowAutosavesAndResumesUnderXvfb) {
@@ -147,7 +191,7 @@ TEST(CheckpointCli, TheWindowAutosavesAndResumesUnderXvfb) {
   const io::Checkpoint after = io::readCheckpointFile(resumed);
   const int steps = int(std::lround((after.time - 0.5) * 30));
   ASSERT_GE(steps, 1) << "the resumed window saved at t = " << after.time;
-  const auto headless = runTidepool({"run", (dir / "r.json").string(), "--frames", std::to_string(steps + 1), "--out",
+  const auto headless = runTidepool({"run", (dir / "r.json").string(), "--frames", std::to_string(steps), "--out",
                                      (dir / "h").string(), "--resume", ckpt, "--checkpoint", (dir / "h.ckpt").string()},
                                     {"DISPLAY=", "WAYLAND_DISPLAY="});
   ASSERT_EQ(headless.exitCode, 0) << headless.err;

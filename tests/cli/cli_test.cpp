@@ -5,6 +5,7 @@
 #include "io/png.h"
 #include "support/gl_test.h"
 #include "support/one_line_error.h"
+#include "support/run_process.h"
 
 using namespace tidepool;
 using test::runTidepool;
@@ -54,6 +55,20 @@ TEST(Cli, RunWithoutADisplayRendersTheClipHeadlessAndSaysWhere) {
   EXPECT_NE(r.err.find("no display"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find(dir.path().string() + "/default/frame_*.png"), std::string::npos) << r.err;
   EXPECT_TRUE(std::filesystem::exists(dir / "default/frame_00001.png"));
+}
+
+// With neither --out nor --video, render writes where run does without a display: out/<scene>
+// in the working folder, and says so.
+TEST(Cli, RenderWithoutOutOrVideoWritesToOutSceneHere) {
+  test::TempDir dir;
+  dir.write("red.json", R"({"model": "blank", "params": {"color": [1, 0, 0]}})");
+  const auto r = test::runProcess(
+      {"sh", "-c",
+       "cd '" + dir.path().string() + "' && exec '" TIDEPOOL_EXE "' render red.json --frames 2 --size 16x8 --quiet"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("no --out or --video: writing to out/red"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(dir.path().string() + "/out/red/frame_*.png"), std::string::npos) << r.err;
+  EXPECT_EQ(io::readPng(dir / "out/red/frame_00001.png").width, 16);
 }
 
 TEST(Cli, VideoWithoutFfmpegIsAClearError) {

@@ -48,6 +48,27 @@ TEST(Sweep, StudiesWriteCsvAndCharts) {
   }
 }
 
+// A user's run writes into out/sweep of the working folder; the repository's CSVs and charts are
+// rewritten only with --ship (or named folders).
+TEST(Sweep, ARunWritesIntoOutSweepHereNotIntoTheRepository) {
+  test::TempDir dir;
+  const std::filesystem::path source = TIDEPOOL_SOURCE_DIR;
+  const std::vector<std::filesystem::path> shipped = {
+      source / "bench/results/ripples-dispersion.csv", source / "bench/results/ripples-dispersion.chart.json",
+      source / "docs/charts/ripples-dispersion.png", source / "docs/charts/ripples-dispersion.svg"};
+  std::vector<std::filesystem::file_time_type> before;
+  for (const auto& f : shipped) before.push_back(std::filesystem::last_write_time(f));
+  const auto r = test::runProcess(
+      {"sh", "-c", "cd '" + dir.path().string() + "' && exec '" TIDEPOOL_EXE "' sweep ripples-dispersion --quick"});
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("rows to out/sweep/ripples-dispersion.csv"), std::string::npos) << r.out;
+  for (const char* file :
+       {"ripples-dispersion.csv", "ripples-dispersion.chart.json", "ripples-dispersion.png", "ripples-dispersion.svg"})
+    EXPECT_TRUE(std::filesystem::exists(dir / "out/sweep" / file)) << file;
+  for (std::size_t i = 0; i < shipped.size(); ++i)
+    EXPECT_EQ(std::filesystem::last_write_time(shipped[i]), before[i]) << shipped[i];
+}
+
 TEST(Sweep, UnknownStudyIsAUsageError) {
   auto r = test::runTidepool({"sweep", "balls-nope"});
   EXPECT_EQ(r.exitCode, 2);

@@ -60,7 +60,8 @@ struct AutoChoice {
 // `where` prefixes messages (the scene file).
 void resolveAuto(Scene& scene, const io::Json& stated, const std::string& where);
 
-// Studies whose CSVs method or model auto reads: the ones `tidepool sweep <study> --ship` accepts.
+// Studies whose CSVs method or model auto reads: the ones `tidepool sweep <study> --ship` copies
+// into assets/accuracy/.
 std::vector<std::string> shippedStudies();
 std::filesystem::path accuracyDir();  // assets/accuracy
 
