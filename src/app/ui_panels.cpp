@@ -117,12 +117,26 @@ void wrapped(const ImVec4& colour, const std::string& text) {
   ImGui::PopTextWrapPos();
 }
 
-// The model's status, one clause a line ("4776 balls ...; KE 5.2, PE 1.2e+04; overlap ..."): a
-// wrap never splits a number.
+// The model's status, each "; " clause on its own lines, broken only after ", " so a wrap never
+// splits a number ("... h = 0.\n03564 m" is what ImGui's wrap at '.' would make of it).
 void statusLines(const std::string& status) {
+  const ImVec4 colour = ImGui::GetStyle().Colors[ImGuiCol_TextDisabled];
+  const float width = ImGui::GetContentRegionAvail().x;
   for (std::size_t from = 0; from < status.size();) {
     const std::size_t end = std::min(status.find("; ", from), status.size());
-    wrapped(ImGui::GetStyle().Colors[ImGuiCol_TextDisabled], status.substr(from, end - from));
+    std::string line;
+    for (std::size_t at = from; at < end;) {
+      const std::size_t comma = std::min(status.find(", ", at), end);
+      const std::size_t next = std::min(comma + 2, end);  // the piece keeps its ", "
+      const std::string piece = status.substr(at, next - at);
+      if (!line.empty() && ImGui::CalcTextSize((line + piece).c_str()).x > width) {
+        wrapped(colour, line);
+        line.clear();
+      }
+      line += piece;
+      at = next;
+    }
+    if (!line.empty()) wrapped(colour, line);
     from = end + 2;
   }
 }
