@@ -6,6 +6,8 @@
 #include <array>
 #include <cstdio>
 
+#include "app/panel_layout.h"
+
 namespace tidepool {
 
 void RateCounter::sample(double now, std::uint64_t total) {
@@ -43,7 +45,7 @@ void drawIndicators(const Indicators& c, const StageIndicators& s) {
     ImGui::Text("%.1f FPS", c.frames.perSecond());
     const double steps = c.steps.perSecond();
     if (s.steps > 0) ImGui::Text(steps < 10.0 ? "%.1f steps/s" : "%.0f steps/s", steps);  // models that count them
-    if (s.particles > 0) ImGui::Text("%zu particles", s.particles);
+    if (s.particles > 0) ImGui::TextUnformatted(countText(s).c_str());
     if (s.gridCells.x > 0) {
       if (s.gridCells.z > 1)
         ImGui::Text("grid %u x %u x %u, cell %.4g", s.gridCells.x, s.gridCells.y, s.gridCells.z, s.cellSize);

@@ -6,6 +6,7 @@
 #include <cfloat>
 #include <cstdio>
 
+#include "app/panel_layout.h"
 #include "app/param_editor.h"
 
 namespace tidepool {
@@ -43,16 +44,19 @@ void History::push(float cost, float value) {
 }
 
 namespace {
+// Each plot under its name, the full width of the panel (a long name is never clipped).
 void livePlots(const Stage& stage, const UiState& ui) {
   const History& h = ui.history;
-  ImGui::PlotLines("GPU ms/frame", h.costMs.data(), History::kHistory, h.next, nullptr, 0.0f, FLT_MAX, ImVec2(0, 48));
   const auto [name, value] = stage.liveMetric();
   if (!name.empty()) {
-    char overlay[64];
-    std::snprintf(overlay, sizeof overlay, "%.4g", value);
-    ImGui::PlotLines(name.c_str(), h.metric.data(), History::kHistory, h.next, overlay, FLT_MAX, FLT_MAX,
-                     ImVec2(0, 48));
+    ImGui::TextUnformatted(name.c_str());
+    const std::string overlay = plotOverlay(value);  // nothing until the model has measured
+    ImGui::PlotLines("##metric", h.metric.data(), History::kHistory, h.next, overlay.c_str(), FLT_MAX, FLT_MAX,
+                     ImVec2(ImGui::GetContentRegionAvail().x, 40));
   }
+  ImGui::TextUnformatted("GPU ms/frame");
+  ImGui::PlotLines("##cost", h.costMs.data(), History::kHistory, h.next, nullptr, 0.0f, FLT_MAX,
+                   ImVec2(ImGui::GetContentRegionAvail().x, 40));
 }
 }  // namespace
 
@@ -81,64 +85,128 @@ std::string windowTitle(const std::string& sceneName, const std::string& running
   return "tidepool - " + sceneName + " [" + running + "]";
 }
 
-bool drawMainPanel(const Scene& scene, Stage& stage, const gl::GpuProfiler& profiler, UiState& ui,
-                   float& autosaveEvery) {
-  ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSizeConstraints(ImVec2(340, 0), ImVec2(520, 10000));
-  ImGui::Begin("tidepool", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
-  const bool modelAuto = scene.autoChoice && !scene.autoChoice->model.empty();
-  ImGui::Text("%s  [%s%s]", scene.name.c_str(), runningLabel(scene, stage).c_str(), modelAuto ? ", model auto" : "");
-  if (const std::string s = stage.status(); !s.empty()) ImGui::TextDisabled("%s", s.c_str());
-  ImGui::Text("simulated time %.3f s", stage.simTime());
-  if (ui.showTimings) timingTable(profiler);
-  livePlots(stage, ui);
-  ImGui::Checkbox("Timings (D)", &ui.showTimings);
-  ImGui::SameLine();
-  ImGui::Checkbox("Indicators", &ui.showIndicators);
-  ImGui::SameLine();
-  if (ImGui::Button("Fullscreen (F11)")) ui.fullscreenRequested = true;
+namespace {
+// Buttons flow left to right and wrap to the next line where the next one would not fit.
+class ButtonRow {
+ public:
+  bool button(const char* label) {
+    place(ImGui::CalcTextSize(label).x + 2 * ImGui::GetStyle().FramePadding.x);
+    return ImGui::Button(label);
+  }
+  bool checkbox(const char* label, bool* value) {
+    place(ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize(label).x);
+    return ImGui::Checkbox(label, value);
+  }
 
-  ImGui::Checkbox("Pause (Space)", &ui.paused);
-  ImGui::SameLine();
-  if (ImGui::Button("Step (.)")) ++ui.stepsPending;
-  ImGui::SameLine();
-  if (ImGui::Button("Restart (R)")) ui.resetRequested = true;
-  if (ImGui::Button("Reload shaders (F5)")) ui.reloadRequested = true;
-  ImGui::SameLine();
-  if (ImGui::Button("Screenshot (F12)")) ui.screenshotRequested = true;
-  if (ImGui::Button("Save checkpoint (F6)")) ui.checkpointRequested = true;
-  ImGui::SameLine();
-  ImGui::SetNextItemWidth(90);
+ private:
+  void place(float width) {
+    if (m_first) {
+      m_first = false;
+      return;
+    }
+    const float spacing = ImGui::GetStyle().ItemSpacing.x;
+    const float right = ImGui::GetItemRectMax().x + spacing + width;
+    if (right <= ImGui::GetWindowContentRegionMax().x + ImGui::GetWindowPos().x) ImGui::SameLine();
+  }
+  bool m_first = true;
+};
+
+void wrapped(const ImVec4& colour, const std::string& text) {
+  ImGui::PushTextWrapPos(0.0f);
+  ImGui::TextColored(colour, "%s", text.c_str());
+  ImGui::PopTextWrapPos();
+}
+
+// The model's status, each "; " clause on its own lines, broken only after ", " so a wrap never
+// splits a number ("... h = 0.\n03564 m" is what ImGui's wrap at '.' would make of it).
+void statusLines(const std::string& status) {
+  const ImVec4 colour = ImGui::GetStyle().Colors[ImGuiCol_TextDisabled];
+  const float width = ImGui::GetContentRegionAvail().x;
+  for (std::size_t from = 0; from < status.size();) {
+    const std::size_t end = std::min(status.find("; ", from), status.size());
+    std::string line;
+    for (std::size_t at = from; at < end;) {
+      const std::size_t comma = std::min(status.find(", ", at), end);
+      const std::size_t next = std::min(comma + 2, end);  // the piece keeps its ", "
+      const std::string piece = status.substr(at, next - at);
+      if (!line.empty() && ImGui::CalcTextSize((line + piece).c_str()).x > width) {
+        wrapped(colour, line);
+        line.clear();
+      }
+      line += piece;
+      at = next;
+    }
+    if (!line.empty()) wrapped(colour, line);
+    from = end + 2;
+  }
+}
+
+void runSection(Stage& stage, UiState& ui) {
+  ButtonRow row;
+  row.checkbox("Pause (Space)", &ui.paused);
+  if (row.button("Step (.)")) ++ui.stepsPending;
+  if (row.button("Restart (R)")) ui.resetRequested = true;
+  if (row.button("Screenshot (F12)")) ui.screenshotRequested = true;
+  if (row.button("Fullscreen (F11)")) ui.fullscreenRequested = true;
+  row.checkbox("Indicators", &ui.showIndicators);
+  if (const std::string share = stage.shareText(); !share.empty() && row.button("Copy share code")) {
+    ImGui::SetClipboardText(share.c_str());  // the GLFW backend: glfwSetClipboardString
+    ui.message =
+        "share code copied (" + std::to_string(share.size()) + " characters): tidepool run life --rules <code>";
+    ui.messageIsError = false;
+  }
+}
+
+void toolsSection(UiState& ui, float& autosaveEvery) {
+  ButtonRow row;
+  if (row.button("Reload shaders (F5)")) ui.reloadRequested = true;
+  if (row.button("Save checkpoint (F6)")) ui.checkpointRequested = true;
   ImGui::DragFloat("autosave every (sim s)", &autosaveEvery, 0.1f, 0.0f, 3600.0f, autosaveEvery > 0 ? "%.2f" : "off");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("a checkpoint at every multiple of this simulated time; 0: off");
-  if (const std::string share = stage.shareText(); !share.empty()) {
-    ImGui::SameLine();
-    if (ImGui::Button("Copy share code")) {
-      ImGui::SetClipboardText(share.c_str());  // the GLFW backend: glfwSetClipboardString
-      ui.message =
-          "share code copied (" + std::to_string(share.size()) + " characters): tidepool run life --rules <code>";
-      ui.messageIsError = false;
-    }
-  }
-  if (!ui.divergence.empty()) {
-    ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.3f, 1.0f), "%s", ui.divergence.c_str());
-    ImGui::PopTextWrapPos();
-    if (ImGui::Button("Halve dt and resume from the last good state")) ui.recoverRequested = true;
-  }
-  if (!ui.message.empty()) {
-    const ImVec4 colour = ui.messageIsError ? ImVec4(1.0f, 0.45f, 0.4f, 1.0f) : ImVec4(0.6f, 0.9f, 0.6f, 1.0f);
-    ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextColored(colour, "%s", ui.message.c_str());
-    ImGui::PopTextWrapPos();
-  }
+}
+}  // namespace
 
+bool drawMainPanel(const Scene& scene, Stage& stage, const gl::GpuProfiler& profiler, UiState& ui,
+                   float& autosaveEvery) {
+  const ImGuiViewport* viewport = ImGui::GetMainViewport();
+  const PanelLayout layout = panelLayout(int(viewport->Size.x), int(viewport->Size.y));
+  ImGui::SetNextWindowPos(ImVec2(viewport->Pos.x + layout.x, viewport->Pos.y + layout.y), ImGuiCond_Always);
+  ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize;
+  if (layout.sidebar) {
+    ImGui::SetNextWindowSize(ImVec2(layout.width, layout.maxHeight), ImGuiCond_Always);
+  } else {
+    ImGui::SetNextWindowSizeConstraints(ImVec2(layout.width, 0), ImVec2(layout.width, layout.maxHeight));
+    flags |= ImGuiWindowFlags_AlwaysAutoResize;
+  }
+  const bool open = ImGui::Begin("tidepool", nullptr, flags);
+  ui.panelRight = open ? ImGui::GetWindowPos().x + ImGui::GetWindowWidth() - viewport->Pos.x : 0.0f;
+  ui.panelHeight = ImGui::GetWindowHeight();
   bool changed = false;
-  if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) {
-    if (scene.autoChoice) autoChoicePanel(*scene.autoChoice);
-    ParamEditor editor;
-    stage.visitParams(editor);
-    changed = editor.changed();
+  if (open) {
+    ImGui::PushItemWidth(-layout.labelWidth);
+    const bool modelAuto = scene.autoChoice && !scene.autoChoice->model.empty();
+    ImGui::Text("%s  [%s%s]", scene.name.c_str(), runningLabel(scene, stage).c_str(), modelAuto ? ", model auto" : "");
+    statusLines(stage.status());
+    ImGui::Text("simulated time %.3f s", stage.simTime());
+    if (!ui.divergence.empty()) {
+      wrapped(ImVec4(1.0f, 0.35f, 0.3f, 1.0f), ui.divergence);
+      if (ImGui::Button("Halve dt and resume from the last good state")) ui.recoverRequested = true;
+    }
+    if (!ui.message.empty())
+      wrapped(ui.messageIsError ? ImVec4(1.0f, 0.45f, 0.4f, 1.0f) : ImVec4(0.6f, 0.9f, 0.6f, 1.0f), ui.message);
+    if (ImGui::CollapsingHeader("Run", ImGuiTreeNodeFlags_DefaultOpen)) runSection(stage, ui);
+    if (ImGui::CollapsingHeader("Plots", ImGuiTreeNodeFlags_DefaultOpen)) livePlots(stage, ui);
+    ImGui::SetNextItemOpen(ui.showTimings, ImGuiCond_Always);  // D opens and closes it too
+    ui.showTimings = ImGui::CollapsingHeader("GPU timings (D)");
+    if (ui.showTimings) timingTable(profiler);
+    if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) {
+      if (scene.autoChoice) autoChoicePanel(*scene.autoChoice);
+      ParamEditor editor;
+      stage.visitParams(editor);
+      changed = editor.changed();
+    }
+    if (ImGui::CollapsingHeader("Tools")) toolsSection(ui, autosaveEvery);
+    ImGui::PopItemWidth();
   }
   ImGui::End();
   return changed;

@@ -25,7 +25,7 @@ struct UiState {
   bool reloadRequested = false;
   bool screenshotRequested = false;
   bool showUi = true;                // S (or H): the panels
-  bool showTimings = true;           // D: FPS and the GPU passes' times
+  bool showTimings = false;          // D: FPS and the GPU passes' times (the panel's "GPU timings")
   bool showIndicators = true;        // the overlay: FPS, steps/s, count, grid, axes
   bool fullscreenRequested = false;  // F11 or the panel's button
   bool recoverRequested = false;
@@ -34,10 +34,13 @@ struct UiState {
   std::string message;               // last action's result (reload, screenshot)
   bool messageIsError = false;
   History history;
+  float panelRight = 0, panelHeight = 0;  // the panel as drawn last, pixels (0: hidden or collapsed)
 };
 
-// Main panel: scene, timing table, transport buttons, parameters. Returns true when parameters changed.
-// `autosaveEvery`: the checkpoint autosave period, simulated s (0: off).
+// Main panel: scene, then collapsible sections (run, plots, GPU timings, parameters, tools), at
+// the left edge in a fixed width, scrolling when taller than the framebuffer (app/panel_layout.h).
+// Returns true when parameters changed. `autosaveEvery`: the checkpoint autosave period,
+// simulated s (0: off).
 bool drawMainPanel(const Scene& scene, Stage& stage, const gl::GpuProfiler& profiler, UiState& ui,
                    float& autosaveEvery);
 

@@ -16,6 +16,7 @@
 #include "app/indicators.h"
 #include "app/key_bindings.h"
 #include "app/key_queue.h"
+#include "app/panel_layout.h"
 #include "app/ui_panels.h"
 #include "app/window_checkpoints.h"
 #include "app/window_export.h"
@@ -47,15 +48,17 @@ std::string timestampedName() {
   return buf;
 }
 
-Input readInput(GLFWwindow* window, glm::vec2& lastCursor, float& scroll, float dt) {
+// The scene sees only its area: cursor and viewport relative to it.
+Input readInput(GLFWwindow* window, const SceneArea& area, glm::vec2& lastCursor, float& scroll, float dt) {
   Input in;
   in.dt = dt;
   double x = 0, y = 0;
   glfwGetCursorPos(window, &x, &y);
-  in.cursor = {float(x), float(y)};
+  in.cursor = {float(x) - float(area.x), float(y)};
   in.cursorDelta = in.cursor - lastCursor;
   lastCursor = in.cursor;
   glfwGetFramebufferSize(window, &in.viewport.x, &in.viewport.y);
+  in.viewport.x = area.width;
   const bool free = !ImGui::GetIO().WantCaptureMouse;
   in.left = free && glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
   in.right = free && glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
@@ -137,6 +140,9 @@ int runWindow(const WindowJob& job) {
   Indicators counters;
   std::string title;  // as last set: the title follows what runs (M switches the water model, N life's rules)
   double lastTime = glfwGetTime();
+  LayoutWatch layout;  // the screenshot ending a run waits for the panel to settle
+  // Past --frames, with --screenshot, frames only lay the panel out: the run holds still.
+  constexpr int kMaxSettleFrames = 10;
 
   for (int frame = 0; !context.shouldClose(); ++frame) {
     pacer.waitForSlot();  // before reading input: what the frame shows is as fresh as the GPU allows
@@ -160,10 +166,12 @@ int runWindow(const WindowJob& job) {
     ImGui::NewFrame();
     const StageIndicators shown = stage->indicators();
     counters.update(now, shown);
+    ui.panelRight = ui.panelHeight = 0.0f;
     if (ui.showUi) {
       drawMainPanel(scene, *stage, profiler, ui, checkpoints.autosaveEvery());
       if (auto m = drawExportPanel(exports, *stage)) show(*m);
     }
+    layout.see(ui.panelRight, ui.panelHeight);
     if (ui.showIndicators) {  // as the original's: apart from the panel (S hides only the panels)
       drawIndicators(counters, shown);
       if (shown.view) drawAxesGizmo(*shown.view);
@@ -196,7 +204,9 @@ int runWindow(const WindowJob& job) {
         ui.messageIsError = true;
       }
     }
-    stage->input(readInput(window, lastCursor, g_scroll, dt));
+    context.framebufferSize(fbw, fbh);
+    const SceneArea area = sceneArea(fbw, ui.panelRight);  // right of the panel: it hides none of the scene
+    stage->input(readInput(window, area, lastCursor, g_scroll, dt));
     for (const std::string& path : std::exchange(g_dropped, {})) {
       const std::string refused = stage->dropFile(path);
       ui.messageIsError = !refused.empty();
@@ -204,12 +214,12 @@ int runWindow(const WindowJob& job) {
       if (!refused.empty()) log::error(refused);
     }
 
-    context.framebufferSize(fbw, fbh);
-    if (fbw > 0 && fbh > 0) target.resize(fbw, fbh);
+    if (area.width > 0 && fbh > 0) target.resize(area.width, fbh);
+    const bool settling = job.maxFrames && frame >= *job.maxFrames;
     profiler.beginFrame();
     const bool stepOnce = ui.paused && ui.stepsPending > 0;  // one . press a frame
     ui.stepsPending = stepOnce ? ui.stepsPending - 1 : 0;
-    const bool stepped = !ui.paused || stepOnce;
+    const bool stepped = !settling && (!ui.paused || stepOnce);
     if (stepped) {
       stage->step(profiler);  // the model's frame, as `tidepool render` steps it, whatever the refresh rate
       ++frameNumber;
@@ -233,15 +243,23 @@ int runWindow(const WindowJob& job) {
       ui.messageIsError = saved->error;
     }
 
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, fbw, fbh);
+    if (area.x > 0) {  // the panel's column
+      glClearColor(0.06f, 0.06f, 0.06f, 1.0f);
+      glClear(GL_COLOR_BUFFER_BIT);
+    }
     glBindFramebuffer(GL_READ_FRAMEBUFFER, target.framebuffer().id());
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-    glBlitFramebuffer(0, 0, target.width(), target.height(), 0, 0, fbw, fbh, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBlitFramebuffer(0, 0, target.width(), target.height(), area.x, 0, area.x + area.width, fbh, GL_COLOR_BUFFER_BIT,
+                      GL_NEAREST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, fbw, fbh);
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
-    const bool last = job.maxFrames && frame + 1 >= *job.maxFrames;
+    const bool last = job.maxFrames && frame + 1 >= *job.maxFrames &&
+                      (job.screenshot.empty() || (layout.settled() && ImGui::GetFrameCount() >= 3) ||
+                       frame + 1 >= *job.maxFrames + kMaxSettleFrames);
     if (ui.screenshotRequested || (last && !job.screenshot.empty())) {
       ui.screenshotRequested = false;
       const std::filesystem::path path =

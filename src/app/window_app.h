@@ -17,7 +17,7 @@ struct WindowJob {
   std::string scene;  // path or bare name
   int width = 1280, height = 720;
   std::optional<int> maxFrames;      // close after this many frames (scripts, tests)
-  std::filesystem::path screenshot;  // written after the last frame when set
+  std::filesystem::path screenshot;  // written after the last frame when set, once the panel has settled
   bool debugGl = false;
   bool vsync = true;
   io::Json paramOverrides;            // scene params set from the command line (--rules)

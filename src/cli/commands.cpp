@@ -312,7 +312,8 @@ Command addRun(CLI::App& app) {
   sub->add_option("scene", o->scene, "scene file, or a name from assets/scenes (default: default)");
   sub->add_option("--size", o->size, "window size WIDTHxHEIGHT");
   sub->add_option("--frames", o->frames, "close after N frames (0: run until closed)")->check(CLI::Range(0, 100000000));
-  sub->add_option("--screenshot", o->screenshot, "save the window to this PNG after the last frame");
+  sub->add_option("--screenshot", o->screenshot,
+                  "save the window to this PNG after the last frame (the run holds still until the panel is laid out)");
   sub->add_option("--backend", o->backend, "auto (window if there is a display), window, egl or osmesa")
       ->check(CLI::IsMember(kBackends));
   sub->add_option("--out", o->out, "folder for the headless clip when there is no display");

@@ -94,6 +94,15 @@ class RipplesStage final : public ModelStage<ripples::Ripples> {
     m_model.touch(uv.x, uv.y, p.touchRadius, m_pressed ? 0.1f * p.touchDepth : p.touchDepth);
     m_pressed = true;
   }
+  StageIndicators indicators() override {
+    StageIndicators s = ModelStage::indicators();
+    s.countsCells = true;
+    if (m_view.mode == ViewMode::ThreeD) {
+      syncViews();
+      s.view = m_view3d.camera().view();
+    }
+    return s;
+  }
   std::pair<std::string, double> liveMetric() const override { return {"max |h| (m)", m_model.lastMaxHeight()}; }
   void visitState(sim::StateVisitor& v) override {
     ModelStage::visitState(v);

@@ -34,6 +34,7 @@ namespace tidepool {
 struct StageIndicators {
   std::uint64_t steps = 0;        // simulation steps taken, a running count (a reset may restart it)
   std::size_t particles = 0;      // particles (or cells)
+  bool countsCells = false;       // `particles` counts grid cells (ripples)
   glm::uvec3 gridCells{0u};       // the neighbour grid's cells per axis (0: no grid to show)
   float cellSize = 0.0f;          // its cell edge, world units
   std::optional<glm::mat4> view;  // 3D views: the camera's view matrix (the axes gizmo)

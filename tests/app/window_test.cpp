@@ -41,6 +41,34 @@ TEST(Window, OpensDrawsAndTakesAScreenshotUnderXvfb) {
   EXPECT_GT(nonGreen, 1000) << "the UI panel should be drawn over the scene";
 }
 
+// At 1280x720 the panel is a sidebar the window's height and the scene is drawn right of it: the
+// blank scene's colour fills the columns beside the panel from top to bottom, and the panel's
+// column is other colours down to the bottom row (the screenshot waited for its layout).
+TEST(Window, TheSidebarPanelLeavesTheSceneUncovered) {
+  ASSERT_TRUE(onPath("xvfb-run")) << "xvfb-run is needed for the window test (scripts/install-deps.sh installs it)";
+  test::TempDir dir;
+  dir.write("green.json", R"({"name": "Green", "model": "blank", "params": {"color": [0, 1, 0]}})");
+  const std::string shot = (dir / "shot.png").string();
+  auto r = test::runProcess({"xvfb-run", "-a", "-s", "-screen 0 1920x1080x24", TIDEPOOL_EXE, "run",
+                             (dir / "green.json").string(), "--backend", "window", "--size", "1280x720", "--frames",
+                             "1", "--screenshot", shot});
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  io::Image img = io::readPng(shot);
+  ASSERT_EQ(img.width, 1280);
+  ASSERT_EQ(img.height, 720);
+  const auto green = [&](int x, int y) {
+    const uint8_t* p = &img.rgba[(std::size_t(y) * 1280 + x) * 4];
+    return p[0] == 0 && p[1] == 255 && p[2] == 0;
+  };
+  int panelGreen = 0, sceneGreen = 0;
+  for (int y = 0; y < 720; ++y) {
+    panelGreen += green(200, y);
+    sceneGreen += green(500, y);
+  }
+  EXPECT_EQ(panelGreen, 0) << "the panel's column is the panel, down to the bottom";
+  EXPECT_GT(sceneGreen, 600) << "beside the panel, the scene (the indicators cover the top right only)";
+}
+
 TEST(Window, NoDisplayGivesAClearError) {
   auto r =
       test::runTidepool({"run", "blank", "--backend", "window", "--frames", "1"}, {"DISPLAY=", "WAYLAND_DISPLAY="});
