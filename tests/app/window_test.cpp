@@ -11,19 +11,27 @@
 using namespace tidepool;
 
 namespace {
-bool onPath(const std::string& tool) { return test::runProcess({"sh", "-c", "command -v " + tool}).exitCode == 0; }
-}  // namespace
 
-TEST(Window, OpensDrawsAndTakesAScreenshotUnderXvfb) {
-  ASSERT_TRUE(onPath("xvfb-run")) << "xvfb-run is needed for the window test (scripts/install-deps.sh installs it)";
+bool onPath(const std::string& tool) { return test::runProcess({"sh", "-c", "command -v " + tool}).exitCode == 0; }
+
+// The window of a plain green scene at `size` (WxH) on an Xvfb screen of `screen`, its screenshot
+// after `frames` frames.
+io::Image greenWindow(const std::string& screen, const std::string& size, const std::string& frames) {
+  EXPECT_TRUE(onPath("xvfb-run")) << "xvfb-run is needed for the window test (scripts/install-deps.sh installs it)";
   test::TempDir dir;
   dir.write("green.json", R"({"name": "Green", "model": "blank", "params": {"color": [0, 1, 0]}})");
   const std::string shot = (dir / "shot.png").string();
-  auto r = test::runProcess({"xvfb-run", "-a", "-s", "-screen 0 800x600x24", TIDEPOOL_EXE, "run",
-                             (dir / "green.json").string(), "--backend", "window", "--size", "640x480", "--frames", "3",
+  auto r = test::runProcess({"xvfb-run", "-a", "-s", "-screen 0 " + screen, TIDEPOOL_EXE, "run",
+                             (dir / "green.json").string(), "--backend", "window", "--size", size, "--frames", frames,
                              "--screenshot", shot});
-  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
-  io::Image img = io::readPng(shot);
+  EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
+  return r.exitCode == 0 ? io::readPng(shot) : io::Image{};
+}
+
+}  // namespace
+
+TEST(Window, OpensDrawsAndTakesAScreenshotUnderXvfb) {
+  const io::Image img = greenWindow("800x600x24", "640x480", "3");
   ASSERT_EQ(img.width, 640);
   ASSERT_EQ(img.height, 480);
   // The scene colour fills the window away from the UI panel (bottom-right corner)...
@@ -45,15 +53,7 @@ TEST(Window, OpensDrawsAndTakesAScreenshotUnderXvfb) {
 // blank scene's colour fills the columns beside the panel from top to bottom, and the panel's
 // column is other colours down to the bottom row (the screenshot waited for its layout).
 TEST(Window, TheSidebarPanelLeavesTheSceneUncovered) {
-  ASSERT_TRUE(onPath("xvfb-run")) << "xvfb-run is needed for the window test (scripts/install-deps.sh installs it)";
-  test::TempDir dir;
-  dir.write("green.json", R"({"name": "Green", "model": "blank", "params": {"color": [0, 1, 0]}})");
-  const std::string shot = (dir / "shot.png").string();
-  auto r = test::runProcess({"xvfb-run", "-a", "-s", "-screen 0 1920x1080x24", TIDEPOOL_EXE, "run",
-                             (dir / "green.json").string(), "--backend", "window", "--size", "1280x720", "--frames",
-                             "1", "--screenshot", shot});
-  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
-  io::Image img = io::readPng(shot);
+  const io::Image img = greenWindow("1920x1080x24", "1280x720", "1");
   ASSERT_EQ(img.width, 1280);
   ASSERT_EQ(img.height, 720);
   const auto green = [&](int x, int y) {
