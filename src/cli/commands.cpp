@@ -115,8 +115,8 @@ io::Json setOverride(const std::string& text) {
 }
 
 // Where a clip goes when the command line names no folder: "<root>/<scene file's stem>".
-std::filesystem::path defaultOutDir(const std::string& scene, const std::filesystem::path& root = "out") {
-  return root / resolveScenePath(scene).stem();
+std::filesystem::path defaultOutDir(const std::filesystem::path& sceneFile, const std::filesystem::path& root = "out") {
+  return root / sceneFile.stem();
 }
 
 void addResolutionOptions(CLI::App* sub, ResolutionOpts& o) {
@@ -268,7 +268,7 @@ Command addRender(CLI::App& app) {
   return {sub, [o, sub] {
             RenderJob job = o->job;
             if (job.outDir.empty() && job.video.empty()) {  // as `run` without a display: out/<scene>
-              job.outDir = defaultOutDir(job.scene);
+              job.outDir = defaultOutDir(resolveScenePath(job.scene));
               log::info("no --out or --video: writing to " + io::shownPath(job.outDir));
             }
             applyCheckpointOptions(o->checkpoints, job);
@@ -357,7 +357,7 @@ Command addRun(CLI::App& app) {
             job.paramOverrides = overrides;
             job.fitBudgetMs = fitBudgetMs;
             const Scene scene = loadScene(resolveScenePath(o->scene));
-            job.outDir = defaultOutDir(o->scene, o->out);
+            job.outDir = defaultOutDir(scene.file, o->out);  // the scene loaded above
             if (o->frames > 0) job.frames = o->frames;
             job.backend = backend;
             job.debugGl = o->debugGl || kDebugBuild;
