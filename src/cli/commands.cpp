@@ -310,7 +310,9 @@ Command addRun(CLI::App& app) {
   };
   auto o = std::make_shared<Opts>();
   sub->add_option("scene", o->scene, "scene file, or a name from assets/scenes (default: default)");
-  sub->add_option("--size", o->size, "window size WIDTHxHEIGHT");
+  auto* sizeOpt = sub->add_option(
+      "--size", o->size,
+      "window size WIDTHxHEIGHT (default 1280x720); without a display, the clip's (default: the scene's)");
   sub->add_option("--frames", o->frames, "close after N frames (0: run until closed)")->check(CLI::Range(0, 100000000));
   sub->add_option("--screenshot", o->screenshot,
                   "save the window to this PNG after the last frame (the run holds still until the panel is laid out)");
@@ -324,7 +326,7 @@ Command addRun(CLI::App& app) {
   sub->add_flag("--debug-gl", o->debugGl, "log KHR_debug driver messages");
   addCheckpointOptions(sub, o->checkpoints);
   addResolutionOptions(sub, o->resolution);
-  return {sub, [o] {
+  return {sub, [o, sizeOpt] {
             int w = 0, h = 0;
             parseSize(o->size, w, h);
             const gl::Backend backend = gl::parseBackend(o->backend);
@@ -359,6 +361,10 @@ Command addRun(CLI::App& app) {
             const Scene scene = loadScene(resolveScenePath(o->scene));
             job.outDir = defaultOutDir(scene.file, o->out);  // the scene loaded above
             if (o->frames > 0) job.frames = o->frames;
+            if (sizeOpt->count() > 0) {  // else the scene's clip size, not the window's default
+              job.width = w;
+              job.height = h;
+            }
             job.backend = backend;
             job.debugGl = o->debugGl || kDebugBuild;
             applyCheckpointOptions(o->checkpoints, job);

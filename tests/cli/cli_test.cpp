@@ -57,6 +57,26 @@ TEST(Cli, RunWithoutADisplayRendersTheClipHeadlessAndSaysWhere) {
   EXPECT_TRUE(std::filesystem::exists(dir / "default/frame_00001.png"));
 }
 
+// Without a display, run's --size is the clip's size when given, and the scene's clip size when not
+// (its window default, 1280x720, is for windows).
+TEST(Cli, RunWithoutADisplayRendersAtSizeOrTheScenesClipSize) {
+  test::TempDir dir;
+  dir.write("red.json", R"({"model": "blank", "clip": {"width": 24, "height": 10}})");
+  const std::vector<std::string> noDisplay = {"DISPLAY=", "WAYLAND_DISPLAY="};
+  auto r = runTidepool(
+      {"run", (dir / "red.json").string(), "--frames", "1", "--size", "16x8", "--out", (dir / "sized").string()},
+      noDisplay);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  io::Image img = io::readPng(dir / "sized/red/frame_00000.png");
+  EXPECT_EQ(img.width, 16);
+  EXPECT_EQ(img.height, 8);
+  r = runTidepool({"run", (dir / "red.json").string(), "--frames", "1", "--out", (dir / "clip").string()}, noDisplay);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  img = io::readPng(dir / "clip/red/frame_00000.png");
+  EXPECT_EQ(img.width, 24);
+  EXPECT_EQ(img.height, 10);
+}
+
 // With neither --out nor --video, render writes where run does without a display: out/<scene>
 // in the working folder, and says so.
 TEST(Cli, RenderWithoutOutOrVideoWritesToOutSceneHere) {
