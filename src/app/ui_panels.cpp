@@ -63,8 +63,14 @@ void livePlots(const Stage& stage, const UiState& ui) {
 namespace {
 // "method": "auto" (or "model": "auto"): what was picked at load, against what, and what the most
 // accurate would cost.
-void autoChoicePanel(const AutoChoice& c) {
+void autoChoicePanel(const AutoChoice& c, const std::string& running) {
   ImGui::PushTextWrapPos(0.0f);
+  if (!c.model.empty() && c.model != running) {  // M switched away from the model auto picked
+    ImGui::TextDisabled("model auto picked %s; M switched to %s, whose accuracy is unchecked", c.model.c_str(),
+                        running.c_str());
+    ImGui::PopTextWrapPos();
+    return;
+  }
   ImGui::TextColored(ImVec4(0.55f, 0.8f, 1.0f, 1.0f), "%s", c.headline().c_str());
   ImGui::TextDisabled("%s auto: %.3g ms per simulated s (most accurate: %s, %.3g)",
                       c.model.empty() ? "method" : "model", c.costMsPerSimS, c.mostAccurate.c_str(),
@@ -83,6 +89,11 @@ std::string runningLabel(const Scene& scene, const Stage& stage) {
 
 std::string windowTitle(const std::string& sceneName, const std::string& running) {
   return "tidepool - " + sceneName + " [" + running + "]";
+}
+
+std::string autoModelNote(const Scene& scene, const std::string& running) {
+  const bool picked = scene.autoChoice && !scene.autoChoice->model.empty() && scene.autoChoice->model == running;
+  return picked ? ", model auto" : "";
 }
 
 namespace {
@@ -184,8 +195,8 @@ bool drawMainPanel(const Scene& scene, Stage& stage, const gl::GpuProfiler& prof
   bool changed = false;
   if (open) {
     ImGui::PushItemWidth(-layout.labelWidth);
-    const bool modelAuto = scene.autoChoice && !scene.autoChoice->model.empty();
-    ImGui::Text("%s  [%s%s]", scene.name.c_str(), runningLabel(scene, stage).c_str(), modelAuto ? ", model auto" : "");
+    const std::string running = runningLabel(scene, stage);
+    ImGui::Text("%s  [%s%s]", scene.name.c_str(), running.c_str(), autoModelNote(scene, running).c_str());
     statusLines(stage.status());
     ImGui::Text("simulated time %.3f s", stage.simTime());
     if (!ui.divergence.empty()) {
@@ -200,7 +211,7 @@ bool drawMainPanel(const Scene& scene, Stage& stage, const gl::GpuProfiler& prof
     ui.showTimings = ImGui::CollapsingHeader("GPU timings (D)");
     if (ui.showTimings) timingTable(profiler);
     if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) {
-      if (scene.autoChoice) autoChoicePanel(*scene.autoChoice);
+      if (scene.autoChoice) autoChoicePanel(*scene.autoChoice, running);
       ParamEditor editor;
       stage.visitParams(editor);
       changed = editor.changed();

@@ -48,5 +48,7 @@ bool drawMainPanel(const Scene& scene, Stage& stage, const gl::GpuProfiler& prof
 // window's title say it; the title follows it when M or N changes it: "tidepool - Dam break [fluid]".
 std::string runningLabel(const Scene& scene, const Stage& stage);
 std::string windowTitle(const std::string& sceneName, const std::string& running);
+// ", model auto" while the model running is the one "model": "auto" picked; "" once M switched away.
+std::string autoModelNote(const Scene& scene, const std::string& running);
 
 }  // namespace tidepool

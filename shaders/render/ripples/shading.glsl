@@ -29,6 +29,15 @@ vec3 sky(vec3 dir) { return mix(vec3(0.62, 0.68, 0.74), vec3(0.18, 0.32, 0.58), 
 // The caustics texture has one level: texture() and a compute shader's level 0 agree.
 float floorLight(vec2 xy) { return uAmbient + (1.0 - uAmbient) * texture(uCaustics, xy / uTank).r; }
 
+// The light on a wall `z` above the floor at its foot `foot`: the floor's caustics show only near
+// the floor. Higher up the glass shows the water column, not the floor's light; a caustic spot at
+// the foot drawn the wall's full height reads as a bright vertical streak.
+const float kWallCausticsHeight = 0.04;  // world units above the floor where the foot's light shows
+float wallLight(vec2 foot, float z) {
+  const float caustic = mix(texture(uCaustics, foot / uTank).r, 1.0, smoothstep(0.0, kWallCausticsHeight, z));
+  return uAmbient + (1.0 - uAmbient) * caustic;
+}
+
 vec3 absorb(vec3 color, float pathLength) { return mix(uWaterColor, color, exp(-pathLength / uViewDistance)); }
 
 float schlick(float cosine) { return 0.02 + 0.98 * pow(1.0 - cosine, 5.0); }  // water, F0 = 0.02
@@ -41,6 +50,7 @@ struct WaterView {
   vec2 floorXy;  // where the refracted ray ends (on the floor, or at a wall's foot), world xy
   float path;    // refracted path length in the water, world units
   bool onWall;   // the refracted ray leaves the tank through a wall before reaching the floor
+  float wallZ;   // and how high on the wall, world z
 };
 
 WaterView waterView(vec3 world) {
@@ -57,26 +67,28 @@ WaterView waterView(vec3 world) {
   w.onWall = tWall < t;
   w.path = min(t, tWall);
   w.floorXy = clamp(world.xy + w.path * r.xy, vec2(0.0), uTank);
+  w.wallZ = max(world.z + w.path * r.z, 0.0);
   return w;
 }
 
 // tiles: the floor texture at w.floorXy * uTileRepeat.
 vec3 waterColor(WaterView w, vec3 tiles) {
-  const vec3 below = absorb(tiles * floorLight(w.floorXy) * (w.onWall ? 0.6 : 1.0), w.path);
+  const float light = w.onWall ? wallLight(w.floorXy, w.wallZ) : floorLight(w.floorXy);
+  const vec3 below = absorb(tiles * light * (w.onWall ? 0.6 : 1.0), w.path);
   const float fresnel = schlick(clamp(dot(-w.view, w.normal), 0.0, 1.0));
   vec3 color = mix(below, sky(reflect(w.view, w.normal)), fresnel);
   return color + vec3(1.6) * pow(max(dot(reflect(-uSunDir, w.normal), -w.view), 0.0), 600.0);
 }
 
 // A tank wall at `world` (below the local water surface), outward normal `normal`: water seen
-// through glass, lit by the caustics at the wall's foot, darker with depth, a faint sky reflection
-// on the glass and a bright meniscus line at the surface.
+// through glass, darker with depth, lit as wallLight() says, a faint sky reflection on the glass
+// and a bright meniscus line at the surface.
 vec3 wallColor(vec3 world, vec3 normal) {
   const float surface = surfaceZ(clamp(world.xy, vec2(0.0), uTank));
   const vec3 v = viewRay(world);
   const float depth = surface - world.z;
   const vec2 foot = clamp(world.xy - normal.xy * 0.01, vec2(0.0), uTank);
-  const float light = uAmbient + (1.0 - uAmbient) * texture(uCaustics, foot / uTank).r;
+  const float light = wallLight(foot, world.z);
   const vec3 inside = absorb(vec3(0.55, 0.72, 0.76) * light, 0.1 + 1.5 * depth);
   const float fresnel = 0.5 * schlick(clamp(dot(-v, normal), 0.0, 1.0));
   const float rim = smoothstep(0.006, 0.0, depth);
