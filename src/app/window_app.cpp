@@ -194,7 +194,8 @@ int runWindow(const WindowJob& job) {
     }
     if (ui.recoverRequested) {
       ui.recoverRequested = false;
-      if (stage->recover()) {
+      if (const std::optional<std::uint64_t> back = stage->recover()) {
+        frameNumber -= std::min(*back, frameNumber);  // numbered as the good state's frame was
         ui.divergence.clear();
         ui.paused = false;
         ui.message = "resumed from the last good state with half the time step";

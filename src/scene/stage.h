@@ -64,12 +64,12 @@ class Stage {
   virtual std::string running() const { return ""; }
 
   // Failing loudly: a model that watches itself reports a blow-up here (non-blocking, a frame or
-  // two late), can go back to its last good state with half the time step, and settles the
-  // check still in flight at the end of a headless run.
+  // two late), can go back to its last good state with half the time step (recover() says how
+  // many frames back it lies), and settles the check still in flight at the end of a headless run.
   virtual std::optional<DivergenceReport> divergence() const { return std::nullopt; }
   // The model's current error metric for the live plot (name with units, value); NaN: none yet.
   virtual std::pair<std::string, double> liveMetric() const { return {"", NAN}; }
-  virtual bool recover() { return false; }
+  virtual std::optional<std::uint64_t> recover() { return std::nullopt; }
   virtual void flushChecks() {}
 
   // Checkpoints (scene/checkpoint.h): the state beyond the parameters. A save visits
@@ -104,7 +104,7 @@ class ModelStage : public Stage {
   double simTime() const override { return m_model.time(); }
   std::string status() const override { return m_model.status(); }
   std::optional<DivergenceReport> divergence() const override { return m_model.divergence(); }
-  bool recover() override { return m_model.recover(); }
+  std::optional<std::uint64_t> recover() override { return m_model.recover(); }
   void flushChecks() override { m_model.flushChecks(); }
   void visitState(sim::StateVisitor& v) override { m_model.visitState(v); }
   sim::Model* model() override { return &m_model; }

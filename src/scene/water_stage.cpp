@@ -105,7 +105,7 @@ class WaterStage final : public Stage {
     return refused + r.model()->status() + r.statsLine();
   }
   std::optional<DivergenceReport> divergence() const override { return m_runs[index(m_active)]->model()->divergence(); }
-  bool recover() override { return model()->recover(); }
+  std::optional<std::uint64_t> recover() override { return model()->recover(); }
   void flushChecks() override { model()->flushChecks(); }
   sim::Model* model() override { return run().model(); }
   std::optional<ExportSource> exportSource() override { return run().exportSource(); }

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <utility>
 
 #include "sim/state_checks.h"
 
@@ -69,6 +70,8 @@ void DivergenceWatch::frame(Subject& s) {
   // The verdict lands kVerdictLag frames after its check, never when the driver happens to be done:
   // the good copy, and so a checkpoint, is the same on every GPU and in every run.
   ++m_frames;  // since the last check started
+  ++m_pending.frames;
+  ++m_good.frames;
   if (m_readback.pending() && m_frames >= kVerdictLag) flush(s);
   if (m_frames < m_interval || !allowed || m_readback.pending()) return;
   m_frames = 0;
@@ -115,6 +118,7 @@ void DivergenceWatch::visitState(StateVisitor& v, Subject& s) {
       v.fail("entry 'watch.good.time' = " + std::to_string(copy.stamp.time) + " is not a time");
     v.count("watch.good.count", copy.stamp.count, m_maxCopied);
     v.value("watch.good.steps", copy.stamp.steps);
+    if (v.has("watch.good.frames")) v.value("watch.good.frames", copy.frames);
     const StateStamp now = s.stamp();
     if (v.loading() && copy.stamp.time > now.time)
       v.fail("entry 'watch.good.time' = " + std::to_string(copy.stamp.time) + " is after the state's time " +
@@ -146,6 +150,7 @@ void DivergenceWatch::start(Subject& s, const StateStamp& now) {
   reduce(s, now.count, m_health);
   // The state this check judges, copied now: the buffers grow to the largest state seen.
   m_pending.stamp = now;
+  m_pending.frames = 0;
   m_pending.kept = now.count <= m_maxCopied;
   if (m_pending.kept) {
     const std::vector<StateBuffer> state = s.stateBuffers();
@@ -178,18 +183,18 @@ void DivergenceWatch::flush(Subject& s) {
   judge(s, words(bytes));
 }
 
-bool DivergenceWatch::recover(Subject& s) {
-  if (!m_report || !m_hasGood) return false;
+std::optional<std::uint64_t> DivergenceWatch::recover(Subject& s) {
+  if (!m_report || !m_hasGood) return std::nullopt;
   const std::vector<StateBuffer> state = s.stateBuffers();
-  if (state.size() != m_good.buffers.size()) return false;
+  if (state.size() != m_good.buffers.size()) return std::nullopt;
   for (std::size_t k = 0; k < state.size(); ++k)
-    if (m_good.bytes[k] > state[k].buffer->size()) return false;  // the state was rebuilt smaller since
+    if (m_good.bytes[k] > state[k].buffer->size()) return std::nullopt;  // the state was rebuilt smaller since
   for (std::size_t k = 0; k < m_good.buffers.size(); ++k)
     m_ops.copy(m_good.buffers[k], *state[k].buffer, m_good.bytes[k]);
   s.resume(m_good.stamp);
   m_report.reset();
   dropCheck();
-  return true;
+  return std::exchange(m_good.frames, 0);
 }
 
 void DivergenceWatch::restart() {

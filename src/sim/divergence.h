@@ -104,10 +104,12 @@ class DivergenceWatch {
   // No copies of more than `maxCopied` elements (a blow-up is still reported, recovery refused).
   DivergenceWatch(gl::ShaderLibrary& shaders, std::string model, std::size_t maxCopied, int interval = 8);
 
-  void frame(Subject& s);    // once per frame, after its steps: judges a check that came back, starts one when due
-  void flush(Subject& s);    // waits for the check in flight and judges it (end of a headless run, tests)
-  bool recover(Subject& s);  // back to the last good state (see above); false if nothing failed or none was kept
-  void restart();            // a new state (reset, upload): forgets the check in flight, the good state, the report
+  void frame(Subject& s);  // once per frame, after its steps: judges a check that came back, starts one when due
+  void flush(Subject& s);  // waits for the check in flight and judges it (end of a headless run, tests)
+  // Back to the last good state (see above): how many frames back it lies; nullopt if nothing
+  // failed or none was kept.
+  std::optional<std::uint64_t> recover(Subject& s);
+  void restart();  // a new state (reset, upload): forgets the check in flight, the good state, the report
   const std::optional<DivergenceReport>& report() const { return m_report; }
   // The verdict on the state as it is now, waiting for it (a checkpoint refuses a diverged state).
   std::optional<std::string> checkNow(Subject& s);
@@ -122,7 +124,8 @@ class DivergenceWatch {
     std::vector<gl::Buffer> buffers;
     std::vector<std::size_t> bytes;  // copied into each
     StateStamp stamp;
-    bool kept = false;  // false: too large to copy
+    std::uint64_t frames = 0;  // frames since it was copied
+    bool kept = false;         // false: too large to copy
   };
   void start(Subject& s, const StateStamp& now);
   void reduce(Subject& s, std::size_t count, gl::Buffer& words);  // the health kernel into `words`

@@ -38,8 +38,9 @@ class Model : private DivergenceWatch::Subject {
 
   // The divergence watch: a non-blocking check every 8 frames, a frame or two late.
   std::optional<DivergenceReport> divergence() const { return m_watch.report(); }
-  bool recover() { return m_watch.recover(*this); }  // last good state, half the time step; false if none
-  void flushChecks() { m_watch.flush(*this); }       // waits for the check in flight (end of a headless run)
+  // The last good state with half the time step: how many frames back it lies; nullopt if none.
+  std::optional<std::uint64_t> recover() { return m_watch.recover(*this); }
+  void flushChecks() { m_watch.flush(*this); }  // waits for the check in flight (end of a headless run)
 
   // Checkpoints (scene/checkpoint.h): everything a later step reads beyond the parameters — the
   // model's own state (visitOwnState: clock, counters, RNG, extra buffers), the watch's phase

@@ -35,6 +35,8 @@ class StateVisitor {
   virtual void text(const char* name, std::string& value, std::size_t maxBytes) = 0;  // JSON, an RNG's state
   virtual void buffer(const char* name, gl::Buffer& buffer, std::size_t bytes) = 0;   // its first `bytes`
   [[noreturn]] virtual void fail(const std::string& what) const = 0;                  // "<file>: <what>" (loading)
+  // Loading: whether the file holds the entry (files written before an entry was added lack it).
+  virtual bool has(const char* /*name*/) const { return true; }
 
   template <class T>
   void value(const char* name, T& v) {
@@ -84,6 +86,7 @@ class StateLoader final : public StateVisitor {
  public:
   StateLoader(const io::Checkpoint& in, std::string where) : m_in(in), m_where(std::move(where)) {}
   bool loading() const override { return true; }
+  bool has(const char* name) const override { return m_in.find(name) != nullptr; }
   void clock(double& time, std::uint64_t& steps) override;
   void bytes(const char* name, void* data, std::size_t size) override;
   void text(const char* name, std::string& value, std::size_t maxBytes) override;

@@ -325,8 +325,12 @@ TEST_F(Checkpoints, TheLastGoodStateIsSavedSoThatAResumedRunCanRecover) {
     resumed.flushChecks();
   }
   ASSERT_TRUE(resumed.divergence().has_value()) << "C far above 1/sqrt(2) must blow up";
-  ASSERT_TRUE(resumed.recover()) << "the good copy came with the checkpoint";
+  const double failedTime = resumed.time();
+  const std::optional<std::uint64_t> back = resumed.recover();
+  ASSERT_TRUE(back) << "the good copy came with the checkpoint";
   EXPECT_EQ(resumed.time(), tGood);
+  // Frames counted since the good copy, before the save and after the load alike.
+  EXPECT_EQ(double(*back), std::round((failedTime - tGood) / p.frameSeconds));
   const std::vector<float> restored = resumed.download();
   ASSERT_EQ(restored.size() * sizeof(float), goodState->bytes.size());
   EXPECT_EQ(std::memcmp(restored.data(), goodState->bytes.data(), goodState->bytes.size()), 0);
