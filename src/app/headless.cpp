@@ -69,7 +69,7 @@ int renderHeadless(const RenderJob& request) {
   const bool resumed = !job.resume.empty();
   std::uint64_t first = 0;
   if (resumed) {
-    first = loadCheckpoint(*stage, scene, job.resume) + 1;
+    first = loadCheckpoint(*stage, scene, job.resume, job.paramOverrides) + 1;  // live --set keys on top
     log::info("resumed from " + job.resume.string() + " at t = " + std::to_string(stage->simTime()) +
               " s: frames from " + std::to_string(first));
   }
