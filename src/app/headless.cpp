@@ -69,7 +69,7 @@ int renderHeadless(const RenderJob& request) {
   const bool resumed = !job.resume.empty();
   std::uint64_t first = 0;
   if (resumed) {
-    first = loadCheckpoint(*stage, scene, job.resume) + 1;
+    first = loadCheckpoint(*stage, scene, job.resume, job.paramOverrides) + 1;  // live --set keys on top
     log::info("resumed from " + job.resume.string() + " at t = " + std::to_string(stage->simTime()) +
               " s: frames from " + std::to_string(first));
   }
@@ -123,9 +123,7 @@ int renderHeadless(const RenderJob& request) {
     std::vector<std::uint8_t> pixels = video || pngFrames ? target.readRgba8() : std::vector<std::uint8_t>();
     if (video) video->write(pixels);
     if (pngFrames) {
-      char name[32];
-      std::snprintf(name, sizeof name, "frame_%05llu.png", static_cast<unsigned long long>(frame));
-      writer.write(job.outDir / name, io::Image{width, height, std::move(pixels)});
+      writer.write(job.outDir / frameFileName(frame), io::Image{width, height, std::move(pixels)});
     }
     progress.update(i + 1);
   }
@@ -152,6 +150,9 @@ int renderHeadless(const RenderJob& request) {
               ") to " + std::filesystem::absolute(job.outDir).string() + "/frame_*.png" +
               (resumed ? " (frames " + std::to_string(first) + " to " + std::to_string(first + frames - 1) + ")" : ""));
   if (video) log::info("wrote video " + std::filesystem::absolute(job.video).string());
+  if (pngFrames)
+    if (const std::string stale = staleFramesWarning(job.outDir, first + std::uint64_t(frames - 1)); !stale.empty())
+      log::warn(stale);
   return frames;
 }
 

@@ -14,7 +14,7 @@ namespace tidepool {
 
 struct RenderJob {
   std::string scene;                             // path or bare name (assets/scenes/<name>.json)
-  io::Json paramOverrides;                       // scene params set from the command line (--rules)
+  io::Json paramOverrides;                       // scene params from --set, --rules (resumed: live keys only)
   std::optional<int> frames;                     // default: the scene's clip.frames
   std::optional<int> width, height;              // default: the scene's clip size
   std::filesystem::path outDir;                  // PNG frames (frame_00000.png ...); empty: none

@@ -105,7 +105,7 @@ int runWindow(const WindowJob& job) {
   if (job.fitBudgetMs) scene = fitScene(file, job, shaders);
   auto stage = createStage(scene, shaders);
   std::uint64_t frameNumber = 0;  // the frame the window shows, as render numbers it: steps since t = 0
-  if (!job.resume.empty()) frameNumber = loadCheckpoint(*stage, scene, job.resume);
+  if (!job.resume.empty()) frameNumber = loadCheckpoint(*stage, scene, job.resume, job.paramOverrides);
   WindowCheckpoints checkpoints(scene, job.checkpoint, job.autosaveEvery, stage->simTime());
 
   IMGUI_CHECKVERSION();

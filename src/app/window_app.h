@@ -20,7 +20,7 @@ struct WindowJob {
   std::filesystem::path screenshot;  // written after the last frame when set, once the panel has settled
   bool debugGl = false;
   bool vsync = true;
-  io::Json paramOverrides;            // scene params set from the command line (--rules)
+  io::Json paramOverrides;            // scene params set from the command line (--rules, --set); live ones on a resume
   std::filesystem::path resume;       // a checkpoint to start from; empty: the scene's start
   std::filesystem::path checkpoint;   // where F6 and the autosave write; empty: "<scene name>.ckpt" here
   double autosaveEvery = 0;           // simulated s between autosaves (0: off; the panel edits it)

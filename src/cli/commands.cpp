@@ -10,6 +10,7 @@
 #include "app/headless.h"
 #include "app/window_app.h"
 #include "base/log.h"
+#include "cli/scene_options.h"
 #include "gl/context.h"
 #include "gl/context_window.h"
 #include "gl/info.h"
@@ -29,114 +30,15 @@ constexpr bool kDebugBuild = false;
 constexpr bool kDebugBuild = true;
 #endif
 
-// --resume, --checkpoint and --checkpoint-every, alike for render and run.
-struct CheckpointOpts {
-  std::string resume, checkpoint;
-  double every = 0;
-};
-
-void addCheckpointOptions(CLI::App* sub, CheckpointOpts& o) {
-  sub->add_option("--resume", o.resume,
-                  "start from this checkpoint (a file --checkpoint wrote) instead of t = 0; render numbers its "
-                  "frames on after the checkpoint's");
-  sub->add_option("--checkpoint", o.checkpoint,
-                  "write checkpoints to this file (atomically; default: beside the output, e.g. out/dam.ckpt)");
-  sub->add_option("--checkpoint-every", o.every,
-                  "save a checkpoint every this many simulated seconds, and after the last frame")
-      ->check(finitePositive());
-}
-
 void applyCheckpointOptions(const CheckpointOpts& o, RenderJob& job) {
   job.resume = o.resume;
   job.checkpoint = o.checkpoint;
   job.checkpointEvery = o.every;
 }
 
-// --resolution, --fit-gpu, --budget and --set, alike for render and run.
-struct ResolutionOpts {
-  double resolution = 0;  // 0: as the scene states
-  bool fit = false;
-  double budgetMs = 1000.0 / 30.0;
-  std::vector<std::string> sets;  // KEY=VALUE
-};
-
-// Nesting of a JSON value: 0 for a number or string, 1 for [1, 2], 2 for {"a": [1]}. The value
-// came through parseJson, so it is at most kMaxJsonDepth deep and the recursion is bounded.
-int jsonDepth(const io::Json& value) {
-  int deepest = 0;
-  if (value.is_structured())
-    for (const io::Json& child : value) deepest = std::max(deepest, jsonDepth(child));
-  return value.is_structured() ? deepest + 1 : 0;
-}
-
-bool isName(std::string_view s) {
-  const auto letter = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; };
-  const auto letterOrDigit = [&](char c) { return letter(c) || std::isdigit(static_cast<unsigned char>(c)); };
-  return !s.empty() && letter(s[0]) && std::all_of(s.begin() + 1, s.end(), letterOrDigit);
-}
-
-// --set view.mode=water: the value as JSON when it reads as JSON (3, true, [0,1,0]), else as text.
-// Read in one pass, under the size and depth limits of a scene file: the dotted key's names count
-// as levels of nesting, as they do in the object they become.
-io::Json setOverride(const std::string& text) {
-  const std::string shown = "--set '" + io::printable(text) + "'";
-  if (text.size() > io::kMaxJsonFileBytes)
-    throw Error(shown + ": " + io::byteSize(text.size()) + ", larger than the " + io::byteSize(io::kMaxJsonFileBytes) +
-                " allowed for JSON");
-  const std::size_t equals = text.find('=');
-  std::vector<std::string> keys;
-  for (std::size_t begin = 0; equals != std::string::npos && begin <= equals;) {
-    const std::size_t dot = std::min(text.find('.', begin), equals);
-    keys.push_back(text.substr(begin, dot - begin));
-    if (!isName(keys.back()) || keys.size() > std::size_t(io::kMaxJsonDepth)) break;
-    begin = dot + 1;
-  }
-  if (equals == std::string::npos || equals + 1 == text.size() || keys.empty() || !isName(keys.back()))
-    throw Error(shown + " is not KEY=VALUE with a params key (e.g. view.mode=water)");
-  if (keys.size() > std::size_t(io::kMaxJsonDepth))
-    throw Error(shown + ": the key is nested deeper than the " + std::to_string(io::kMaxJsonDepth) +
-                " levels a scene may nest");
-  const std::string valueText = text.substr(equals + 1);
-  io::Json patch;
-  try {
-    patch = io::parseJson(valueText, "--set");
-  } catch (const Error&) {
-    patch = valueText;
-  }
-  if (keys.size() + std::size_t(jsonDepth(patch)) > std::size_t(io::kMaxJsonDepth))
-    throw Error(shown + ": the key and the value together are nested deeper than the " +
-                std::to_string(io::kMaxJsonDepth) + " levels a scene may nest");
-  for (auto key = keys.rbegin(); key != keys.rend(); ++key) {
-    io::Json level = io::Json::object();
-    level[*key] = std::move(patch);
-    patch = std::move(level);
-  }
-  return patch;
-}
-
 // Where a clip goes when the command line names no folder: "<root>/<scene file's stem>".
 std::filesystem::path defaultOutDir(const std::filesystem::path& sceneFile, const std::filesystem::path& root = "out") {
   return root / sceneFile.stem();
-}
-
-void addResolutionOptions(CLI::App* sub, ResolutionOpts& o) {
-  sub->add_option("--resolution", o.resolution,
-                  "water: refine the particle spacing R times, keeping the setup (counts x R^3, dt / R; "
-                  "sets params.particles.resolution)")
-      ->check(finiteRange(0.05, 64.0));
-  sub->add_flag("--fit-gpu", o.fit, "water: the finest resolution whose frame (steps + render) fits --budget here");
-  sub->add_option("--budget", o.budgetMs, "with --fit-gpu: ms per frame (default 33.3, 30 frames/s)")
-      ->check(finiteRange(0.1, 1e6));
-  sub->add_option("--set", o.sets, "set a scene parameter, KEY=VALUE (e.g. view.mode=water); repeatable");
-}
-
-// The scene overrides with --set and --resolution merged in; the budget when --fit-gpu is asked for.
-io::Json applyResolutionOptions(const ResolutionOpts& o, io::Json overrides, std::optional<double>& fitBudgetMs) {
-  if (!overrides.is_object()) overrides = io::Json::object();
-  for (const std::string& set : o.sets) overrides.merge_patch(setOverride(set));
-  if (o.resolution > 0) overrides.merge_patch(io::Json{{"particles", {{"resolution", o.resolution}}}});
-  if (o.fit) fitBudgetMs = o.budgetMs;
-  return overrides;
 }
 
 }  // namespace
@@ -266,6 +168,8 @@ Command addRender(CLI::App& app) {
   addCheckpointOptions(sub, o->checkpoints);
   addResolutionOptions(sub, o->resolution);
   return {sub, [o, sub] {
+            const std::vector<ParamOverride> overrides = sceneOverrides(o->resolution, o->rules);
+            checkSceneOptions(o->job.scene, overrides, o->resolution, o->checkpoints.resume);
             RenderJob job = o->job;
             if (job.outDir.empty() && job.video.empty()) {  // as `run` without a display: out/<scene>
               job.outDir = defaultOutDir(resolveScenePath(job.scene));
@@ -282,8 +186,8 @@ Command addRender(CLI::App& app) {
             job.backend = gl::parseBackend(o->backend);
             job.debugGl |= kDebugBuild;
             job.progress = !o->quiet;
-            if (!o->rules.empty()) job.paramOverrides = {{"rules", o->rules}};
-            job.paramOverrides = applyResolutionOptions(o->resolution, job.paramOverrides, job.fitBudgetMs);
+            job.paramOverrides = merged(overrides);
+            if (o->resolution.fit) job.fitBudgetMs = o->resolution.budgetMs;
             if (o->exportFormat == "surface") {
               job.surface = o->surface;
               job.exportFormat = io::parseSurfaceFormat(o->surfaceFormat);
@@ -330,9 +234,11 @@ Command addRun(CLI::App& app) {
             int w = 0, h = 0;
             parseSize(o->size, w, h);
             const gl::Backend backend = gl::parseBackend(o->backend);
+            const std::vector<ParamOverride> settings = sceneOverrides(o->resolution, o->rules);
+            const Scene scene = checkSceneOptions(o->scene, settings, o->resolution, o->checkpoints.resume);
+            const io::Json overrides = merged(settings);
             std::optional<double> fitBudgetMs;
-            const io::Json overrides = applyResolutionOptions(
-                o->resolution, o->rules.empty() ? io::Json() : io::Json{{"rules", o->rules}}, fitBudgetMs);
+            if (o->resolution.fit) fitBudgetMs = o->resolution.budgetMs;
             const bool window =
                 backend == gl::Backend::Window || (backend == gl::Backend::Auto && gl::displayAvailable());
             if (window) {
@@ -358,7 +264,6 @@ Command addRun(CLI::App& app) {
             job.scene = o->scene;
             job.paramOverrides = overrides;
             job.fitBudgetMs = fitBudgetMs;
-            const Scene scene = loadScene(resolveScenePath(o->scene));
             job.outDir = defaultOutDir(scene.file, o->out);  // the scene loaded above
             if (o->frames > 0) job.frames = o->frames;
             if (sizeOpt->count() > 0) {  // else the scene's clip size, not the window's default

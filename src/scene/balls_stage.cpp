@@ -57,8 +57,11 @@ std::unique_ptr<Stage> createBallsStage(const SceneParams& params, const std::st
 }  // namespace
 
 ModelEntry ballsModel() {
-  return {"balls", "water as equal balls colliding: grid neighbours, three contact laws, three integrators",
-          parseBallsParams, createBallsStage};
+  return {"balls",
+          "water as equal balls colliding: grid neighbours, three contact laws, three integrators",
+          parseBallsParams,
+          createBallsStage,
+          {{"particles", "the particles' count, size, domain and initial water"}}};
 }
 
 }  // namespace tidepool

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "base/error.h"
+#include "io/json.h"
 #include "scene/param_json.h"
 #include "sim/model_state.h"
 #include "sim/water/cell_load.h"
@@ -89,6 +90,63 @@ std::uint64_t restoreCheckpoint(Stage& stage, const Scene& scene, const io::Chec
 
 std::uint64_t loadCheckpoint(Stage& stage, const Scene& scene, const std::filesystem::path& file) {
   return restoreCheckpoint(stage, scene, io::readCheckpointFile(file), file.string());
+}
+
+namespace {
+// Where a merge patch sets values: {"view": {"mode": "water", "camera": {"yaw": 1}}} -> /view/mode,
+// /view/camera/yaw. An array or any other value is one place, as a merge patch replaces it whole.
+void leaves(const io::Json& patch, const io::Json::json_pointer& at, std::vector<io::Json::json_pointer>& out) {
+  if (!patch.is_object() || (patch.empty() && !at.empty())) {
+    if (!at.empty()) out.push_back(at);
+    return;
+  }
+  for (const auto& [key, value] : patch.items()) leaves(value, at / key, out);
+}
+std::vector<io::Json::json_pointer> leaves(const io::Json& patch) {
+  std::vector<io::Json::json_pointer> out;
+  leaves(patch, io::Json::json_pointer(), out);
+  return out;
+}
+
+std::string dotted(io::Json::json_pointer at) {
+  std::string key;
+  for (; !at.empty(); at.pop_back()) key = at.back() + (key.empty() ? "" : "." + key);
+  return key;
+}
+
+bool under(const std::string& key, const std::string& prefix) {
+  return key == prefix ||
+         (key.size() > prefix.size() && key.compare(0, prefix.size(), prefix) == 0 && key[prefix.size()] == '.');
+}
+}  // namespace
+
+std::optional<StateKeyHit> stateKeyIn(const std::string& model, const io::Json& overrides) {
+  for (const ModelEntry& m : models())
+    if (model == m.name)
+      for (const io::Json::json_pointer& at : leaves(overrides))
+        for (const StateKey& s : m.stateKeys)
+          if (const std::string key = dotted(at); under(key, s.key)) return StateKeyHit{key, s.what};
+  return std::nullopt;
+}
+
+std::uint64_t loadCheckpoint(Stage& stage, const Scene& scene, const std::filesystem::path& file,
+                             const io::Json& overrides) {
+  const std::string where = file.string();
+  if (const std::optional<StateKeyHit> hit = stateKeyIn(scene.model, overrides))
+    throw Error(where + ": params." + io::printable(hit->key) + " changes the simulation state (" + hit->what +
+                "): a resumed run cannot set it");
+  const io::Json built = writeParams([&](ParamVisitor& v) { stage.visitParams(v); });
+  const std::uint64_t frame = loadCheckpoint(stage, scene, file);
+  io::Json live = io::Json::object();
+  for (const io::Json::json_pointer& at : leaves(overrides)) {
+    if (!built.contains(at))
+      throw Error(where + ": params." + io::printable(dotted(at)) + " is not a parameter of the running " +
+                  scene.model + " stage: a resumed run cannot set it");
+    live[at] = built[at];
+  }
+  readParams(
+      live, [&](ParamVisitor& v) { stage.visitParams(v); }, where + ": params");
+  return frame;
 }
 
 void CheckpointSchedule::reset(double every, double time) {

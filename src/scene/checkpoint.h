@@ -16,6 +16,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "io/checkpoint_file.h"
@@ -43,6 +44,22 @@ void saveCheckpoint(Stage& stage, const Scene& scene, const std::filesystem::pat
 std::uint64_t restoreCheckpoint(Stage& stage, const Scene& scene, const io::Checkpoint& checkpoint,
                                 const std::string& where);
 std::uint64_t loadCheckpoint(Stage& stage, const Scene& scene, const std::filesystem::path& file);  // read, restore
+
+// Parameters set on top of a checkpoint's (`--set view.mode=water` with `--resume`): only live
+// ones, which the window's panel edits mid-run (the view, and the physics: engine, walls, ...);
+// not a model's ModelEntry::stateKeys (particle counts, size, domain), which the state fixes.
+struct StateKeyHit {
+  std::string key;   // the key set, dotted: "particles.resolution"
+  std::string what;  // what it shapes: "the particles' count, size, domain and initial water"
+};
+// The first key of `overrides` (scene params, a JSON merge patch) that `model` (a model's name)
+// counts as state; nullopt when all are live.
+std::optional<StateKeyHit> stateKeyIn(const std::string& model, const io::Json& overrides);
+// loadCheckpoint into `stage`, freshly built from `scene` as loaded with `overrides`, and then the
+// keys of `overrides` set to the values the stage was built with (a refined scene's engine.dt is
+// refined: as a fresh run would take them). Throws Error for a state key (stateKeyIn).
+std::uint64_t loadCheckpoint(Stage& stage, const Scene& scene, const std::filesystem::path& file,
+                             const io::Json& overrides);
 
 // When periodic checkpoints are due: at every multiple of `every` simulated seconds (0: never),
 // counted from t = 0 so that a resumed run keeps the cadence of the run it continues.

@@ -31,8 +31,11 @@ std::unique_ptr<Stage> createFluidStage(const SceneParams& params, const std::st
 }  // namespace
 
 ModelEntry fluidModel() {
-  return {"fluid", "incompressible water: position-based fluids (Macklin & Mueller 2013) on the balls' particles",
-          parseFluidParams, createFluidStage};
+  return {"fluid",
+          "incompressible water: position-based fluids (Macklin & Mueller 2013) on the balls' particles",
+          parseFluidParams,
+          createFluidStage,
+          {{"particles", "the particles' spacing, domain and initial water"}}};
 }
 
 }  // namespace tidepool

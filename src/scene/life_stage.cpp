@@ -305,8 +305,24 @@ std::unique_ptr<Stage> createLifeStage(const SceneParams& params, const std::str
 }  // namespace
 
 ModelEntry lifeModel() {
-  return {"life", "particle life: species with asymmetric forces, glow + HDR view, shareable rules", parseLifeParams,
-          createLifeStage};
+  // The setup (rules, counts, box, forces) is the state's: its keys sit at the top of a scene's
+  // params but under "rules" in a running stage's.
+  static constexpr const char* kSetup = "life's rules: species, forces, box and particles";
+  return {"life",
+          "particle life: species with asymmetric forces, glow + HDR view, shareable rules",
+          parseLifeParams,
+          createLifeStage,
+          {{"rules", kSetup},
+           {"species", kSetup},
+           {"particle_count", kSetup},
+           {"width", kSetup},
+           {"height", kSetup},
+           {"friction", kSetup},
+           {"central_force", kSetup},
+           {"symmetric_forces", kSetup},
+           {"looping_borders", kSetup},
+           {"seed", kSetup},
+           {"model.storage", "the precision the state is stored in"}}};
 }
 
 }  // namespace tidepool

@@ -177,8 +177,11 @@ std::unique_ptr<Stage> createRipplesStage(const SceneParams& params, const std::
 }  // namespace
 
 ModelEntry ripplesModel() {
-  return {"ripples", "heightfield water: wave equation or the seed's spring model, 2D refraction view",
-          parseRipplesParams, createRipplesStage};
+  return {"ripples",
+          "heightfield water: wave equation or the seed's spring model, 2D refraction view",
+          parseRipplesParams,
+          createRipplesStage,
+          {{"width", "the grid's size"}, {"height", "the grid's size"}, {"drops", "the drops timed from the start"}}};
 }
 
 }  // namespace tidepool

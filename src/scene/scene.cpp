@@ -124,11 +124,27 @@ Scene parseScene(const io::Json& json, const std::string& where) { return readSc
 
 Scene loadScene(const fs::path& file) { return loadScene(file, io::Json()); }
 
-Scene loadScene(const fs::path& file, const io::Json& overrides) {
-  Scene scene = readScene(io::readJsonFile(file), io::shownPath(file), overrides);
+namespace {
+Scene fromFile(Scene scene, const fs::path& file) {
   scene.file = file;
   if (scene.name.empty()) scene.name = io::printable(file.stem().string(), kMaxShownName);
   return scene;
+}
+}  // namespace
+
+Scene loadScene(const fs::path& file, const io::Json& overrides) {
+  return fromFile(readScene(io::readJsonFile(file), io::shownPath(file), overrides), file);
+}
+
+Scene loadSceneWith(const fs::path& file, const std::vector<ParamOverride>& overrides) {
+  const io::Json json = io::readJsonFile(file);
+  io::Json merged = io::Json::object();
+  Scene scene = readScene(json, io::shownPath(file), merged);  // the file's own faults name the file
+  for (const ParamOverride& o : overrides) {
+    merged.merge_patch(o.patch);
+    scene = readScene(json, o.origin, merged);
+  }
+  return fromFile(std::move(scene), file);
 }
 
 std::unique_ptr<Stage> createStage(const Scene& scene, gl::ShaderLibrary& shaders) {

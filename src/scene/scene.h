@@ -16,6 +16,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "io/assets.h"
 #include "io/json.h"
@@ -55,6 +56,16 @@ Scene loadScene(const std::filesystem::path& file);
 // Loads the scene with overrides of its params merged into the file's (a JSON merge patch: e.g.
 // --rules sets params.rules), read and validated like the file's own keys.
 Scene loadScene(const std::filesystem::path& file, const io::Json& paramOverrides);
+
+// Overrides of a scene's params as the command line gives them, each with the option that set it.
+struct ParamOverride {
+  std::string origin;  // the option as messages name it, escaped: "--set 'view.mode=bogus'"
+  io::Json patch;      // a JSON merge patch of "params": {"view": {"mode": "bogus"}}
+};
+// loadScene with the overrides merged in order, each tried on top of the file and those before it,
+// so that a value the scene refuses is blamed on the option that gave it, not on the file:
+//   --set 'view.mode=bogus': params.view.mode = 'bogus' is not one of: balls, water
+Scene loadSceneWith(const std::filesystem::path& file, const std::vector<ParamOverride>& overrides);
 Scene parseScene(const io::Json& json, const std::string& where);  // `where` names it in messages
 
 // Builds the scene's model's stage from its typed params.

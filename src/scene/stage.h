@@ -122,6 +122,13 @@ class ModelStage : public Stage {
   M m_model;
 };
 
+// A scene key (dotted, e.g. "particles" or "model.storage", with everything under it) whose value
+// shapes the state rather than steering it: a checkpoint fixes it, so a resumed run refuses it.
+struct StateKey {
+  const char* key;
+  const char* what;  // what it sets, for the refusal: "the particles' count, size, domain and initial water"
+};
+
 struct ModelEntry {
   const char* name;
   const char* summary;
@@ -130,6 +137,9 @@ struct ModelEntry {
   std::function<SceneParams(const io::Json& params, const std::string& where)> parse;
   // Builds the stage from them; `where` prefixes what only the build finds (a missing mesh file).
   std::function<std::unique_ptr<Stage>(const SceneParams& params, const std::string& where, gl::ShaderLibrary&)> create;
+  // The keys a checkpoint fixes (scene/checkpoint.h); every other key is live, as the window's
+  // panel edits it mid-run, and a resumed run takes it on top of the checkpoint's parameters.
+  std::vector<StateKey> stateKeys = {};
 };
 
 const std::vector<ModelEntry>& models();  // every model a scene may name

@@ -234,8 +234,15 @@ std::unique_ptr<Stage> createSwarmStage(const SceneParams& params, const std::st
 }  // namespace
 
 ModelEntry swarmModel() {
-  return {"swarm", "millions of 2D particles pulled by animated attractors, one following the mouse", parseSwarmParams,
-          createSwarmStage};
+  return {"swarm",
+          "millions of 2D particles pulled by animated attractors, one following the mouse",
+          parseSwarmParams,
+          createSwarmStage,
+          {{"particles", "the particle count"},
+           {"storage", "the precision the state is stored in"},
+           {"seed", "the initial positions"},
+           {"view.color_mode", "image colours, which restart the swarm"},
+           {"view.image", "image colours, which restart the swarm"}}};
 }
 
 }  // namespace tidepool
