@@ -7,8 +7,8 @@
 
 #include "app/fit_gpu.h"
 #include "app/frame_writer.h"
-#include "app/progress.h"
 #include "base/log.h"
+#include "base/progress.h"
 #include "io/checkpoint_path.h"
 #include "io/echo.h"
 #include "io/video.h"
@@ -37,6 +37,13 @@ RenderJob fitted(const RenderJob& job) {
 }
 
 }  // namespace
+
+std::string runText(const std::string& name, const StageIndicators& shown, int frames, int width, int height) {
+  std::string text = name + ": ";
+  if (shown.particles > 0) text += groupedCount(shown.particles) + (shown.countsCells ? " cells, " : " particles, ");
+  return text + std::to_string(frames) + (frames == 1 ? " frame" : " frames") + " at " + std::to_string(width) + "x" +
+         std::to_string(height);
+}
 
 int renderHeadless(const RenderJob& request) {
   const RenderJob job = fitted(request);
@@ -95,9 +102,12 @@ int renderHeadless(const RenderJob& request) {
   gl::GpuProfiler profiler;
   FrameWriter writer;
   Progress progress("rendering " + scene.name, frames, job.progress);
+  progress.note(runText(scene.name, stage->indicators(), frames, width, height));
+  const int measured = resumed ? 0 : 1;  // the first frame that steps (a fresh run's frame 0 only renders)
 
   for (int i = 0; i < frames; ++i) {
     const std::uint64_t frame = first + std::uint64_t(i);
+    const double frameStart = progress.seconds();
     profiler.beginFrame();
     if (resumed || i > 0) stage->step(profiler);
     if (const auto d = stage->divergence()) throw Error(d->message);
@@ -124,6 +134,10 @@ int renderHeadless(const RenderJob& request) {
     if (video) video->write(pixels);
     if (pngFrames) {
       writer.write(job.outDir / frameFileName(frame), io::Image{width, height, std::move(pixels)});
+    }
+    if (i == measured) {
+      const double now = progress.seconds();
+      progress.note(scene.name + ": " + estimateText(now - frameStart, now, i + 1, frames, "frames"));
     }
     progress.update(i + 1);
   }

@@ -9,6 +9,7 @@
 #include "io/export_series.h"
 #include "io/json.h"
 #include "render/surface_mesher.h"
+#include "scene/stage.h"
 
 namespace tidepool {
 
@@ -33,7 +34,11 @@ struct RenderJob {
   std::optional<double> fitBudgetMs;  // --fit-gpu: particles.resolution picked for this budget first (app/fit_gpu.h)
 };
 
-// Returns the number of frames written. Throws Error.
+// Returns the number of frames written. Throws Error. With job.progress, it says what runs before
+// the first frame (runText) and, after the first frame that steps, an estimate of the whole run.
 int renderHeadless(const RenderJob& job);
+
+// "dam-break: 262,144 particles, 150 frames at 1280x720" (cells for grid models; no count without one).
+std::string runText(const std::string& name, const StageIndicators& shown, int frames, int width, int height);
 
 }  // namespace tidepool

@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "base/error.h"
+#include "base/progress.h"
 #include "bench/bench.h"
 #include "scene/balls_stage.h"
 #include "sim/balls/balls.h"
@@ -43,7 +44,11 @@ int run(Env& env, const Options& o) {
               scene.name.c_str(), w.first, w.last);
   Table table({"balls", "r", "cells", "determ.", "count ms", "scan ms", "reorder ms", "drift ms", "collide ms",
                "obstacles ms", "ms/step", "steps/s", "bytes/ball", "windows", "clock", "mean ms", "sustained ms"});
+  Steps steps("bench balls", int(rows.size()));
   for (const balls::Params& p : rows) {
+    steps.begin(p.fill == water::Fill::Lattice
+                    ? "about " + std::to_string(p.latticeCount) + " balls, determ. " + (p.deterministic ? "on" : "off")
+                    : scene.name + ", determ. " + (p.deterministic ? "on" : "off"));
     balls::Balls model(env.shaders, p);
     // A windowed step reads its windows back part-way: its timer queries miss part of it, so it is
     // timed by the wall clock.
@@ -52,17 +57,17 @@ int run(Env& env, const Options& o) {
         w.first, w.last - w.first, [&](gl::GpuProfiler& prof) { model.stepOnce(&prof); }, wall);
     const double perStep = t.frameMs();
     table.add({std::to_string(model.count()), fixed(model.radius(), 5), std::to_string(model.cells()),
-               p.deterministic ? "on" : "off", fixed(t.median("balls.count"), 4), fixed(t.median("balls.scan"), 4),
-               fixed(t.median("balls.reorder"), 4), fixed(t.median("balls.drift"), 4),
-               fixed(t.median("balls.collide"), 4), fixed(t.median("balls.obstacles"), 4), fixed(perStep, 4),
-               fixed(perStep > 0 ? 1000.0 / perStep : 0.0, 0), std::to_string(model.bytesPerBall()),
-               std::to_string(model.collideWindows()),
+               p.deterministic ? "on" : "off", t.cell("balls.count", 4), t.cell("balls.scan", 4),
+               t.cell("balls.reorder", 4), t.cell("balls.drift", 4), t.cell("balls.collide", 4),
+               t.cell("balls.obstacles", 4), fixed(perStep, 4), fixed(perStep > 0 ? 1000.0 / perStep : 0.0, 0),
+               std::to_string(model.bytesPerBall()), std::to_string(model.collideWindows()),
                !t.wall.empty()    ? "wall"
                : t.stream.empty() ? "gpu"
                                   : "stream",
-               fixed(t.streamMeanMs(), 4), fixed(t.sustainedMs, 4)});
+               t.stream.empty() ? kNotMeasured : fixed(t.streamMeanMs(), 4), fixed(t.sustainedMs, 4)});
   }
-  return finish(env, table, "; its per-pass timer queries read 0");
+  steps.finish();
+  return finish(env, table);
 }
 
 }  // namespace

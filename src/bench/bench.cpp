@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "base/error.h"
+#include "base/progress.h"
 #include "gl/buffer.h"
 #include "gl/buffer_ops.h"
 #include "gl/framebuffer.h"
@@ -72,9 +73,13 @@ bool softwareRenderer() {  // declared in bench.h
 
 double medianMs(const Common& c, bool wallClock, const std::function<void()>& work) {
   gl::Query query = gl::Query::create();
-  for (int i = 0; i < c.warmup; ++i) work();
+  for (int i = 0; i < c.warmup; ++i) {
+    work();
+    Steps::tick(i + 1, c.warmup + c.repeats, "runs");
+  }
   std::vector<double> ms;
   for (int i = 0; i < c.repeats; ++i) {
+    Steps::tick(c.warmup + i, c.warmup + c.repeats, "runs");
     if (wallClock) {
       glFinish();
       const auto start = std::chrono::steady_clock::now();
@@ -103,6 +108,19 @@ double PassTimes::median(const std::string& pass) const {
   return it == passes.end() ? 0.0 : bench::median(it->second);
 }
 
+bool PassTimes::timersRead() const {
+  if (software) return false;
+  for (const auto& [name, ms] : passes)
+    for (double v : ms)
+      if (v >= 1e-4) return true;  // 100 ns: below any real dispatch, above llvmpipe's 1 ns
+  return false;
+}
+
+std::string PassTimes::cell(const std::string& pass, int decimals) const {
+  if (!timersRead()) return kNotMeasured;
+  return has(pass) ? fixed(median(pass), decimals) : "-";
+}
+
 double PassTimes::frameMs() const { return bench::median(!wall.empty() ? wall : !stream.empty() ? stream : totals); }
 
 double PassTimes::streamMeanMs() const {
@@ -124,6 +142,7 @@ PassTimes timePasses(int warmup, int timed, const std::function<void(gl::GpuProf
   gl::GpuProfiler profiler;
   std::vector<gl::GpuProfiler::FrameTimes> frames;  // the timed ones, as they complete
   PassTimes t;
+  t.software = softwareRenderer();
   std::chrono::steady_clock::time_point windowStart;
   // A timestamp before each timed frame and one after the last (not on software: it does not measure).
   std::vector<gl::Query> marks;
@@ -149,6 +168,7 @@ PassTimes timePasses(int warmup, int timed, const std::function<void(gl::GpuProf
       profiler.finish();
       profiler.takeCompleted();  // warm-up frames are not timed
     }
+    Steps::tick(i + 1, warmup + timed, "frames");
     // The profiler keeps only the last few frames: collect them as they complete.
     if (i >= warmup)
       for (gl::GpuProfiler::FrameTimes& f : profiler.takeCompleted()) frames.push_back(std::move(f));
@@ -181,9 +201,10 @@ PassTimes timePasses(int warmup, int timed, const std::function<void(gl::GpuProf
 
 std::string timingCaveat(const std::string& device) {
   if (device.find("llvmpipe") == std::string::npos && device.find("softpipe") == std::string::npos) return "";
-  return "note: " + device +
-         " is a software renderer: times are wall-clock around glFinish, for development "
-         "only (GPU figures: docs/PERFORMANCE.md)";
+  return "note: " + device + " is a software renderer: its GPU timer queries read 0, so per-pass GPU columns show '" +
+         kNotMeasured +
+         "' and the other times are wall clock around glFinish, for development only (GPU figures: "
+         "docs/PERFORMANCE.md)";
 }
 
 int finish(const Env& env, const Table& table, const std::string& note) {

@@ -85,9 +85,16 @@ struct PassTimes {
   // GPU writes each when every command before it has completed): what CUDA events around each
   // step measure. Empty on a software renderer. Its sum is the window's time on the GPU.
   std::vector<double> stream;
+  bool software = false;   // timed on a software renderer (timePasses sets it)
   double sustainedMs = 0;  // wall clock of all timed frames back to back (glFinish before and after) / frames
   bool has(const std::string& pass) const { return passes.count(pass) > 0; }
   double median(const std::string& pass) const;  // 0 when the pass never ran
+  // Whether the per-pass timer queries measured anything: not on a software renderer, nor where
+  // every pass read 0 (llvmpipe answers 0 or 1 ns).
+  bool timersRead() const;
+  // A pass's median as a table cell: kNotMeasured where the timers read nothing, "-" also where
+  // the pass never ran (a view without it).
+  std::string cell(const std::string& pass, int decimals) const;
   // Median frame: the wall clock on software or with wallClock, else the stream clock.
   double frameMs() const;
   double streamMeanMs() const;  // 0 without the stream clock
@@ -107,7 +114,10 @@ void wakeGpu(gl::ShaderLibrary& shaders, double ms = 200.0);
 // True on llvmpipe / softpipe, whose GL timer queries do not measure execution.
 bool softwareRenderer();
 
-// A line to print under tables measured on a software renderer (empty for hardware).
+// The cell of a GPU-time column whose timer queries read nothing on this driver.
+inline constexpr const char* kNotMeasured = "-";
+// A line to print under tables measured on a software renderer (empty for hardware): its times
+// are wall clock, and its GPU-timer columns show kNotMeasured.
 std::string timingCaveat(const std::string& device);
 // A benchmark's last lines: `table`, the timing caveat (followed by `note`, e.g. "; frame ms is the
 // wall clock there") and `table` as CSV when --csv asks for it. Returns 0, the exit status.

@@ -1,15 +1,17 @@
 // `tidepool bench export [scene] [--format vtk,ply] [--out DIR]`: what exporting the particles (or
-// the heightfield) of a frame costs the render loop, per format. The scene's stage steps a frame at a time; the
-// timed frames first only step, then step and export every frame (render/particle_exporter.h:
-// start the GPU copy, and write what came back), each frame ending in glFinish. Columns: the
-// wall-clock median of a frame without and with the export, and the exporter's own means per
-// exported frame: starting the copy (what the GPU queue sees at the frame), reading it back,
-// converting to points, writing the file; MB copied and MB on disk per frame.
+// the heightfield) of a frame costs the render loop, per format. The scene's stage steps a frame at
+// a time and exports every frame (render/particle_exporter.h: start the GPU copy, write what came
+// back). Each timed frame is clocked twice on the CPU wall clock, in the same frame: after its step
+// (glFinish) and after its export (glFinish), so "frame ms" is the step alone and "frame+export ms"
+// the whole frame, never below it. The exporter's own means per exported frame follow: starting
+// the copy (what the GPU queue sees at the frame), reading it back, converting to points, writing
+// the file; MB copied and MB on disk per frame.
 #include <unistd.h>
 #include <chrono>
 #include <cstdio>
 
 #include "base/error.h"
+#include "base/progress.h"
 #include "bench/bench.h"
 #include "render/particle_exporter.h"
 #include "scene/scene.h"
@@ -25,10 +27,7 @@ struct Options {
   int frames = 0;  // 0: common.repeats
 };
 
-double wallMs(const std::function<void()>& work) {
-  const auto start = std::chrono::steady_clock::now();
-  work();
-  glFinish();
+double msSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
@@ -45,25 +44,31 @@ int run(Env& env, const Options& o) {
   RenderTarget target(scene.clip.width, scene.clip.height);
   stage->render(target, profiler);  // a view may set what the state means (the swarm's aspect)
   for (int i = 0; i < env.common.warmup; ++i) stage->step(profiler);
-  std::vector<double> plain;
-  for (int i = 0; i < frames; ++i) plain.push_back(wallMs([&] { stage->step(profiler); }));
   std::printf(
       "export benchmark on %s: scene %s, %zu points (particles or cells), %d frames each, every frame exported\n",
       env.device.c_str(), scene.name.c_str(), stage->model() ? stage->model()->count() : 0, frames);
   Table table({"points", "format", "frame ms", "frame+export ms", "copy ms", "read back ms", "convert ms", "write ms",
                "MB copied", "MB file"});
+  Steps steps("bench export", int(formats.size()));
   for (io::ExportFormat format : formats) {
+    steps.begin(std::string(io::kExportFormatNames[std::size_t(format)]) + ", " + std::to_string(frames) + " frames");
     const std::filesystem::path folder = root / io::exportExtension(format);
-    std::vector<double> exported;
+    std::vector<double> plain, exported;  // per frame, the same frames: the step, the step and its export
     double fileBytes = 0;
     {
       ParticleExporter exporter(folder, format, 1);
-      for (int i = 0; i < frames; ++i)
-        exported.push_back(wallMs([&] {
-          stage->step(profiler);
-          exporter.capture(i, stage->simTime(), *stage->exportSource());
-          exporter.poll();
-        }));
+      for (int i = 0; i < frames; ++i) {
+        glFinish();
+        const auto start = std::chrono::steady_clock::now();
+        stage->step(profiler);
+        glFinish();
+        plain.push_back(msSince(start));
+        exporter.capture(i, stage->simTime(), *stage->exportSource());
+        exporter.poll();
+        glFinish();
+        exported.push_back(msSince(start));
+        Steps::tick(i + 1, frames, "frames");
+      }
       exporter.finish();
       const ParticleExporter::Cost& c = exporter.cost();
       const double n = std::max(1, exporter.written());
@@ -76,6 +81,7 @@ int run(Env& env, const Options& o) {
     }
     if (o.out.empty()) std::filesystem::remove_all(folder);
   }
+  steps.finish();
   if (o.out.empty()) std::filesystem::remove_all(root);
   return finish(env, table, "; every column is CPU wall clock");
 }

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "base/error.h"
+#include "base/progress.h"
 #include "bench/bench.h"
 #include "io/echo.h"
 #include "scene/fluid_stage.h"
@@ -50,9 +51,12 @@ int run(Env& env, const std::string& sceneName, const std::string& sizes, const 
   Table table({"particles", "spacing", "iters", "determ.", "cells", "predict ms", "count ms", "scan ms", "reorder ms",
                "lambda ms", "delta ms", "velocity ms", "viscosity ms", "ms/step", "steps/s", "bytes/particle"});
   const std::vector<std::size_t> counts = block ? parseSizes(sizes) : std::vector<std::size_t>{0};
+  Steps steps("bench fluid", int(counts.size() * parseIterations(iterations).size() * orders.size()));
   for (std::size_t n : counts)
     for (int k : parseIterations(iterations))
       for (bool stable : orders) {
+        steps.begin((block ? "about " + std::to_string(n) + " particles" : scene.name) + ", " + std::to_string(k) +
+                    " iterations, determ. " + (stable ? "on" : "off"));
         fluid::Params p = base;
         p.deterministic = stable;
         if (block) {
@@ -64,14 +68,14 @@ int run(Env& env, const std::string& sceneName, const std::string& sizes, const 
         const PassTimes t = timePasses(w.first, w.last - w.first, [&](gl::GpuProfiler& g) { model.stepOnce(&g); });
         const double perStep = t.frameMs();
         table.add({std::to_string(model.count()), fixed(p.spacing(), 5), std::to_string(k), stable ? "on" : "off",
-                   std::to_string(model.cells()), fixed(t.median("fluid.predict"), 4),
-                   fixed(t.median("fluid.count"), 4), fixed(t.median("fluid.scan"), 4),
-                   fixed(t.median("fluid.reorder"), 4), fixed(t.median("fluid.lambda"), 4),
-                   fixed(t.median("fluid.delta"), 4), fixed(t.median("fluid.velocity"), 4),
-                   fixed(t.median("fluid.viscosity"), 4), fixed(perStep, 4),
-                   fixed(perStep > 0 ? 1000.0 / perStep : 0.0, 0), std::to_string(model.bytesPerParticle())});
+                   std::to_string(model.cells()), t.cell("fluid.predict", 4), t.cell("fluid.count", 4),
+                   t.cell("fluid.scan", 4), t.cell("fluid.reorder", 4), t.cell("fluid.lambda", 4),
+                   t.cell("fluid.delta", 4), t.cell("fluid.velocity", 4), t.cell("fluid.viscosity", 4),
+                   fixed(perStep, 4), fixed(perStep > 0 ? 1000.0 / perStep : 0.0, 0),
+                   std::to_string(model.bytesPerParticle())});
       }
-  return finish(env, table, "; its per-pass timer queries read 0");
+  steps.finish();
+  return finish(env, table);
 }
 
 }  // namespace

@@ -18,6 +18,7 @@
 #include <random>
 
 #include "base/error.h"
+#include "base/progress.h"
 #include "bench/bench.h"
 #include "gl/buffer.h"
 #include "gl/buffer_ops.h"
@@ -218,8 +219,10 @@ int runGridBench(Env& env, const GridOptions& opt) {
   }
   WordScans words(env, maxWords);
   Table table(std::vector<std::string>(std::begin(kColumns), std::end(kColumns)));
+  Steps steps("bench grid", int(sizes.size() * perCell.size()));
   for (std::size_t n : sizes) {
     for (double ppc : perCell) {
+      steps.begin("n " + std::to_string(n) + ", " + fixed(ppc, 2) + " per cell");
       try {
         table.add(runRow(env, opt, words, wallClock, n, ppc));
       } catch (const Error& e) {  // e.g. out of GPU memory: report the row, keep going
@@ -227,6 +230,7 @@ int runGridBench(Env& env, const GridOptions& opt) {
       }
     }
   }
+  steps.finish();
   table.print();
   if (!env.common.csv.empty()) table.writeCsv(env.common.csv);
   return 0;

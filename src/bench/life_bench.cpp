@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "base/progress.h"
 #include "bench/bench.h"
 #include "gl/buffer_ops.h"
 #include "life/bindings.glsl"
@@ -88,8 +89,10 @@ int run(Env& env, const LifeOptions& o) {
   const gl::BufferOps ops(env.shaders);  // read-backs that leave the model's buffers where they are
   Table table({"N", "determ.", "box", "grid", "pairs/particle", "ms/step", "steps/s", "sort ms", "forces ms",
                "integrate ms", "pairs/s", "3x3 pairs/s"});
+  Steps steps("bench life", int(parseSizes(o.sizes).size() * parseOnOff(o.deterministic, "--deterministic").size()));
   for (std::size_t n : parseSizes(o.sizes))
     for (bool stable : parseOnOff(o.deterministic, "--deterministic")) {
+      steps.begin(std::to_string(n) + " particles, determ. " + (stable ? "on" : "off"));
       life::Params params;
       params.deterministic = stable;
       life::Life model(env.shaders, rulesFor(o, n), params);
@@ -110,12 +113,15 @@ int run(Env& env, const LifeOptions& o) {
                  fixed(1000.0 / stepMs, 1), fixed(sortMs, 4), fixed(forcesMs, 4),
                  fixed(std::max(0.0, stepMs - sortMs - forcesMs), 4), rate, blockRate});
     }
+  steps.finish();
   table.print();
   if (o.brute != "none") {
+    Steps bruteSteps("bench life brute force", int(parseSizes(o.brute).size()));
     std::printf("\nforces: grid (sort + force pass) against the shared-memory-tiled N^2 brute force\n");
     Table cross({"N", "grid sort+forces ms", "brute ms", "brute/grid", "max |diff| / |F|"});
     std::size_t crossover = 0;
     for (std::size_t n : parseSizes(o.brute)) {
+      bruteSteps.begin(std::to_string(n) + " particles");
       life::Life model(env.shaders, rulesFor(o, n));
       settle(model, o.settle);
       const double gridMs = gpuMedianMs(env.common, [&] { model.computeForces(); });

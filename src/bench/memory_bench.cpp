@@ -4,6 +4,7 @@
 // one run. GB/s counts bytes read + written (copy: 2 x bytes; fill: bytes).
 #include <cstdio>
 
+#include "base/progress.h"
 #include "bench/bench.h"
 #include "gl/buffer.h"
 #include "gl/buffer_ops.h"
@@ -25,8 +26,10 @@ int run(Env& env, const std::string& sizes) {
   Table table({"bytes", "kernel copy ms", "kernel copy GB/s", "glCopyBufferSubData GB/s", "kernel fill GB/s",
                "glClearBufferData GB/s"});
   const gl::BufferOps ops(env.shaders);
+  Steps steps("bench memory", int(parseSizes(sizes).size()));
   for (std::size_t bytes : parseSizes(sizes)) {
     bytes &= ~std::size_t(3);
+    steps.begin(sizeText(bytes));
     gl::Buffer a, b;
     try {
       a = gl::Buffer(bytes);
@@ -44,6 +47,7 @@ int run(Env& env, const std::string& sizes) {
     table.add({sizeText(bytes), fixed(copyMs, 4), gbps(2.0 * bytes, copyMs), gbps(2.0 * bytes, glCopyMs),
                gbps(double(bytes), fillMs), gbps(double(bytes), clearMs)});
   }
+  steps.finish();
   return finish(env, table);
 }
 

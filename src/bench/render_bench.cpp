@@ -9,6 +9,7 @@
 #include <regex>
 
 #include "base/error.h"
+#include "base/progress.h"
 #include "bench/bench.h"
 #include "io/echo.h"
 #include "render/balls_view.h"
@@ -53,6 +54,7 @@ int run(Env& env, const Options& o) {
   Table table({"balls", "mode", "raster", "scene ms", "gbuffer ms", "thickness ms", "splat ms", "id ms", "resolve ms",
                "blur ms", "compose ms", "frame ms"});
   const std::vector<std::size_t> counts = lattice ? parseSizes(o.sizes) : std::vector<std::size_t>{0};
+  Steps steps("bench render", int(counts.size() * rasters.size() * 2));
   for (std::size_t n : counts) {
     balls::Params p = base;
     if (lattice) p.latticeCount = int(n);
@@ -66,16 +68,19 @@ int run(Env& env, const Options& o) {
       for (BallsMode mode : {BallsMode::Balls, BallsMode::Water}) {
         view.params().raster = raster;
         view.params().mode = mode;
+        steps.begin(std::to_string(model.count()) + " balls, " + kBallsModeNames[int(mode)] + ", " +
+                    kBallsRasterNames[int(raster)] + " raster");
         const PassTimes t = timePasses(env.common.warmup, env.common.repeats,
                                        [&](gl::GpuProfiler& p) { view.render(model, target, p); });
         std::vector<std::string> row = {std::to_string(model.count()), kBallsModeNames[int(mode)],
                                         kBallsRasterNames[int(raster)]};
-        for (const char* pass : kPasses) row.push_back(t.has(pass) ? fixed(t.median(pass), 4) : "-");
+        for (const char* pass : kPasses) row.push_back(t.cell(pass, 4));
         row.push_back(fixed(t.frameMs(), 4));
         table.add(row);
       }
   }
-  return finish(env, table, "; frame ms is the wall clock there");
+  steps.finish();
+  return finish(env, table);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "base/progress.h"
 #include "bench/bench.h"
 #include "gl/buffer.h"
 #include "gl/buffer_ops.h"
@@ -29,7 +30,9 @@ int run(Env& env, const std::string& sizes, bool raster) {
   view3d.params().renderer = renderer;
   gl::GpuProfiler noProfiler;
   noProfiler.setEnabled(false);
+  Steps steps("bench ripples", int(parseSizes(sizes).size()));
   for (std::size_t size : parseSizes(sizes)) {
+    steps.begin(std::to_string(size) + "^2 cells");
     ripples::Params p;
     p.width = p.height = int(size);
     p.velDamping = 0.1f;
@@ -53,6 +56,7 @@ int run(Env& env, const std::string& sizes, bool raster) {
     table.add({std::to_string(size) + "^2", fixed(stepMs, 4), fixed(gbps, 1), fixed(copyGbps, 1),
                fixed(100.0 * gbps / copyGbps, 1), fixed(viewMs, 4), fixed(view3dMs, 4)});
   }
+  steps.finish();
   return finish(env, table);
 }
 

@@ -11,6 +11,7 @@
 #include <memory>
 
 #include "base/error.h"
+#include "base/progress.h"
 #include "bench/bench.h"
 #include "gl/buffer_ops.h"
 #include "gl/framebuffer.h"
@@ -79,9 +80,11 @@ int runSwarmBench(Env& env, const SwarmBenchOptions& o) {
                "points raster ms"});
   RenderTarget target(width, height);
   gl::GpuProfiler idle;  // never in a frame: the renderer's scopes stay silent under our queries
+  Steps steps("bench swarm", int(parseSizes(o.sizes).size() * storages.size()));
   for (std::size_t n : parseSizes(o.sizes)) {
     for (sim::Storage storage : storages) {
       const std::string storageName = sim::kStorageNames[std::size_t(storage)];
+      steps.begin(countText(n) + " particles, " + storageName);
       sim::SwarmParams params;
       params.particles = int(std::min<std::size_t>(n, std::size_t(1) << 30));
       params.storage = storage;
@@ -120,6 +123,7 @@ int runSwarmBench(Env& env, const SwarmBenchOptions& o) {
       }
     }
   }
+  steps.finish();
   return finish(env, table);
 }
 

@@ -163,7 +163,7 @@ Command addRender(CLI::App& app) {
       ->needs(exportOpt);
   sub->add_option("--backend", o->backend, "auto, egl or osmesa")->check(CLI::IsMember({"auto", "egl", "osmesa"}));
   sub->add_flag("--debug-gl", o->job.debugGl, "log KHR_debug driver messages");
-  sub->add_flag("--quiet", o->quiet, "no progress bar");
+  sub->add_flag("--quiet", o->quiet, "no progress: no particle count, time estimate or progress bar");
   sub->add_option("--rules", o->rules, "life: rules JSON file, preset name or share code (sets params.rules)");
   addCheckpointOptions(sub, o->checkpoints);
   addResolutionOptions(sub, o->resolution);

@@ -1,6 +1,7 @@
 #include <algorithm>
 
 #include "base/error.h"
+#include "base/progress.h"
 #include "base/source_dir.h"
 #include "cli/commands.h"
 #include "gl/context.h"
@@ -79,7 +80,11 @@ Command addSweep(CLI::App& app) {
             for (const auto& [app, study] : *chosen) {
               if (!app->parsed()) continue;
               std::printf("sweep %s on %s%s\n", study->name, env.device.c_str(), o->quick ? " (quick)" : "");
+              std::fflush(stdout);
+              Steps steps("sweep " + std::string(study->name), 1, "study");
+              steps.begin(study->summary);
               const sweep::Result result = sweep::runStudy(*study, env);
+              steps.finish();
               const std::filesystem::path csv = csvDir / (std::string(study->name) + ".csv");
               sweep::writeCsv(result, study->name, env.device, csv);
               sweep::writeChartSpec(result, csvDir / (std::string(study->name) + ".chart.json"));

@@ -11,6 +11,8 @@
 #include <memory>
 #include <sstream>
 
+#include "base/log.h"
+#include "base/progress.h"
 #include "cli/commands.h"
 #include "gl/context.h"
 #include "io/echo.h"
@@ -128,7 +130,13 @@ int validate(const std::string& sceneName, const std::string& probeText, int eve
   if (has("height")) out << ",height_over_h0";
   out << "\n";
   int samples = 0;
+  char horizon[64];
+  std::snprintf(horizon, sizeof horizon, "until t = %g s, a sample every %d steps", until, every);
+  log::info(scene.name + ": " + groupedCount(model.sample(false).count) + " particles, " + horizon);
+  // Simulated milliseconds as the unit of work: the number of steps to `until` is the model's to choose.
+  Progress progress("validate " + scene.name, std::max(1, int(std::lround(until * 1e3))), true, "ms simulated");
   for (long step = 0;; ++step) {
+    progress.update(int(std::lround(std::min(model.time(), until) * 1e3)));
     if (step % every == 0) {
       const Sample s = model.sample(has("density"));
       out << s.time << "," << s.count << "," << s.nonFinite;
@@ -146,6 +154,7 @@ int validate(const std::string& sceneName, const std::string& probeText, int eve
     if (model.time() >= until - 1e-12) break;
     model.step();
   }
+  progress.finish();
   if (!csvPath.empty()) std::fprintf(stderr, "wrote %d samples to %s\n", samples, csvPath.c_str());
   return 0;
 }

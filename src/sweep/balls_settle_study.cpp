@@ -132,7 +132,10 @@ Result settleStudy(Env& env) {
                {spring + "explicit-euler", C::SpringDashpot, I::ExplicitEuler, springDts}};
   }
   for (const Method& m : methods)
-    for (double dt : m.dts) r.rows.push_back(settle(env.shaders, across, m, dt));
+    for (double dt : m.dts) {
+      r.rows.push_back(settle(env.shaders, across, m, dt));
+      announce(r.rows.back());
+    }
   r.chart.title = "balls-settle: overlap of a settled water block against cost, per contact law and integrator";
   r.chart.xLabel = "GPU ms per simulated second (" + r.rows.front().resolution + ", r = 1 cm, g = 9.81 m/s^2)";
   r.chart.yLabel = "max overlap / r after 0.25 s";

@@ -92,6 +92,7 @@ Result stability(Env& env) {
     g.x = c;
     g.y = stable ? growth : kCap;
     r.rows.push_back(g);
+    announce(g);
     Row p = g;
     p.method = "phase-speed error, 10 cells per wavelength";
     p.y = phaseError;

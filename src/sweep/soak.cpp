@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <fstream>
 
+#include "base/progress.h"
 #include "render/target.h"
 #include "sim/balls/balls.h"
 #include "sim/fluid/fluid.h"
@@ -105,6 +106,7 @@ SoakResult soak(const Scene& scene, gl::ShaderLibrary& shaders, const SoakRun& r
   gl::GpuProfiler profiler;
   const auto start = std::chrono::steady_clock::now();
   SoakResult result;
+  Progress progress("soak " + scene.name, int(std::min<long>(run.steps, 1L << 30)), true, "steps");
 
   for (long step = 0;; ++step) {
     if (step % every == 0 || step == run.steps) {
@@ -124,12 +126,15 @@ SoakResult soak(const Scene& scene, gl::ShaderLibrary& shaders, const SoakRun& r
       if (onSample) onSample(s);
     }
     if (step == run.steps) break;
+    progress.update(int(std::min<long>(step, 1L << 30)));
     profiler.beginFrame();
     stage->step(profiler);
     profiler.endFrame();
     if (const auto d = stage->divergence())
       throw Error("soak: " + scene.name + " at step " + std::to_string(step + 1) + ": " + d->message);
   }
+  progress.update(int(std::min<long>(run.steps, 1L << 30)));
+  progress.finish();
   stage->flushChecks();
   if (const auto d = stage->divergence()) throw Error("soak: " + scene.name + " at the end: " + d->message);
   return result;

@@ -50,6 +50,7 @@ void addCurve(Result& r, const std::string& method, double theory, double limit,
     row.metrics = {h, row.stable ? p.y : INFINITY, limit, theory};
     row.x = h;
     row.y = row.stable ? std::min(p.y, bound) : bound;
+    announce(row);
     r.rows.push_back(row);
   }
 }

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "base/error.h"
+#include "base/progress.h"
 #include "base/source_dir.h"
 #include "io/csv.h"
 #include "io/echo.h"
@@ -65,7 +66,23 @@ Result emptyResult(std::string model, std::vector<std::string> metrics, ChartSpe
 void addCostRow(Result& result, Row row, double error) {
   row.x = row.costMsPerSimS;
   row.y = error;
+  announce(row);
   result.rows.push_back(std::move(row));
+}
+
+void announce(const Row& row) {
+  std::string text = row.model.empty() ? row.method : row.model + " " + row.method;
+  char number[64];
+  if (row.dt > 0) {
+    std::snprintf(number, sizeof number, ", dt %.3g s", row.dt);
+    text += number;
+  }
+  if (!row.resolution.empty()) text += ", " + row.resolution;
+  if (row.costMsPerSimS > 0) {
+    std::snprintf(number, sizeof number, ": %.3g ms per simulated s", row.costMsPerSimS);
+    text += number;
+  }
+  Steps::note(text + (row.stable ? "" : " (unstable)"));
 }
 
 void markPareto(std::vector<Row>& rows) {

@@ -63,8 +63,11 @@ Result runStudy(const Study& study, Env& env);
 // A result with no rows yet: the model, the CSV names of Row::metrics and the chart (by default a
 // cost-against-error chart: log axes, the Pareto front marked).
 Result emptyResult(std::string model, std::vector<std::string> metrics, ChartSpec chart = {});
-// Adds `row` to a cost-against-error chart: at its cost on x, `error` on y.
+// Adds `row` to a cost-against-error chart: at its cost on x, `error` on y; announces it.
 void addCostRow(Result& result, Row row, double error);
+// A line on stderr for a row just measured, while the command's Steps (base/progress.h) is alive:
+// "sweep balls-dt: verlet, dt 0.002 s, 64k: 12.3 ms per simulated s (40 s so far)".
+void announce(const Row& row);
 
 void markPareto(std::vector<Row>& rows);  // minimises (x, y) among stable rows
 void writeCsv(const Result& result, const std::string& study, const std::string& device,
