@@ -1,8 +1,9 @@
-// `tidepool validate <scene> --probe energy,overlap,density,front,height --every K --until T --csv out.csv`:
+// `tidepool validate <scene> --probe energy,overlap,density,front,height,probes --every K --until T --csv out.csv`:
 // runs a balls or fluid scene headless and writes probe time series (the dam-break measurements:
 // surge front in units of the column width a, residual column height in units of its height; the
 // density error, mean and max of ρ/ρ0 − 1 over compressed particles, for both models with the
-// fluid's kernel: sim/fluid/density_probe.h). Energies: balls per unit mass (m²/s²), fluid in J.
+// fluid's kernel: sim/fluid/density_probe.h; the scene's own probes, params.probes:
+// sim/water/probes.h). Energies: balls per unit mass (m²/s²), fluid in J.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -20,19 +21,20 @@
 #include "scene/fluid_stage.h"
 #include "sim/balls/balls.h"
 #include "sim/fluid/fluid.h"
+#include "sim/water/probes.h"
 #include "sim/water/water_init.h"
 
 namespace tidepool::cli {
 namespace {
 
-const std::vector<std::string> kProbes = {"energy", "overlap", "density", "front", "height"};
+const std::vector<std::string> kProbes = {"energy", "overlap", "density", "front", "height", "probes"};
 
 std::vector<std::string> parseProbes(const std::string& text) {
   std::vector<std::string> out;
   std::stringstream ss(text);
   for (std::string p; std::getline(ss, p, ',');) {
     if (std::find(kProbes.begin(), kProbes.end(), p) == kProbes.end())
-      throw Error("--probe '" + io::printable(p) + "' is not one of: energy, overlap, density, front, height");
+      throw Error("--probe '" + io::printable(p) + "' is not one of: energy, overlap, density, front, height, probes");
     out.push_back(p);
   }
   return out;
@@ -50,7 +52,7 @@ struct Sample {
 // The model a scene names, stepped and sampled alike.
 class Run {
  public:
-  Run(const Scene& scene, gl::ShaderLibrary& shaders) : m_probe(shaders) {
+  Run(const Scene& scene, gl::ShaderLibrary& shaders) : m_probe(shaders), m_probes(shaders) {
     if (scene.model == "balls") {
       m_balls = std::make_unique<balls::Balls>(shaders, ballsParams(scene));
       m_water = balls::resolved(m_balls->params());
@@ -63,6 +65,9 @@ class Run {
     }
   }
   const water::Setup& water() const { return m_water; }
+  std::vector<double> probes() {
+    return m_probes.measure(m_balls ? static_cast<const water::ParticleWater&>(*m_balls) : *m_fluid);
+  }
   float radius() const { return m_balls ? m_balls->radius() : m_fluid->radius(); }
   double time() const { return m_balls ? m_balls->time() : m_fluid->time(); }
   void step() {
@@ -96,6 +101,7 @@ class Run {
   std::unique_ptr<fluid::Fluid> m_fluid;
   water::Setup m_water;
   fluid::DensityProbe m_probe;
+  water::Probes m_probes;
 };
 
 int validate(const std::string& sceneName, const std::string& probeText, int every, double until,
@@ -115,6 +121,9 @@ int validate(const std::string& sceneName, const std::string& probeText, int eve
   const glm::vec3 hi = column ? glm::min(params.fillMax, params.domainMax) : params.domainMax;
   const double a = hi.x - lo.x, h0 = hi.z - lo.z;
 
+  if (std::find(probes.begin(), probes.end(), "probes") != probes.end() && params.probes.empty())
+    throw Error("--probe probes: the scene '" + scene.name + "' lists no probes (params.probes)");
+
   std::ofstream file;
   if (!csvPath.empty()) {
     file.open(csvPath);
@@ -128,6 +137,8 @@ int validate(const std::string& sceneName, const std::string& probeText, int eve
   if (has("density")) out << ",density_error_mean,density_error_max,density_mean_signed";
   if (has("front")) out << ",front_over_a";
   if (has("height")) out << ",height_over_h0";
+  if (has("probes"))
+    for (const std::string& c : water::probeColumns(params.probes)) out << "," << c;
   out << "\n";
   int samples = 0;
   char horizon[64];
@@ -145,6 +156,8 @@ int validate(const std::string& sceneName, const std::string& probeText, int eve
       if (has("density")) out << "," << s.densityMean << "," << s.densityMax << "," << s.densitySigned;
       if (has("front")) out << "," << (s.front - params.domainMin.x + model.radius()) / a;  // particle surface
       if (has("height")) out << "," << (s.backHeight - params.domainMin.z + model.radius()) / h0;
+      if (has("probes"))
+        for (double v : model.probes()) out << "," << v;
       out << "\n";
       ++samples;
       if (s.nonFinite > 0)
@@ -170,7 +183,7 @@ Command addValidate(CLI::App& app) {
   };
   auto o = std::make_shared<Opts>();
   sub->add_option("scene", o->scene, "balls or fluid scene file or name")->required();
-  sub->add_option("--probe", o->probes, "comma list of energy, overlap, density, front, height");
+  sub->add_option("--probe", o->probes, "comma list of energy, overlap, density, front, height, probes");
   sub->add_option("--every", o->every, "steps between samples")->check(CLI::Range(1, 100000000));
   sub->add_option("--until", o->until, "simulated seconds")->check(finiteRange(0.0, 1e9));
   sub->add_option("--csv", o->csv, "output file (default: standard output)");

@@ -1,6 +1,7 @@
 #include "sim/balls/balls_params.h"
 
 #include <cmath>
+#include "sim/water/probes.h"
 
 namespace tidepool::balls {
 
@@ -41,6 +42,7 @@ void visit(ParamVisitor& v, Params& p) {
     v.endGroup();
   }
   water::visitObstacles(v, p);
+  water::visitProbes(v, p.probes);
 }
 
 water::Setup resolved(const Params& p) {

@@ -1,4 +1,5 @@
 #include "sim/fluid/fluid_params.h"
+#include "sim/water/probes.h"
 
 namespace tidepool::fluid {
 
@@ -38,6 +39,7 @@ void visit(ParamVisitor& v, Params& p) {
     v.endGroup();
   }
   water::visitObstacles(v, p);
+  water::visitProbes(v, p.probes);
 }
 
 }  // namespace tidepool::fluid

@@ -50,6 +50,17 @@ void visit(ParamVisitor& v, ObstacleParams& o);
 // The parameters its particles are built from (a change rebuilds them; pose changes do not).
 bool sameBody(const ObstacleParams& a, const ObstacleParams& b);
 
+// A measurement the scene asks for (sim/water/probes.h says what each kind reads).
+constexpr std::size_t kMaxProbes = 16;
+enum class ProbeKind { Gauge, Body };
+constexpr std::array<const char*, 2> kProbeKindNames = {"gauge", "body"};
+struct ProbeParams {
+  ProbeKind kind = ProbeKind::Gauge;
+  glm::vec3 at{0.5f, 0.5f, 0.0f};  // gauge: the line through (x, y), m
+  float radius = 0.0f;             // gauge: footprint radius R, m (0: five spacings)
+  int obstacle = 0;                // body: the obstacle's index in `obstacles`
+};
+
 struct Setup {
   // Particles and domain
   float radius = 0.01f;                                 // r, m: the particle size (see "Particle size" below)
@@ -87,6 +98,8 @@ struct Setup {
   float tapSpeed = 2.5f;    // m/s
   float tapRadius = 0.04f;  // nozzle radius, m
   int tapMax = 20000;       // particles the tap adds at most
+  // Probes: gauges and obstacle poses, read by validate and export (sim/water/probes.h)
+  std::vector<ProbeParams> probes;
 };
 
 // Particle size: one radius r in both models, what fills, obstacles, the tap, the grid and the

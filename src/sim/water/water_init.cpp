@@ -7,6 +7,7 @@
 
 #include "base/error.h"
 #include "sim/water/mesh_solid.h"
+#include "sim/water/probes.h"
 
 namespace tidepool::water {
 namespace {
@@ -98,6 +99,7 @@ double fillCapacity(const Setup& p) {
 void checkWaterRequest(const char* model, const char* particle, const std::string& size, double fillParticles,
                        const Setup& w, const sim::ParticleCost& cost) {
   const std::string key = size.substr(0, size.find(' '));  // "particles.radius"
+  checkProbes(w);
   // An inverted region would silently make no particles.
   if ((w.fill == Fill::Block || w.fill == Fill::Random) && glm::any(glm::lessThanEqual(w.fillMax, w.fillMin))) {
     char line[200];

@@ -1,0 +1,169 @@
+#include "sim/water/probes.h"
+
+#include <cmath>
+#include <glm/gtc/quaternion.hpp>
+#include <numbers>
+
+#include "base/error.h"
+#include "gl/kernel.h"
+#include "gl/window.h"
+#include "water/probe_bindings.glsl"
+
+namespace tidepool::water {
+namespace {
+
+static_assert(kMaxProbes == PROBE_MAX_GAUGES);
+
+struct GaugeUniforms {
+  GLuint first = 0, count = 0;
+  GLint gauges = 0;
+  std::array<glm::vec4, PROBE_MAX_GAUGES> gauge{};  // x, y, 1/R², 4/(πR²)
+  static constexpr auto fields() {
+    using U = GaugeUniforms;
+    return std::tuple{gl::field("uFirst", &U::first), gl::field("uCount", &U::count), gl::field("uGauges", &U::gauges),
+                      gl::field("uGauge", &U::gauge)};
+  }
+};
+
+std::string item(std::size_t i) { return "probes[" + std::to_string(i) + "]"; }
+
+std::string number(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", x);
+  return buf;
+}
+
+// W(s)·2πs / (disc integral) at s = u·R, per unit u: the radial weight of the kernel's mass.
+double ringWeight(double u) { return 8.0 * u * std::pow(1.0 - u * u, 3.0); }  // ∫₀¹ = 1
+
+}  // namespace
+
+void visitProbes(ParamVisitor& v, std::vector<ProbeParams>& probes) {
+  v.list(
+      {"probes", "Probes", "measurements written by validate --probe probes and by export: gauges, obstacle poses"},
+      probes, kMaxProbes,
+      [](ParamVisitor& v, ProbeParams& p) {
+        v.choice({"kind", "Kind", "gauge: water height at a vertical line; body: an obstacle's pose and velocity"},
+                 p.kind, kProbeKindNames);
+        v.vector({"at", "At", "gauge: the vertical line through (x, y), m (z unused)"}, p.at, -100.0f, 100.0f);
+        v.real({"radius", "Radius", "gauge: footprint radius, m (0: three particle spacings)"}, p.radius, 0.0f, 100.0f);
+        v.integer({"obstacle", "Obstacle", "body: index in the obstacles list"}, p.obstacle, 0, int(kMaxObstacles) - 1);
+      },
+      [](std::size_t i, const ProbeParams& p) {
+        return std::to_string(i) + ": " + kProbeKindNames[std::size_t(p.kind)];
+      });
+}
+
+float gaugeRadius(const ProbeParams& p, float particleRadius) {
+  return p.radius > 0.0f ? p.radius : 5.0f * spacing(particleRadius);
+}
+
+void checkProbes(const Setup& s) {
+  for (std::size_t i = 0; i < s.probes.size(); ++i) {
+    const ProbeParams& p = s.probes[i];
+    if (p.kind == ProbeKind::Body && std::size_t(p.obstacle) >= s.obstacles.size())
+      throw Error(item(i) + ": obstacle " + std::to_string(p.obstacle) + " does not exist: the scene has " +
+                  std::to_string(s.obstacles.size()) + " obstacle" + (s.obstacles.size() == 1 ? "" : "s"));
+    if (p.kind == ProbeKind::Gauge &&
+        (p.at.x <= s.domainMin.x || p.at.x >= s.domainMax.x || p.at.y <= s.domainMin.y || p.at.y >= s.domainMax.y))
+      throw Error(item(i) + ": the gauge at (" + number(p.at.x) + ", " + number(p.at.y) +
+                  ") is not inside the domain's x (" + number(s.domainMin.x) + ", " + number(s.domainMax.x) +
+                  ") and y (" + number(s.domainMin.y) + ", " + number(s.domainMax.y) + ")");
+  }
+}
+
+std::vector<std::string> probeColumns(const std::vector<ProbeParams>& probes) {
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < probes.size(); ++i) {
+    const std::string n = std::to_string(i);
+    if (probes[i].kind == ProbeKind::Gauge) {
+      out.push_back("gauge" + n + "_height_m");
+    } else {
+      for (const char* c : {"x_m", "y_m", "z_m", "qw", "qx", "qy", "qz", "vx_m_s", "vy_m_s", "vz_m_s", "wx_rad_s",
+                            "wy_rad_s", "wz_rad_s"})
+        out.push_back("body" + n + "_" + c);
+    }
+  }
+  return out;
+}
+
+double gaugeKernelInside(glm::vec2 at, double radius, glm::vec2 lo, glm::vec2 hi) {
+  if (at.x - radius >= lo.x && at.x + radius <= hi.x && at.y - radius >= lo.y && at.y + radius <= hi.y) return 1.0;
+  // Rings of the disc (midpoint rule in u = s/R), each weighted by the fraction of its circle
+  // inside the rectangle (midpoint rule in the angle): 1e-4 of the kernel's mass or better.
+  constexpr int kRings = 256, kAngles = 1024;
+  double sum = 0;
+  for (int r = 0; r < kRings; ++r) {
+    const double u = (r + 0.5) / kRings, s = u * radius;
+    int inside = 0;
+    for (int a = 0; a < kAngles; ++a) {
+      const double t = 2.0 * std::numbers::pi * (a + 0.5) / kAngles;
+      const double x = at.x + s * std::cos(t), y = at.y + s * std::sin(t);
+      inside += x >= lo.x && x <= hi.x && y >= lo.y && y <= hi.y;
+    }
+    sum += ringWeight(u) * inside / kAngles;
+  }
+  return sum / kRings;
+}
+
+std::vector<double> Probes::gaugeHeights(const ParticleWater& water, const std::vector<glm::vec4>& gauges) {
+  GaugeUniforms u;
+  u.gauges = GLint(gauges.size());
+  std::copy(gauges.begin(), gauges.end(), u.gauge.begin());
+  std::vector<double> sums(gauges.size(), 0.0);
+  const gl::Kernel<GaugeUniforms> kernel(m_shaders, "water/gauge.comp", {PROBE_POS, PROBE_PARTIALS});
+  for (const gl::Window& w : gl::windows(water.count(), sizeof(glm::vec4))) {
+    const std::size_t groups = (w.count + PROBE_GROUP_SIZE - 1) / PROBE_GROUP_SIZE;
+    const std::size_t bytes = groups * PROBE_MAX_GAUGES * sizeof(float);
+    if (m_partials.size() < bytes) m_partials = gl::Buffer(bytes);
+    gl::bindWindow(water.positions(), PROBE_POS, w, sizeof(glm::vec4));
+    m_partials.bindBase(GL_SHADER_STORAGE_BUFFER, PROBE_PARTIALS);
+    u.first = GLuint(w.first);
+    u.count = GLuint(w.end());
+    kernel.dispatchThreads(w.count, u);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    const std::vector<float> partials = m_partials.read<float>(groups * PROBE_MAX_GAUGES);
+    for (std::size_t g = 0; g < groups; ++g)
+      for (std::size_t k = 0; k < gauges.size(); ++k) sums[k] += partials[g * PROBE_MAX_GAUGES + k];
+  }
+  return sums;
+}
+
+std::vector<double> Probes::measure(const ParticleWater& water) {
+  const Setup& s = water.water();
+  checkProbes(s);
+  const float r = water.radius();
+  const glm::vec2 lo(water.wallMin()), hi(water.wallMax());
+  std::vector<glm::vec4> gauges;
+  std::vector<double> inside;  // each gauge's kernel mass inside the walls
+  for (const ProbeParams& p : s.probes)
+    if (p.kind == ProbeKind::Gauge) {
+      const double R = gaugeRadius(p, r);
+      gauges.push_back({p.at.x, p.at.y, float(1.0 / (R * R)), float(4.0 / (std::numbers::pi * R * R))});
+      inside.push_back(gaugeKernelInside(glm::vec2(p.at), R, lo, hi));
+    }
+  const std::vector<double> sums = gauges.empty() ? std::vector<double>{} : gaugeHeights(water, gauges);
+  const double volume = volumePerParticle(r, water.packing());
+
+  std::vector<double> out;
+  std::size_t gauge = 0;
+  for (const ProbeParams& p : s.probes) {
+    if (p.kind == ProbeKind::Gauge) {
+      out.push_back(inside[gauge] > 0 ? volume * sums[gauge] / inside[gauge] : NAN);
+      ++gauge;
+      continue;
+    }
+    if (std::size_t(p.obstacle) >= water.obstacles().size())
+      throw Error("probe: no obstacle " + std::to_string(p.obstacle));
+    const ObstaclePose& pose = water.obstacles().pose(std::size_t(p.obstacle));
+    glm::quat q = glm::normalize(glm::quat_cast(pose.rotation));
+    if (q.w < 0) q = -q;  // one of the two quaternions of a rotation: w ≥ 0
+    for (double x : {double(pose.centre.x), double(pose.centre.y), double(pose.centre.z), double(q.w), double(q.x),
+                     double(q.y), double(q.z), double(pose.velocity.x), double(pose.velocity.y),
+                     double(pose.velocity.z), double(pose.omega.x), double(pose.omega.y), double(pose.omega.z)})
+      out.push_back(x);
+  }
+  return out;
+}
+
+}  // namespace tidepool::water
