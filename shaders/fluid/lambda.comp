@@ -2,7 +2,8 @@
 // PBF solver, first half of an iteration (Macklin & Müller 2013, eqs. 1-11): each particle's
 // density ρ_i/ρ0 = Σ_j V0 W(p_i − p_j) + Σ_b V_b W(p_i − p_b) + Σ_walls Φ(δ) (boundaries after
 // Akinci et al. 2012; walls in closed form), the constraint C_i = ρ_i/ρ0 − 1 (only compression:
-// a free surface is not pulled in), and λ_i = −C_i / (Σ_k |∇_k C_i|² + ε).
+// a free surface is not pulled in), and λ_i = −C_i / (Σ_k |∇_k C_i|² + ε). Λ_i, the sum of λ_i
+// over the step's iterations, is the pressure's: p_i = −ρ0 Λ_i / dt² (fluid/loads.comp).
 #include "fluid/bindings.glsl"
 
 layout(local_size_x = FLUID_GROUP_SIZE) in;
@@ -10,6 +11,7 @@ layout(local_size_x = FLUID_GROUP_SIZE) in;
 
 layout(std430, binding = FLUID_PRED) readonly buffer Pred { vec4 pred[]; };
 layout(std430, binding = FLUID_LAMBDA) writeonly buffer Lambda { vec2 lambda[]; };  // (λ, ρ/ρ0)
+layout(std430, binding = FLUID_PRESSURE) buffer LambdaSum { float lambdaSum[]; };  // Λ
 #define neighbourPos pred
 
 #include "fluid/kernels.glsl"
@@ -37,6 +39,7 @@ void onBoundary(vec3 r, float r2, float volume) {
 
 uniform uint uCount;
 uniform float uEpsilon;  // ε, 1/m²
+uniform uint uFirstIteration;  // 1: Λ starts from this λ
 
 void main() {
   const uint i = globalIndex();
@@ -51,5 +54,7 @@ void main() {
 #endif
   wallsDensity(p, gDensity, gGradient);
   const float c = max(gDensity - 1.0, 0.0);
-  lambda[i] = vec2(-c / (gGradients + dot(gGradient, gGradient) + uEpsilon), gDensity);
+  const float l = -c / (gGradients + dot(gGradient, gGradient) + uEpsilon);
+  lambda[i] = vec2(l, gDensity);
+  lambdaSum[i] = uFirstIteration != 0u ? l : lambdaSum[i] + l;
 }

@@ -66,7 +66,7 @@ class Run {
   }
   const water::Setup& water() const { return m_water; }
   std::vector<double> probes() {
-    return m_probes.measure(m_balls ? static_cast<const water::ParticleWater&>(*m_balls) : *m_fluid);
+    return m_probes.measure(m_balls ? static_cast<water::ParticleWater&>(*m_balls) : *m_fluid);
   }
   float radius() const { return m_balls ? m_balls->radius() : m_fluid->radius(); }
   double time() const { return m_balls ? m_balls->time() : m_fluid->time(); }
@@ -123,6 +123,8 @@ int validate(const std::string& sceneName, const std::string& probeText, int eve
 
   if (std::find(probes.begin(), probes.end(), "probes") != probes.end() && params.probes.empty())
     throw Error("--probe probes: the scene '" + scene.name + "' lists no probes (params.probes)");
+  if (std::find(probes.begin(), probes.end(), "probes") != probes.end())
+    model.probes();  // what it cannot measure: before any output
 
   std::ofstream file;
   if (!csvPath.empty()) {

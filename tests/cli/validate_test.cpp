@@ -102,11 +102,24 @@ TEST(Validate, ProbesTheSceneCannotMeasureAreOneLineErrors) {
       {R"([{"kind": "body", "obstacle": 2}]}})", "probes[0]: obstacle 2 does not exist: the scene has 0 obstacles"},
       {R"([{"kind": "gauge", "at": [0.5, 0.1, 0]}]}})",
        "probes[0]: the gauge at (0.5, 0.1) is not inside the domain's x (0, 0.4) and y (0, 0.2)"},
-      {R"([{"kind": "pressure"}]}})", "probes[0].kind = 'pressure' is not one of: gauge, body"},
+      {R"([{"kind": "force"}]}})", "probes[0].kind = 'force' is not one of: gauge, pressure, body"},
+      {R"([{"kind": "pressure", "at": [0.2, 0.1, 0.5]}]}})",
+       "probes[0]: the pressure probe at (0.2, 0.1, 0.5) is not inside the domain"},
       {R"([{"kind": "gauge", "radius": -1}]}})", "probes[0].radius"},
       {R"({"kind": "gauge"}}})", "probes"}};
   for (const auto& [probes, message] : cases) {
     dir.write("bad.json", head + probes);
     test::expectOneLineError({"validate", (dir / "bad.json").string(), "--probe", "probes"}, message);
   }
+}
+
+TEST(Validate, APressureProbeOnBallsIsOneLineBeforeAnyOutput) {
+  test::TempDir dir;
+  dir.write("balls.json", R"({"model": "balls", "params": {"particles": {"radius": 0.01,
+      "domain_max": [0.4, 0.2, 0.3], "fill": "slab", "slab_height": 0.1},
+      "probes": [{"kind": "pressure", "at": [0.2, 0.1, 0.05]}]}})");
+  test::expectOneLineError(
+      {"validate", (dir / "balls.json").string(), "--probe", "probes", "--csv", (dir / "p.csv").string()},
+      "balls: a pressure probe reads the fluid solver's pressure");
+  EXPECT_FALSE(std::filesystem::exists(dir / "p.csv"));
 }

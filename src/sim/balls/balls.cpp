@@ -221,4 +221,10 @@ void Balls::ensureGrid() {
   m_countedAhead = {};  // a new grid counted nothing (it may reuse the old one's address)
 }
 
+std::vector<double> Balls::pressures(const std::vector<glm::vec3>&) {
+  throw Error(
+      "balls: a pressure probe reads the fluid solver's pressure, which the balls do not have; run the scene "
+      "as fluid (\"model\": \"fluid\")");
+}
+
 }  // namespace tidepool::balls

@@ -70,6 +70,8 @@ class Balls final : public sim::Model, public water::ParticleWater {
   glm::vec3 wallMin() const override { return m_wallMin; }
   glm::vec3 wallMax() const override { return m_wallMax; }
   float domainRotation() const override;  // radians about x
+  // Pressure probes: the balls have no pressure field (throws Error saying so).
+  std::vector<double> pressures(const std::vector<glm::vec3>& points) override;
   water::Packing packing() const override { return Params::kPacking; }
   const water::Setup& water() const override { return m_params; }
   std::size_t bytesPerBall() const;                                   // GPU memory per ball, grid included

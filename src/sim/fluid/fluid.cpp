@@ -72,7 +72,7 @@ void Fluid::calibrate() {
 sim::ParticleCost Fluid::cost() const {
   return {.maxParticles = std::size_t(m_params.maxParticles),
           .arrayBytes = sizeof(glm::vec4),
-          .gpuBytes = 5 * sizeof(glm::vec4) + 2 * sizeof(float) + 4 * sizeof(GLuint),
+          .gpuBytes = 5 * sizeof(glm::vec4) + 3 * sizeof(float) + 4 * sizeof(GLuint),
           .hostBytes = 2 * sizeof(glm::vec4)};
 }
 
@@ -87,6 +87,7 @@ void Fluid::allocate(std::size_t count, std::size_t capacity) {
   m_pred = gl::Buffer(bytes);
   for (gl::Buffer& s : m_scratch) s = gl::Buffer(bytes);
   m_lambda = gl::Buffer(n * 2 * sizeof(float));
+  m_lambdaSum = gl::Buffer(n * sizeof(float));
   m_permutation = gl::Buffer(n * sizeof(GLuint));
   m_capacity = capacity;
 }
@@ -205,7 +206,7 @@ void Fluid::visitOwnState(sim::StateVisitor& v) {
 std::size_t Fluid::bytesPerParticle() const {
   if (m_count == 0) return 0;
   const std::size_t own = m_x.size() + m_v.size() + m_pred.size() + m_scratch[0].size() + m_scratch[1].size() +
-                          m_lambda.size() + m_permutation.size();
+                          m_lambda.size() + m_lambdaSum.size() + m_permutation.size();
   return (own + m_grid->memoryBytes()) / m_count;
 }
 

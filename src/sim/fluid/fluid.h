@@ -65,6 +65,9 @@ class Fluid final : public sim::Model, public water::ParticleWater {
   // solver iteration. Valid once a step has run since reset, upload, restore or recovery.
   const gl::Buffer& densities() const { return m_lambda; }
   bool densitiesValid() const { return m_densitiesValid; }
+  // Λ per particle, the sum of λ over the last step's iterations (p = −ρ0 Λ / dt²), in the order
+  // of positions(); valid with densities().
+  const gl::Buffer& lambdaSums() const { return m_lambdaSum; }
   float radius() const override { return m_params.radius; }
   water::Packing packing() const override { return Params::kPacking; }
   const water::Obstacles& obstacles() const override { return m_obstacles; }
@@ -72,6 +75,8 @@ class Fluid final : public sim::Model, public water::ParticleWater {
   glm::vec3 wallMin() const override { return m_walls.min; }
   glm::vec3 wallMax() const override { return m_walls.max; }
   float domainRotation() const override;
+  // The solver's pressure of the last step at each point (fluid_pressure.cpp); NaN before the first step.
+  std::vector<double> pressures(const std::vector<glm::vec3>& points) override;
 
   glm::vec3 gravity() const;                                            // current, turned with the domain
   double h() const { return m_params.h(); }                             // smoothing radius, m
@@ -128,7 +133,7 @@ class Fluid final : public sim::Model, public water::ParticleWater {
   double m_tapNextLayer = 0;
   // State x, v (cell order after a step); the predicted positions p; scratch for the Jacobi
   // iterations and the velocity passes; (λ, ρ/ρ0) per particle.
-  gl::Buffer m_x, m_v, m_pred, m_scratch[2], m_lambda, m_permutation;
+  gl::Buffer m_x, m_v, m_pred, m_scratch[2], m_lambda, m_lambdaSum, m_permutation;
   std::unique_ptr<grid::UniformGrid> m_grid;
   water::Obstacles m_obstacles;
   std::string m_obstacleError;
@@ -137,7 +142,7 @@ class Fluid final : public sim::Model, public water::ParticleWater {
   double m_time = 0;
   std::uint64_t m_steps = 0;
   bool m_trackOrder = false;
-  bool m_densitiesValid = false;  // m_lambda belongs to the particles in m_x
+  bool m_densitiesValid = false;  // m_lambda and m_lambdaSum belong to the particles in m_x
 };
 
 }  // namespace tidepool::fluid

@@ -78,15 +78,21 @@ struct PredictUniforms {  // fluid/predict.comp
 
 struct LambdaUniforms {  // fluid/lambda.comp
   GLuint count = 0;
-  float epsilon = 0;  // ε, 1/m²
+  float epsilon = 0;          // ε, 1/m²
+  GLuint firstIteration = 0;  // 1: the sum of λ over the iterations starts anew
   SphUniforms sph;
   WallUniforms walls;
   NeighbourUniforms neighbours;
   BoundaryUniforms boundary;
   static constexpr auto fields() {
     using U = LambdaUniforms;
-    return std::tuple{gl::field("uCount", &U::count), gl::field("uEpsilon", &U::epsilon), gl::field(&U::sph),
-                      gl::field(&U::walls),           gl::field(&U::neighbours),          gl::field(&U::boundary)};
+    return std::tuple{gl::field("uCount", &U::count),
+                      gl::field("uEpsilon", &U::epsilon),
+                      gl::field("uFirstIteration", &U::firstIteration),
+                      gl::field(&U::sph),
+                      gl::field(&U::walls),
+                      gl::field(&U::neighbours),
+                      gl::field(&U::boundary)};
   }
 };
 

@@ -97,8 +97,8 @@ void Fluid::solve(gl::GpuProfiler* profiler) {
   const std::vector<gl::ShaderDefine> boundary = boundaryDefines(m_obstacles);
   std::vector<gl::ShaderDefine> deltaDefines = boundary;
   if (q.scorrN == 4.0f) deltaDefines.push_back({"SCORR_N4", ""});
-  const gl::Kernel<LambdaUniforms> lambda(m_shaders, "fluid/lambda.comp", {FLUID_CELL_START, FLUID_PRED, FLUID_LAMBDA},
-                                          boundary);
+  const gl::Kernel<LambdaUniforms> lambda(m_shaders, "fluid/lambda.comp",
+                                          {FLUID_CELL_START, FLUID_PRED, FLUID_LAMBDA, FLUID_PRESSURE}, boundary);
   const gl::Kernel<DeltaUniforms> delta(m_shaders, "fluid/delta.comp",
                                         {FLUID_CELL_START, FLUID_PRED, FLUID_LAMBDA, FLUID_OUT}, deltaDefines);
   for (int k = 0; k < q.iterations; ++k) {
@@ -106,8 +106,10 @@ void Fluid::solve(gl::GpuProfiler* profiler) {
       auto scope = timed(profiler, "fluid.lambda");
       m_pred.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_PRED);
       m_lambda.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_LAMBDA);
+      m_lambdaSum.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_PRESSURE);
       lambda.dispatchThreads(m_count, {.count = GLuint(m_count),
                                        .epsilon = float(q.relaxation * m_rest.gradients),
+                                       .firstIteration = k == 0,
                                        .sph = sph(),
                                        .walls = walls(),
                                        .neighbours = bindNeighbours(),

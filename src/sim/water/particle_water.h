@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <glm/glm.hpp>
+#include <vector>
 
 #include "gl/buffer.h"
 #include "sim/divergence.h"
@@ -44,6 +45,9 @@ class ParticleWater {
   // The neighbour grid in the particles' frame, its counts as of the last sort (debug views);
   // null before the first step or for a model without one.
   virtual const grid::UniformGrid* neighbourGrid() const { return nullptr; }
+  // The water's pressure (Pa) at each point, as of the last step (sim/water/probes.h; NaN before
+  // the first step). Throws Error where the model has no pressure field.
+  virtual std::vector<double> pressures(const std::vector<glm::vec3>& points) = 0;
 };
 
 }  // namespace tidepool::water

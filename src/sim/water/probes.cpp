@@ -40,13 +40,16 @@ double ringWeight(double u) { return 8.0 * u * std::pow(1.0 - u * u, 3.0); }  //
 
 void visitProbes(ParamVisitor& v, std::vector<ProbeParams>& probes) {
   v.list(
-      {"probes", "Probes", "measurements written by validate --probe probes and by export: gauges, obstacle poses"},
+      {"probes", "Probes", "measurements that validate --probe probes writes: gauges, pressures, obstacle poses"},
       probes, kMaxProbes,
       [](ParamVisitor& v, ProbeParams& p) {
-        v.choice({"kind", "Kind", "gauge: water height at a vertical line; body: an obstacle's pose and velocity"},
+        v.choice({"kind", "Kind",
+                  "gauge: water height at a vertical line; pressure: at a point (fluid); body: an obstacle's pose "
+                  "and velocity"},
                  p.kind, kProbeKindNames);
-        v.vector({"at", "At", "gauge: the vertical line through (x, y), m (z unused)"}, p.at, -100.0f, 100.0f);
-        v.real({"radius", "Radius", "gauge: footprint radius, m (0: three particle spacings)"}, p.radius, 0.0f, 100.0f);
+        v.vector({"at", "At", "gauge: the vertical line through (x, y), z unused; pressure: the point, m"}, p.at,
+                 -100.0f, 100.0f);
+        v.real({"radius", "Radius", "gauge: footprint radius, m (0: five particle spacings)"}, p.radius, 0.0f, 100.0f);
         v.integer({"obstacle", "Obstacle", "body: index in the obstacles list"}, p.obstacle, 0, int(kMaxObstacles) - 1);
       },
       [](std::size_t i, const ProbeParams& p) {
@@ -59,29 +62,40 @@ float gaugeRadius(const ProbeParams& p, float particleRadius) {
 }
 
 void checkProbes(const Setup& s) {
+  auto inside = [&](glm::vec3 at, int axes) {
+    for (int k = 0; k < axes; ++k)
+      if (at[k] <= s.domainMin[k] || at[k] >= s.domainMax[k]) return false;
+    return true;
+  };
   for (std::size_t i = 0; i < s.probes.size(); ++i) {
     const ProbeParams& p = s.probes[i];
     if (p.kind == ProbeKind::Body && std::size_t(p.obstacle) >= s.obstacles.size())
       throw Error(item(i) + ": obstacle " + std::to_string(p.obstacle) + " does not exist: the scene has " +
                   std::to_string(s.obstacles.size()) + " obstacle" + (s.obstacles.size() == 1 ? "" : "s"));
-    if (p.kind == ProbeKind::Gauge &&
-        (p.at.x <= s.domainMin.x || p.at.x >= s.domainMax.x || p.at.y <= s.domainMin.y || p.at.y >= s.domainMax.y))
+    if (p.kind == ProbeKind::Gauge && !inside(p.at, 2))
       throw Error(item(i) + ": the gauge at (" + number(p.at.x) + ", " + number(p.at.y) +
                   ") is not inside the domain's x (" + number(s.domainMin.x) + ", " + number(s.domainMax.x) +
                   ") and y (" + number(s.domainMin.y) + ", " + number(s.domainMax.y) + ")");
+    if (p.kind == ProbeKind::Pressure && !inside(p.at, 3))
+      throw Error(item(i) + ": the pressure probe at (" + number(p.at.x) + ", " + number(p.at.y) + ", " +
+                  number(p.at.z) + ") is not inside the domain");
   }
 }
 
 std::vector<std::string> probeColumns(const std::vector<ProbeParams>& probes) {
   std::vector<std::string> out;
+  auto add = [&](const std::string& prefix, std::initializer_list<const char*> names) {
+    for (const char* c : names) out.push_back(prefix + "_" + c);
+  };
   for (std::size_t i = 0; i < probes.size(); ++i) {
-    const std::string n = std::to_string(i);
-    if (probes[i].kind == ProbeKind::Gauge) {
-      out.push_back("gauge" + n + "_height_m");
-    } else {
-      for (const char* c : {"x_m", "y_m", "z_m", "qw", "qx", "qy", "qz", "vx_m_s", "vy_m_s", "vz_m_s", "wx_rad_s",
-                            "wy_rad_s", "wz_rad_s"})
-        out.push_back("body" + n + "_" + c);
+    const std::string n = kProbeKindNames[std::size_t(probes[i].kind)] + std::to_string(i);
+    switch (probes[i].kind) {
+      case ProbeKind::Gauge: add(n, {"height_m"}); break;
+      case ProbeKind::Pressure: add(n, {"pa"}); break;
+      case ProbeKind::Body:
+        add(n, {"x_m", "y_m", "z_m", "qw", "qx", "qy", "qz", "vx_m_s", "vy_m_s", "vz_m_s", "wx_rad_s", "wy_rad_s",
+                "wz_rad_s"});
+        break;
     }
   }
   return out;
@@ -106,7 +120,7 @@ double gaugeKernelInside(glm::vec2 at, double radius, glm::vec2 lo, glm::vec2 hi
   return sum / kRings;
 }
 
-std::vector<double> Probes::gaugeHeights(const ParticleWater& water, const std::vector<glm::vec4>& gauges) {
+std::vector<double> Probes::gaugeSums(const ParticleWater& water, const std::vector<glm::vec4>& gauges) {
   GaugeUniforms u;
   u.gauges = GLint(gauges.size());
   std::copy(gauges.begin(), gauges.end(), u.gauge.begin());
@@ -129,39 +143,45 @@ std::vector<double> Probes::gaugeHeights(const ParticleWater& water, const std::
   return sums;
 }
 
-std::vector<double> Probes::measure(const ParticleWater& water) {
+std::vector<double> Probes::measure(ParticleWater& water) {
   const Setup& s = water.water();
   checkProbes(s);
   const float r = water.radius();
   const glm::vec2 lo(water.wallMin()), hi(water.wallMax());
   std::vector<glm::vec4> gauges;
-  std::vector<double> inside;  // each gauge's kernel mass inside the walls
+  std::vector<double> inside;     // each gauge's kernel mass inside the walls
+  std::vector<glm::vec3> points;  // pressure probes
   for (const ProbeParams& p : s.probes)
     if (p.kind == ProbeKind::Gauge) {
       const double R = gaugeRadius(p, r);
       gauges.push_back({p.at.x, p.at.y, float(1.0 / (R * R)), float(4.0 / (std::numbers::pi * R * R))});
       inside.push_back(gaugeKernelInside(glm::vec2(p.at), R, lo, hi));
+    } else if (p.kind == ProbeKind::Pressure) {
+      points.push_back(p.at);
     }
-  const std::vector<double> sums = gauges.empty() ? std::vector<double>{} : gaugeHeights(water, gauges);
+  const std::vector<double> sums = gauges.empty() ? std::vector<double>{} : gaugeSums(water, gauges);
+  const std::vector<double> pressures = points.empty() ? std::vector<double>{} : water.pressures(points);
   const double volume = volumePerParticle(r, water.packing());
 
   std::vector<double> out;
-  std::size_t gauge = 0;
+  std::size_t gauge = 0, pressure = 0;
   for (const ProbeParams& p : s.probes) {
-    if (p.kind == ProbeKind::Gauge) {
-      out.push_back(inside[gauge] > 0 ? volume * sums[gauge] / inside[gauge] : NAN);
-      ++gauge;
-      continue;
+    switch (p.kind) {
+      case ProbeKind::Gauge:
+        out.push_back(inside[gauge] > 0 ? volume * sums[gauge] / inside[gauge] : NAN);
+        ++gauge;
+        break;
+      case ProbeKind::Pressure: out.push_back(pressures.at(pressure++)); break;
+      case ProbeKind::Body: {
+        const ObstaclePose& pose = water.obstacles().pose(std::size_t(p.obstacle));
+        glm::quat q = glm::normalize(glm::quat_cast(pose.rotation));
+        if (q.w < 0) q = -q;  // one of the two quaternions of a rotation: w ≥ 0
+        for (float x : {pose.centre.x, pose.centre.y, pose.centre.z, q.w, q.x, q.y, q.z, pose.velocity.x,
+                        pose.velocity.y, pose.velocity.z, pose.omega.x, pose.omega.y, pose.omega.z})
+          out.push_back(x);
+        break;
+      }
     }
-    if (std::size_t(p.obstacle) >= water.obstacles().size())
-      throw Error("probe: no obstacle " + std::to_string(p.obstacle));
-    const ObstaclePose& pose = water.obstacles().pose(std::size_t(p.obstacle));
-    glm::quat q = glm::normalize(glm::quat_cast(pose.rotation));
-    if (q.w < 0) q = -q;  // one of the two quaternions of a rotation: w ≥ 0
-    for (double x : {double(pose.centre.x), double(pose.centre.y), double(pose.centre.z), double(q.w), double(q.x),
-                     double(q.y), double(q.z), double(pose.velocity.x), double(pose.velocity.y),
-                     double(pose.velocity.z), double(pose.omega.x), double(pose.omega.y), double(pose.omega.z)})
-      out.push_back(x);
   }
   return out;
 }

@@ -8,11 +8,18 @@
 //          particle above the floor counts, spray included; a particle's rest volume V is the
 //          model's (setup.h, volumePerParticle), so a compressed column still reads the height
 //          it would have at rest. R = 0: five spacings.
+//   pressure {"kind": "pressure", "at": [x, y, z]}  the water's pressure at the point (Pa): the
+//          fluid's, from its solver, p_i = −ρ0 Λ_i / dt² with Λ_i the sum of particle i's λ over
+//          the step's iterations (its position correction is SPH's pressure acceleration times
+//          dt²), interpolated by Shepard's Σ V p_i W / Σ V W (poly6, support h; 0 where no
+//          particle is within h). The balls have no pressure field: a pressure probe on them is
+//          an Error (a contact stress is not the fluid's pressure at rest).
 //   body   {"kind": "body", "obstacle": k}  obstacle k's pose and velocity as placed at the last
 //          step: centre (m), orientation (unit quaternion w, x, y, z), velocity (m/s), angular
 //          velocity (rad/s).
 // Sums over particles are reduced per work group in a fixed order on the GPU and the groups are
-// added in double on the CPU (shaders/water/gauge.comp): the same run reads the same values.
+// added in double on the CPU (shaders/water/gauge.comp, shaders/fluid/pressure.comp): the same
+// run reads the same values.
 #pragma once
 
 #include <cstddef>
@@ -49,10 +56,10 @@ class Probes {
   explicit Probes(gl::ShaderLibrary& shaders) : m_shaders(shaders) {}
   // One value per column of probeColumns(water.water().probes). Throws Error for probes the
   // water cannot measure (checkProbes).
-  std::vector<double> measure(const ParticleWater& water);
+  std::vector<double> measure(ParticleWater& water);
 
  private:
-  std::vector<double> gaugeHeights(const ParticleWater& water, const std::vector<glm::vec4>& gauges);
+  std::vector<double> gaugeSums(const ParticleWater& water, const std::vector<glm::vec4>& gauges);
 
   gl::ShaderLibrary& m_shaders;
   gl::Buffer m_partials;

@@ -52,11 +52,11 @@ bool sameBody(const ObstacleParams& a, const ObstacleParams& b);
 
 // A measurement the scene asks for (sim/water/probes.h says what each kind reads).
 constexpr std::size_t kMaxProbes = 16;
-enum class ProbeKind { Gauge, Body };
-constexpr std::array<const char*, 2> kProbeKindNames = {"gauge", "body"};
+enum class ProbeKind { Gauge, Pressure, Body };
+constexpr std::array<const char*, 3> kProbeKindNames = {"gauge", "pressure", "body"};
 struct ProbeParams {
   ProbeKind kind = ProbeKind::Gauge;
-  glm::vec3 at{0.5f, 0.5f, 0.0f};  // gauge: the line through (x, y), m
+  glm::vec3 at{0.5f, 0.5f, 0.0f};  // gauge: the line through (x, y); pressure: the point, m
   float radius = 0.0f;             // gauge: footprint radius R, m (0: five spacings)
   int obstacle = 0;                // body: the obstacle's index in `obstacles`
 };

@@ -12,6 +12,7 @@
 #include "gl/window.h"
 #include "sim/balls/balls.h"
 #include "sim/fluid/fluid.h"
+#include "sim/fluid/sph_kernels.h"
 #include "sim/water/obstacle_pose.h"
 #include "sim/water/probes.h"
 #include "support/gl_test.h"
@@ -171,15 +172,19 @@ TEST_F(ProbesTest, AGaugeReadsTheBallsLatticesLayers) {
 }
 
 // A tank of fluid filled 0.2 m deep, left to rest: gauges in the middle and off-centre read the
-// fill height, each sample from t = 1 s to 1.5 s within 1.5% and their means within 1%; a gauge
+// fill height, each sample from t = 1 s to 2 s within 1.5% and their means within 1%; a gauge
 // near a corner, its footprint cut by two walls, reads high, the fluid packing closer along the
-// walls: its mean within 2% (docs/ACCURACY.md, "Probes": measured 0.43% and 1.1%).
-TEST_F(ProbesTest, GaugesInARestingFluidTankReadTheFillHeight) {
+// walls: its mean within 2% (docs/ACCURACY.md, "Probes": measured 0.54% and 1.2%). The pressure
+// 0.15 m and 0.1 m deep is ρ g d, the means within 3% (measured 0.24% and 1.6%).
+TEST_F(ProbesTest, ARestingFluidTanksGaugesReadItsFillHeightAndItsPressureIsHydrostatic) {
   fluid::Params p = tank(0.02f, 0.2f);
   p.probes = {{.at = {0.2f, 0.1f, 0.0f}},
               {.at = {0.1f, 0.1f, 0.0f}},
               {.at = {0.32f, 0.08f, 0.0f}},
               {.at = {0.04f, 0.04f, 0.0f}}};
+  const std::vector<glm::vec3> points = {{0.2f, 0.1f, 0.05f}, {0.2f, 0.1f, 0.1f}};
+  const double depth[2] = {0.15, 0.1};
+  double pressure[2] = {0, 0};
   fluid::Fluid fluid(shaders(), p);
   water::Probes probes(shaders());
   const std::vector<double> start = probes.measure(fluid);
@@ -187,16 +192,62 @@ TEST_F(ProbesTest, GaugesInARestingFluidTankReadTheFillHeight) {
   while (fluid.time() < 1.0) fluid.stepOnce();
   std::vector<double> mean(p.probes.size(), 0.0);
   int samples = 0;
-  for (; fluid.time() < 1.5; ++samples) {
+  for (; fluid.time() < 2.0; ++samples) {
     const std::vector<double> h = probes.measure(fluid);
     for (std::size_t k = 0; k < h.size(); ++k) {
       EXPECT_NEAR(h[k], 0.2, 0.003) << "gauge " << k << " at t = " << fluid.time();
       mean[k] += h[k];
     }
+    const std::vector<double> pa = fluid.pressures(points);
+    for (int k = 0; k < 2; ++k) pressure[k] += pa[std::size_t(k)];
     for (int i = 0; i < 25; ++i) fluid.stepOnce();
+  }
+  for (int k = 0; k < 2; ++k) {
+    const double rhoGd = 1000.0 * 9.81 * depth[k];
+    std::printf("pressure %.2f m deep: mean %.1f Pa, rho g d = %.1f Pa\n", depth[k], pressure[k] / samples, rhoGd);
+    EXPECT_NEAR(pressure[k] / samples, rhoGd, 0.03 * rhoGd) << depth[k] << " m deep";
   }
   for (std::size_t k = 0; k < mean.size(); ++k) {
     std::printf("gauge %zu: mean %.5f m over %d samples\n", k, mean[k] / samples, samples);
     EXPECT_NEAR(mean[k] / samples, 0.2, k == 3 ? 0.004 : 0.002) << "gauge " << k;
   }
+}
+
+// The pressure probe against plain double loops: Shepard's Σ V0 p_i W / Σ V0 W (poly6, h) over
+// the particles read back with their Λ, p_i = −ρ0 Λ_i / dt²; and Λ is the sum of λ over the
+// iterations: with one iteration it is that iteration's λ.
+TEST_F(ProbesTest, PressuresEqualTheDoubleLoopsAndLambdaSumsTheIterations) {
+  fluid::Params p = tank(0.02f, 0.2f);
+  p.iterations = 1;
+  fluid::Fluid one(shaders(), p);
+  for (int i = 0; i < 20; ++i) one.stepOnce();
+  const std::vector<float> sums = one.lambdaSums().read<float>(one.count());
+  const std::vector<glm::vec2> lambdas = one.densities().read<glm::vec2>(one.count());
+  for (std::size_t i = 0; i < sums.size(); ++i) ASSERT_EQ(sums[i], lambdas[i].x) << i;
+
+  p.iterations = 4;
+  fluid::Fluid fluid(shaders(), p);
+  EXPECT_TRUE(std::isnan(fluid.pressures({{0.2f, 0.1f, 0.1f}})[0])) << "no step yet: no pressure";
+  for (int i = 0; i < 50; ++i) fluid.stepOnce();
+  const std::vector<glm::vec3> points = {{0.2f, 0.1f, 0.05f},  {0.03f, 0.1f, 0.1f},   {0.2f, 0.1f, 0.19f},
+                                         {0.2f, 0.1f, 0.01f},  {0.39f, 0.19f, 0.02f}, {0.2f, 0.1f, 0.3f},
+                                         {0.1f, 0.05f, 0.15f}, {0.3f, 0.15f, 0.1f},   {0.25f, 0.12f, 0.07f}};
+  const std::vector<double> got = fluid.pressures(points);  // two batches of 8
+  const std::vector<glm::vec4> pos = fluid.positions().read<glm::vec4>(fluid.count());
+  const std::vector<float> lambda = fluid.lambdaSums().read<float>(fluid.count());
+  const double h = fluid.h(), volume = fluid.rest().volume, scale = -1000.0 / (double(p.dt) * p.dt);
+  ASSERT_EQ(got.size(), points.size());
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    double weighted = 0, weights = 0;
+    for (std::size_t i = 0; i < pos.size(); ++i) {
+      const glm::dvec3 r = glm::dvec3(points[k]) - glm::dvec3(glm::vec3(pos[i]));
+      const double w = volume * fluid::poly6(glm::dot(r, r), h);
+      weighted += w * scale * lambda[i];
+      weights += w;
+    }
+    const double want = weights > 0 ? weighted / weights : 0.0;
+    EXPECT_NEAR(got[k], want, 1e-5 * std::max(1.0, std::abs(want))) << "point " << k;
+  }
+  EXPECT_EQ(got[5], 0.0) << "above the water: no particle within h";
+  EXPECT_GT(got[0], 1000.0) << "0.15 m deep";
 }
