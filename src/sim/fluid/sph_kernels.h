@@ -73,31 +73,9 @@ T wallGradient(T delta, T h) {  // G(δ), 1/m: |∇| of the spiky kernel's half-
 constexpr int kEdgeTableSize = 17;  // entries per axis: a, b = i / 16
 using EdgeTable = std::array<float, kEdgeTableSize * kEdgeTableSize>;
 
-// Q(a, b) at a = i/16, b = j/16, entry [i + 17 j]; computed once (midpoint rule, 1e-5 absolute).
-inline const EdgeTable& edgeTable() {
-  static const EdgeTable table = [] {
-    EdgeTable t{};
-    constexpr int n = 400;
-    for (int j = 0; j < kEdgeTableSize; ++j)
-      for (int i = 0; i < kEdgeTableSize; ++i) {
-        const double a = i / 16.0, b = j / 16.0;
-        double sum = 0;
-        const double dx = (1.0 - a) / n;
-        for (int u = 0; u < n; ++u) {
-          const double x = a + (u + 0.5) * dx, top = 1.0 - x * x - b * b;
-          if (top <= 0) continue;
-          const double ymax = std::sqrt(1.0 - x * x), dy = (ymax - b) / n;
-          for (int v = 0; v < n; ++v) {
-            const double y = b + (v + 0.5) * dy, q = 1.0 - x * x - y * y;
-            if (q > 0) sum += std::pow(q, 3.5) * dx * dy;
-          }
-        }
-        t[std::size_t(i + kEdgeTableSize * j)] = float(9.0 / (2.0 * std::numbers::pi) * sum);
-      }
-    return t;
-  }();
-  return table;
-}
+// Q(a, b) at a = i/16, b = j/16, entry [i + 17 j]; computed once (midpoint rule, 1e-5 absolute),
+// in sph_kernels.cpp.
+const EdgeTable& edgeTable();
 
 // (Q, ∂Q/∂a, ∂Q/∂b) of the bilinear interpolant, a and b in units of h (clamped to [0, 1]).
 template <class T>
