@@ -44,7 +44,8 @@ steps='BallsTest\.(GpuStepEquals|AccelerationsAndOrder|NothingIsLost|PistonPushe
 steps+='|FluidTest\.(OneSolverIteration|IterationsViscosity)|LifeTest\.(BinnedForces|FrictionAlone|PushBrush|VerletIsSecondOrder)'
 steps+='|RipplesTest\.(GpuMatchesCpu|TotalHeightIsConserved|CourantAboveTheLimit|MovingSpherePushes)'
 steps+='|SwarmTest\.(AnimatedPreset|BounceKeeps|Fp16StorageErrorAgainstFp32|TooLargeRequests|ResetScatters)'
+probes='Probes\.|ProbesTest\.(GaugesEqual|TheBodyProbe|AGaugeReads|PressuresEqual)|Validate\.(SceneProbes|ProbesTheScene|APressureProbe)'
 debugViews='BallsViewTest\.(GridCellsCompaction|GridCellsOverlay|ScreenNormalsFace)'
-selection=(-R "Grid|Determinism|DomainEdges|ParticleMemory|GpuLimits|BadInput|Checkpoint|InputLimits|BadDrop|Hostile|Fuzz|SoakJudge|SoakCli|Json|Obj|Png|ParamJson|SceneFile|LifeRules|$steps|SwarmStages|Export|Video|Surface|Resolution|FramePacer|$debugViews|KeyBindings|Indicators")
+selection=(-R "Grid|Determinism|DomainEdges|ParticleMemory|GpuLimits|BadInput|Checkpoint|InputLimits|BadDrop|Hostile|Fuzz|SoakJudge|SoakCli|Json|Obj|Png|ParamJson|SceneFile|LifeRules|$steps|SwarmStages|Export|Video|Surface|Resolution|FramePacer|$probes|$debugViews|KeyBindings|Indicators")
 [ $# -gt 0 ] && selection=("$@")
 ctest --output-on-failure -j "$(nproc)" -E '^(Layers|Build)\.' -LE soak "${selection[@]}"
