@@ -121,10 +121,10 @@ int validate(const std::string& sceneName, const std::string& probeText, int eve
   const glm::vec3 hi = column ? glm::min(params.fillMax, params.domainMax) : params.domainMax;
   const double a = hi.x - lo.x, h0 = hi.z - lo.z;
 
-  if (std::find(probes.begin(), probes.end(), "probes") != probes.end() && params.probes.empty())
+  auto has = [&](const char* p) { return std::find(probes.begin(), probes.end(), p) != probes.end(); };
+  if (has("probes") && params.probes.empty())
     throw Error("--probe probes: the scene '" + scene.name + "' lists no probes (params.probes)");
-  if (std::find(probes.begin(), probes.end(), "probes") != probes.end())
-    model.probes();  // what it cannot measure: before any output
+  if (has("probes")) model.probes();  // what it cannot measure: before any output
 
   std::ofstream file;
   if (!csvPath.empty()) {
@@ -132,7 +132,6 @@ int validate(const std::string& sceneName, const std::string& probeText, int eve
     if (!file) throw Error("cannot write '" + io::shownPath(csvPath) + "'");
   }
   std::ostream& out = csvPath.empty() ? std::cout : file;
-  auto has = [&](const char* p) { return std::find(probes.begin(), probes.end(), p) != probes.end(); };
   out << "time_s,count,nan";
   if (has("energy")) out << ",kinetic,potential,total";
   if (has("overlap")) out << ",max_overlap_r,mean_overlap_r";
