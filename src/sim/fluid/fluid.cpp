@@ -49,7 +49,8 @@ Fluid::Fluid(gl::ShaderLibrary& shaders, const Params& params)
       m_shaders(shaders),
       m_params(params),
       m_obstacles(shaders),
-      m_probe(shaders) {
+      m_probe(shaders),
+      m_loads(shaders) {
   // Obstacle particles weigh in the density sum with their rest volumes (rest_lattice.h).
   m_obstacles.setVolumes([this](const water::ObstacleBody& b) {
     return boundaryVolumes(b.particles, b.built.shell, m_params.h(), m_solidVolume);
@@ -116,6 +117,7 @@ void Fluid::reset() {
   m_time = 0;
   m_steps = 0;
   m_densitiesValid = false;
+  m_loadsOn = false;
   grid::GridParams gp{
       .domainMin = w.domainMin, .domainMax = w.domainMax, .cellSize = cellSize(), .stable = w.deterministic};
   m_grid = std::make_unique<grid::UniformGrid>(m_shaders, gp, m_capacity);

@@ -23,6 +23,7 @@
 #include "gl/gpu_profiler.h"
 #include "gl/shader_library.h"
 #include "grid/grid.h"
+#include "sim/fluid/boundary_loads.h"
 #include "sim/fluid/density_probe.h"
 #include "sim/fluid/fluid_params.h"
 #include "sim/fluid/rest_lattice.h"
@@ -75,8 +76,10 @@ class Fluid final : public sim::Model, public water::ParticleWater {
   glm::vec3 wallMin() const override { return m_walls.min; }
   glm::vec3 wallMax() const override { return m_walls.max; }
   float domainRotation() const override;
-  // The solver's pressure of the last step at each point (fluid_pressure.cpp); NaN before the first step.
+  // The solver's pressure of the last step at each point (fluid_probes.cpp); NaN before the first step.
   std::vector<double> pressures(const std::vector<glm::vec3>& points) override;
+  // The loads of the last step (boundary_loads.h), while the setup lists a force probe.
+  water::Loads loads() override;
 
   glm::vec3 gravity() const;                                            // current, turned with the domain
   double h() const { return m_params.h(); }                             // smoothing radius, m
@@ -119,6 +122,9 @@ class Fluid final : public sim::Model, public water::ParticleWater {
   void sortByCell(gl::GpuProfiler* profiler);
   void solve(gl::GpuProfiler* profiler);  // the iterations
   void updateVelocities(gl::GpuProfiler* profiler);
+  bool measuresLoads() const;  // a force probe is listed: predict and Δp add the boundaries' shares
+  // With m_loadsOn: binds the loads' partials and returns BOUNDARY_LOADS, for predict and Δp.
+  std::vector<gl::ShaderDefine> bindLoads() const;
   // What the kernels share (fluid_kernels.h); bindNeighbours() binds the grid's cell starts.
   SphUniforms sph() const;
   WallUniforms walls() const;
@@ -139,6 +145,8 @@ class Fluid final : public sim::Model, public water::ParticleWater {
   std::string m_obstacleError;
   water::Walls m_walls;
   DensityProbe m_probe;
+  BoundaryLoads m_loads;
+  bool m_loadsOn = false;  // the step measures the loads; after it, m_loads holds its sums
   double m_time = 0;
   std::uint64_t m_steps = 0;
   bool m_trackOrder = false;

@@ -1,5 +1,6 @@
-// The fluid's pressure probes (water::ParticleWater::pressures, sim/water/probes.h), from the
-// solver's pressure p_i = −ρ0 Λ_i / dt² of the last step (shaders/fluid/pressure.comp).
+// What the probes read of the fluid (sim/water/probes.h): the pressure, from the solver's
+// p_i = −ρ0 Λ_i / dt² of the last step (shaders/fluid/pressure.comp), and the loads on the walls
+// and obstacles (boundary_loads.h).
 #include <cmath>
 
 #include "fluid/bindings.glsl"
@@ -54,6 +55,16 @@ std::vector<double> Fluid::pressures(const std::vector<glm::vec3>& points) {
     }
   }
   return out;
+}
+
+water::Loads Fluid::loads() {
+  if (!m_loadsOn || !m_densitiesValid) {  // no step since reset, or none that measured
+    water::Loads none;
+    for (water::Load& w : none.walls) w.force = glm::dvec3(NAN);
+    none.obstacles.assign(m_obstacles.size(), {glm::dvec3(NAN), glm::dvec3(NAN)});
+    return none;
+  }
+  return m_loads.read(-mass() / (double(m_params.dt) * m_params.dt));
 }
 
 }  // namespace tidepool::fluid
