@@ -1,18 +1,20 @@
-// The loads on the walls and the obstacles (src/sim/fluid/loads.h), for the kernels that move
-// particles off a boundary (predict and delta, with BOUNDARY_LOADS). A boundary's share Δ of a
-// particle's correction is momentum it gave the water: over a step the water pushes back on it
+// The loads on the walls and the obstacles (src/sim/fluid/boundary_loads.h), for the kernels that
+// move particles off a boundary (predict and delta, with BOUNDARY_LOADS). A boundary's share Δ of
+// a particle's correction is momentum it gave the water: over a step the water pushes back on it
 // with F = −m ΣΔ / dt². Each kernel hands every invocation's shares to addLoads(); the work group
-// adds them in a fixed order and adds the sums to its own partials (zeroed by the step), so the
-// result does not depend on scheduling. Slots: the six walls (−x, +x, −y, +y, −z, +z: a wall's
-// Δ is along its normal), then one per obstacle, with the moment about its centre c_k (each pair's
-// correction lies on the line through the two particles, so (p − c_k) × Δ is its moment).
+// adds them in a fixed order and adds the sums to its own partials, so the result does not depend
+// on scheduling. The step's first kernel (predict, with LOADS_FIRST) zeroes its group's partials
+// before adding; the walls' shares count only with LOADS_WALLS (a force probe on a wall). Slots:
+// the six walls (−x, +x, −y, +y, −z, +z: a wall's Δ is along its normal), then one per obstacle,
+// with the moment about its centre c_k (each pair's correction lies on the line through the two
+// particles, so (p − c_k) × Δ is its moment).
 // The including kernel defines, before including this file,
 //   void obstacleShare(uint k, out vec3 delta, out vec3 moment);  // this invocation's, for k
 // and calls addLoads() from every invocation of the group (none may return before it).
 #ifndef FLUID_LOADS_GLSL
 #define FLUID_LOADS_GLSL
 
-#define LOADS_WALLS 6u
+#define LOAD_WALL_SLOTS 6u
 #define LOADS_TOUCHED_WALLS 31u  // the touched mask's bit for the walls (obstacles: bits 0-15)
 
 layout(std430, binding = FLUID_LOADS) buffer Loads { vec4 loads[]; };  // per group and slot: ΣΔ, Σ moment
@@ -35,7 +37,7 @@ void addGroup(uint slot, vec3 a, vec3 b, bool walls) {
   if (t == 0u) {
     const uint base = groupIndex() * uLoadSlots;
     if (walls) {
-      for (uint w = 0u; w < LOADS_WALLS; ++w) {
+      for (uint w = 0u; w < LOAD_WALL_SLOTS; ++w) {
         vec3 along = vec3(0.0);
         along[w / 2u] = sLoad[w][0];
         loads[2u * (base + w)] += vec4(along, 0.0);
@@ -51,9 +53,17 @@ void addGroup(uint slot, vec3 a, vec3 b, bool walls) {
 // `wall`: this invocation's correction by the walls, per axis; `side` per axis: −1 the wall at
 // the minimum, +1 at the maximum; `touched`: bit k for each obstacle k whose particles moved it.
 void addLoads(vec3 wall, vec3 side, uint touched) {
-  if (gl_LocalInvocationIndex == 0u) sTouched = 0u;
+  if (gl_LocalInvocationIndex == 0u) {
+    sTouched = 0u;
+#ifdef LOADS_FIRST
+    const uint base = 2u * groupIndex() * uLoadSlots;
+    for (uint s = 0u; s < 2u * uLoadSlots; ++s) loads[base + s] = vec4(0.0);
+#endif
+  }
   barrier();
+#ifdef LOADS_WALLS
   if (wall != vec3(0.0)) touched |= 1u << LOADS_TOUCHED_WALLS;
+#endif
   if (touched != 0u) atomicOr(sTouched, touched);  // a bit mask: the same whatever the order
   barrier();
   const uint all = sTouched;
@@ -71,7 +81,7 @@ void addLoads(vec3 wall, vec3 side, uint touched) {
     if ((all & (1u << k)) == 0u) continue;
     vec3 delta = vec3(0.0), moment = vec3(0.0);
     if ((touched & (1u << k)) != 0u) obstacleShare(k, delta, moment);
-    addGroup(LOADS_WALLS + k, delta, moment, false);
+    addGroup(LOAD_WALL_SLOTS + k, delta, moment, false);
   }
 }
 

@@ -1,7 +1,8 @@
 #version 430 core
-// The step's loads (fluid/loads.glsl): one work group per slot adds that slot's partials over all
-// groups of the step's kernels, each invocation a fixed stride of groups, then the invocations in
-// a fixed tree, so the sums are the same on every run. Writes ΣΔ and Σ moment (two vec4) per slot.
+// The step's loads (fluid/loads.glsl): work group (c, s) adds slot s's partials of the step's
+// groups c·LOADS_CHUNK .. (c + 1)·LOADS_CHUNK − 1, each invocation a fixed stride of them, then the
+// invocations in a fixed tree, so the sums are the same on every run. Writes ΣΔ and Σ moment (two
+// vec4) per chunk and slot; the CPU adds the chunks (src/sim/fluid/boundary_loads.cpp).
 #include "fluid/bindings.glsl"
 
 layout(local_size_x = FLUID_GROUP_SIZE) in;
@@ -11,13 +12,15 @@ layout(std430, binding = FLUID_OUT) writeonly buffer Sums { vec4 sums[]; };
 
 uniform uint uLoadSlots;
 uniform uint uGroups;  // work groups of the step's kernels
+#define LOADS_CHUNK (8u * uint(FLUID_GROUP_SIZE))
 
 shared vec3 sDelta[FLUID_GROUP_SIZE], sMoment[FLUID_GROUP_SIZE];
 
 void main() {
-  const uint slot = gl_WorkGroupID.x, t = gl_LocalInvocationIndex;
+  const uint chunk = gl_WorkGroupID.x, slot = gl_WorkGroupID.y, t = gl_LocalInvocationIndex;
+  const uint end = min(uGroups, (chunk + 1u) * LOADS_CHUNK);
   vec3 delta = vec3(0.0), moment = vec3(0.0);
-  for (uint g = t; g < uGroups; g += uint(FLUID_GROUP_SIZE)) {
+  for (uint g = chunk * LOADS_CHUNK + t; g < end; g += uint(FLUID_GROUP_SIZE)) {
     const uint at = 2u * (g * uLoadSlots + slot);
     delta += loads[at].xyz;
     moment += loads[at + 1u].xyz;
@@ -33,7 +36,8 @@ void main() {
     barrier();
   }
   if (t == 0u) {
-    sums[2u * slot] = vec4(sDelta[0], 0.0);
-    sums[2u * slot + 1u] = vec4(sMoment[0], 0.0);
+    const uint at = 2u * (chunk * uLoadSlots + slot);
+    sums[at] = vec4(sDelta[0], 0.0);
+    sums[at + 1u] = vec4(sMoment[0], 0.0);
   }
 }

@@ -117,7 +117,7 @@ void Fluid::reset() {
   m_time = 0;
   m_steps = 0;
   m_densitiesValid = false;
-  m_loadsOn = false;
+  m_loadsOn = m_wallLoadsOn = false;
   grid::GridParams gp{
       .domainMin = w.domainMin, .domainMax = w.domainMax, .cellSize = cellSize(), .stable = w.deterministic};
   m_grid = std::make_unique<grid::UniformGrid>(m_shaders, gp, m_capacity);
@@ -208,7 +208,8 @@ void Fluid::visitOwnState(sim::StateVisitor& v) {
 std::size_t Fluid::bytesPerParticle() const {
   if (m_count == 0) return 0;
   const std::size_t own = m_x.size() + m_v.size() + m_pred.size() + m_scratch[0].size() + m_scratch[1].size() +
-                          m_lambda.size() + m_lambdaSum.size() + m_permutation.size();
+                          m_lambda.size() + m_lambdaSum.size() + m_permutation.size() +
+                          (m_loadsOn ? m_loads.bytes() : 0);
   return (own + m_grid->memoryBytes()) / m_count;
 }
 

@@ -122,8 +122,8 @@ class Fluid final : public sim::Model, public water::ParticleWater {
   void sortByCell(gl::GpuProfiler* profiler);
   void solve(gl::GpuProfiler* profiler);  // the iterations
   void updateVelocities(gl::GpuProfiler* profiler);
-  bool measuresLoads() const;  // a force probe is listed: predict and Δp add the boundaries' shares
-  // With m_loadsOn: binds the loads' partials and returns BOUNDARY_LOADS, for predict and Δp.
+  // With m_loadsOn: binds the loads' partials and returns BOUNDARY_LOADS (and LOADS_WALLS with
+  // m_wallLoadsOn), for predict and Δp.
   std::vector<gl::ShaderDefine> bindLoads() const;
   // What the kernels share (fluid_kernels.h); bindNeighbours() binds the grid's cell starts.
   SphUniforms sph() const;
@@ -146,7 +146,9 @@ class Fluid final : public sim::Model, public water::ParticleWater {
   water::Walls m_walls;
   DensityProbe m_probe;
   BoundaryLoads m_loads;
-  bool m_loadsOn = false;  // the step measures the loads; after it, m_loads holds its sums
+  // A force probe is listed: the step measures the loads, the walls' only for a probe on a wall
+  // (theirs cost the most: most work groups touch a wall); after it, m_loads holds its sums.
+  bool m_loadsOn = false, m_wallLoadsOn = false;
   double m_time = 0;
   std::uint64_t m_steps = 0;
   bool m_trackOrder = false;

@@ -33,7 +33,12 @@ void Fluid::stepOnce(gl::GpuProfiler* profiler) {
   // Placed where they are at the step's end, when the collisions see them (timed as "balls.obstacles").
   m_obstacles.place(m_params.obstacles, m_time + m_params.dt, m_params.domainMin, m_params.domainMax, profiler);
   m_walls = water::wallsAt(m_params, m_time + m_params.dt);  // the collisions see the walls at the step's end
-  m_loadsOn = measuresLoads();
+  m_wallLoadsOn = std::ranges::any_of(m_params.probes, [](const water::ProbeParams& p) {
+    return p.kind == water::ProbeKind::Force && p.wall != water::ProbeWall::None;
+  });
+  m_loadsOn = m_wallLoadsOn || std::ranges::any_of(m_params.probes, [](const water::ProbeParams& p) {
+                return p.kind == water::ProbeKind::Force && p.wall == water::ProbeWall::None;
+              });
   if (m_loadsOn) m_loads.begin(m_count, m_obstacles.size());
   if (m_count > 0) {
     predict(profiler);
@@ -63,21 +68,19 @@ NeighbourUniforms Fluid::bindNeighbours() const {
   return {kGridReach, m_grid->uniforms()};
 }
 
-bool Fluid::measuresLoads() const {
-  return std::ranges::any_of(m_params.probes,
-                             [](const water::ProbeParams& p) { return p.kind == water::ProbeKind::Force; });
-}
-
 std::vector<gl::ShaderDefine> Fluid::bindLoads() const {
   if (!m_loadsOn) return {};
   m_loads.bind();
+  if (m_wallLoadsOn) return {{"BOUNDARY_LOADS", ""}, {"LOADS_WALLS", ""}};
   return {{"BOUNDARY_LOADS", ""}};
 }
 
 void Fluid::predict(gl::GpuProfiler* profiler) {
   auto scope = timed(profiler, "fluid.predict");
+  std::vector<gl::ShaderDefine> defines = bindLoads();
+  if (m_loadsOn) defines.push_back({"LOADS_FIRST", ""});  // zeroes the partials
   const gl::Kernel<PredictUniforms> predict(m_shaders, "fluid/predict.comp",
-                                            {FLUID_POS, FLUID_VEL_IN, FLUID_OUT, FLUID_LOADS}, bindLoads());
+                                            {FLUID_POS, FLUID_VEL_IN, FLUID_OUT, FLUID_LOADS}, defines);
   m_x.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_POS);
   m_v.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_VEL_IN);
   m_pred.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_OUT);

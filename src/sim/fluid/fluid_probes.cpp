@@ -64,7 +64,10 @@ water::Loads Fluid::loads() {
     none.obstacles.assign(m_obstacles.size(), {glm::dvec3(NAN), glm::dvec3(NAN)});
     return none;
   }
-  return m_loads.read(-mass() / (double(m_params.dt) * m_params.dt));
+  water::Loads out = m_loads.read(-mass() / (double(m_params.dt) * m_params.dt));
+  if (!m_wallLoadsOn)
+    for (water::Load& w : out.walls) w.force = glm::dvec3(NAN);  // not measured
+  return out;
 }
 
 }  // namespace tidepool::fluid

@@ -61,7 +61,8 @@ class ParticleWater {
   // the first step). Throws Error where the model has no pressure field.
   virtual std::vector<double> pressures(const std::vector<glm::vec3>& points) = 0;
   // The loads of the last step on the walls and the obstacles, measured while the setup lists a
-  // force probe (NaN before the first such step). Throws Error where the model has none.
+  // force probe (the walls' while one is on a wall; NaN where not measured or before the first
+  // such step). Throws Error where the model has none.
   virtual Loads loads() = 0;
 };
 
