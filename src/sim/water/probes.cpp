@@ -102,7 +102,7 @@ std::vector<std::string> probeColumns(const std::vector<ProbeParams>& probes) {
         if (probes[i].wall == ProbeWall::None)
           add(n, {"fx_n", "fy_n", "fz_n", "tx_n_m", "ty_n_m", "tz_n_m"});
         else
-          add(n, {"fx_n", "fy_n", "fz_n"});
+          add(n, {"normal_n"});
         break;
       case ProbeKind::Body:
         add(n, {"x_m", "y_m", "z_m", "qw", "qx", "qy", "qz", "vx_m_s", "vy_m_s", "vz_m_s", "wx_rad_s", "wy_rad_s",
@@ -187,11 +187,14 @@ std::vector<double> Probes::measure(ParticleWater& water) {
         break;
       case ProbeKind::Pressure: out.push_back(pressures.at(pressure++)); break;
       case ProbeKind::Force: {
-        const bool wall = p.wall != ProbeWall::None;
-        const Load& l = wall ? loads.walls.at(std::size_t(p.wall) - 1) : loads.obstacles.at(std::size_t(p.obstacle));
+        if (p.wall != ProbeWall::None) {  // along the wall's outward normal: the water pushes it out
+          const std::size_t w = std::size_t(p.wall) - 1;
+          out.push_back((w % 2 == 0 ? -1.0 : 1.0) * loads.walls.at(w).force[int(w / 2)]);
+          break;
+        }
+        const Load& l = loads.obstacles.at(std::size_t(p.obstacle));
         for (int k = 0; k < 3; ++k) out.push_back(l.force[k]);
-        if (!wall)
-          for (int k = 0; k < 3; ++k) out.push_back(l.torque[k]);
+        for (int k = 0; k < 3; ++k) out.push_back(l.torque[k]);
         break;
       }
       case ProbeKind::Body: {

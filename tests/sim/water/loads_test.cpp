@@ -59,9 +59,8 @@ TEST(Loads, ForceProbesHaveTheirColumnsAndNameAMissingObstacle) {
   using water::ProbeKind, water::ProbeWall;
   const std::vector<water::ProbeParams> probes = {{.kind = ProbeKind::Force, .obstacle = 0},
                                                   {.kind = ProbeKind::Force, .wall = ProbeWall::MaxX}};
-  const std::vector<std::string> want = {"force0_fx_n",   "force0_fy_n",   "force0_fz_n",
-                                         "force0_tx_n_m", "force0_ty_n_m", "force0_tz_n_m",
-                                         "force1_fx_n",   "force1_fy_n",   "force1_fz_n"};
+  const std::vector<std::string> want = {"force0_fx_n",   "force0_fy_n",   "force0_fz_n",    "force0_tx_n_m",
+                                         "force0_ty_n_m", "force0_tz_n_m", "force1_normal_n"};
   EXPECT_EQ(water::probeColumns(probes), want);
   water::Setup s;
   s.probes = probes;
@@ -73,6 +72,35 @@ TEST(Loads, ForceProbesHaveTheirColumnsAndNameAMissingObstacle) {
   }
   s.probes = {probes[1]};
   EXPECT_NO_THROW(water::checkProbes(s)) << "a wall needs no obstacle";
+}
+
+// Probes::measure reads the loads of the same step: an obstacle's force and torque as they are,
+// a wall's force along its outward normal (the water pushes every wall out).
+TEST_F(LoadsTest, ForceProbesReadTheStepsLoadsAndWallsTheirOutwardPush) {
+  fluid::Params p = tank({0.2f, 0.1f, 0.3f}, 0.1f, 0.02f);
+  water::ObstacleParams ball;
+  ball.centre = glm::vec3(0.1f, 0.05f, 0.06f);
+  ball.size = glm::vec3(0.03f);
+  p.obstacles = {ball};
+  using water::ProbeKind, water::ProbeWall;
+  p.probes = {{.kind = ProbeKind::Force, .obstacle = 0}};
+  for (ProbeWall w : {ProbeWall::MinX, ProbeWall::MaxX, ProbeWall::MinY, ProbeWall::MaxY, ProbeWall::MinZ})
+    p.probes.push_back({.kind = ProbeKind::Force, .wall = w});
+  fluid::Fluid fluid(shaders(), p);
+  for (int i = 0; i < 20; ++i) fluid.stepOnce();
+  const std::vector<double> got = water::Probes(shaders()).measure(fluid);
+  const water::Loads l = fluid.loads();
+  ASSERT_EQ(got.size(), 11u);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_EQ(got[std::size_t(k)], l.obstacles.at(0).force[k]);
+    EXPECT_EQ(got[std::size_t(3 + k)], l.obstacles.at(0).torque[k]);
+  }
+  const double outward[5] = {-l.walls[0].force.x, l.walls[1].force.x, -l.walls[2].force.y, l.walls[3].force.y,
+                             -l.walls[4].force.z};
+  for (int w = 0; w < 5; ++w) {
+    EXPECT_EQ(got[std::size_t(6 + w)], outward[w]) << "wall " << w;
+    EXPECT_GT(got[std::size_t(6 + w)], 0.0) << "wall " << w << ": the water pushes it out";
+  }
 }
 
 TEST_F(LoadsTest, TheBallsRefuseAForceProbeInOneLine) {
