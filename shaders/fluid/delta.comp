@@ -61,7 +61,7 @@ void onBoundary(vec3 r, float r2, float volume, uint k) {
 
 uniform uint uCount;
 
-vec3 gP, gQ;  // the particle before the correction, and after it before the obstacles' push
+vec3 gP = vec3(0.0), gQ;  // the particle before the correction, and after it before the obstacles' push
 
 #ifdef BOUNDARY_LOADS
 #include "balls/bindings.glsl"
@@ -88,14 +88,9 @@ void obstacleShare(uint k, out vec3 delta, out vec3 moment) {
 #include "fluid/loads.glsl"
 #endif
 
-void main() {
-  const uint i = globalIndex();
-#ifdef BOUNDARY_LOADS
-  vec3 wallShare = vec3(0.0), side = vec3(0.0);
-  if (i < uCount) {
-#else
-  if (i >= uCount) return;
-#endif
+// Particle i's corrected position; `wallShare`: the walls' part of its correction (λ_i times
+// their gradient, then the clamp).
+vec4 corrected(uint i, out vec3 wallShare) {
   const vec4 pi = pred[i];
   gP = pi.xyz;
   gLambda = lambda[i].x;
@@ -118,11 +113,15 @@ void main() {
   q += gPushed;
 #endif
   const vec3 inside = clampToWalls(q);
-  predOut[i] = vec4(inside, pi.w);
-#ifdef BOUNDARY_LOADS
   wallShare = gLambda * wallGradient + (inside - q);
-  side = wallSides(gP);
-  }
-  addLoads(wallShare, side, gTouched);
+  return vec4(inside, pi.w);
+}
+
+void main() {
+  const uint i = globalIndex();
+  vec3 wallShare = vec3(0.0);
+  if (i < uCount) predOut[i] = corrected(i, wallShare);
+#ifdef BOUNDARY_LOADS
+  addLoads(wallShare, wallSides(gP), gTouched);  // by every invocation: the group adds them
 #endif
 }

@@ -26,20 +26,16 @@ void obstacleShare(uint k, out vec3 delta, out vec3 moment) { delta = moment = v
 
 void main() {
   const uint i = globalIndex();
-#ifdef BOUNDARY_LOADS
-  vec3 wallShare = vec3(0.0), side = vec3(0.0);
+  vec3 wallShare = vec3(0.0), p = vec3(0.0);
   if (i < uCount) {
-#else
-  if (i >= uCount) return;
-#endif
-  const vec4 v = vel[i];
-  const vec3 u = (v.xyz + uDt * uGravity) * uDecay;
-  const vec3 p = pos[i].xyz + uDt * u, inside = clampToWalls(p);
-  pred[i] = vec4(inside, v.w);
-#ifdef BOUNDARY_LOADS
-  wallShare = inside - p;
-  side = wallSides(p);
+    const vec4 v = vel[i];
+    const vec3 u = (v.xyz + uDt * uGravity) * uDecay;
+    p = pos[i].xyz + uDt * u;
+    const vec3 inside = clampToWalls(p);
+    pred[i] = vec4(inside, v.w);
+    wallShare = inside - p;
   }
-  addLoads(wallShare, side, 0u);
+#ifdef BOUNDARY_LOADS
+  addLoads(wallShare, wallSides(p), 0u);  // by every invocation: the group adds them
 #endif
 }
