@@ -40,8 +40,8 @@ struct StageIndicators {
   std::optional<glm::mat4> view;  // 3D views: the camera's view matrix (the axes gizmo)
 };
 
-// One value per column (water::probeColumns); `error` says why there are none (a probe the
-// running model cannot measure), the values then NaN.
+// One value per column (water::probeColumns); `error` says why some or all of them are NaN (a
+// probe the running model cannot measure).
 struct ProbeReadings {
   std::vector<std::string> columns;
   std::vector<double> values;

@@ -106,8 +106,8 @@ class WaterStage final : public Stage {
     ProbeReadings r;
     r.columns = water::probeColumns(listed);
     try {
-      r.values = m_probes.measure(*run().water());
-    } catch (const Error& e) {  // a probe this model cannot measure: say so, plot nothing
+      r.values = m_probes.measure(*run().water(), &r.error);  // what this model cannot measure: NaN, and why
+    } catch (const Error& e) {  // a probe the setup cannot measure (edited to a missing obstacle)
       r.error = e.what();
       r.values.assign(r.columns.size(), NAN);
     }

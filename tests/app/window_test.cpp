@@ -80,7 +80,7 @@ TEST(Window, NoDisplayGivesAClearError) {
 
 // A water scene's probes are plotted live under the other plots: the fluid tank's gauges,
 // pressures and forces; a probe the model cannot measure (a force on the balls) is a line in the
-// panel, and the window keeps running.
+// panel, the others are still plotted, and the window keeps running.
 TEST(Window, ProbesArePlottedAndOneTheModelCannotMeasureIsALineInThePanel) {
   test::TempDir dir;
   dir.write("balls.json", R"({"model": "balls", "params": {"particles": {"radius": 0.01,

@@ -155,7 +155,7 @@ std::vector<double> Probes::gaugeSums(const ParticleWater& water, const std::vec
   return sums;
 }
 
-std::vector<double> Probes::measure(ParticleWater& water) {
+std::vector<double> Probes::measure(ParticleWater& water, std::string* unmeasured) {
   const Setup& s = water.water();
   checkProbes(s);
   const float r = water.radius();
@@ -172,9 +172,30 @@ std::vector<double> Probes::measure(ParticleWater& water) {
       points.push_back(p.at);
     }
   const std::vector<double> sums = gauges.empty() ? std::vector<double>{} : gaugeSums(water, gauges);
-  const std::vector<double> pressures = points.empty() ? std::vector<double>{} : water.pressures(points);
+  // What the model cannot measure throws, or with `unmeasured` reads NaN and says why there.
+  auto measured = [&](auto read, auto none) {
+    if (!unmeasured) return read();
+    try {
+      return read();
+    } catch (const Error& e) {
+      *unmeasured = e.what();
+      return none();
+    }
+  };
+  const std::vector<double> pressures =
+      points.empty()
+          ? std::vector<double>{}
+          : measured([&] { return water.pressures(points); }, [&] { return std::vector<double>(points.size(), NAN); });
   const bool forces = std::ranges::any_of(s.probes, [](const ProbeParams& p) { return p.kind == ProbeKind::Force; });
-  const Loads loads = forces ? water.loads() : Loads{};
+  const Loads loads = !forces
+                          ? Loads{}
+                          : measured([&] { return water.loads(); },
+                                     [&] {
+                                       Loads none;
+                                       for (Load& w : none.walls) w.force = glm::dvec3(NAN);
+                                       none.obstacles.assign(s.obstacles.size(), {glm::dvec3(NAN), glm::dvec3(NAN)});
+                                       return none;
+                                     });
   const double volume = volumePerParticle(r, water.packing());
 
   std::vector<double> out;

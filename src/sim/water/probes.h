@@ -60,8 +60,9 @@ class Probes {
  public:
   explicit Probes(gl::ShaderLibrary& shaders) : m_shaders(shaders) {}
   // One value per column of probeColumns(water.water().probes). Throws Error for probes the
-  // water cannot measure (checkProbes).
-  std::vector<double> measure(ParticleWater& water);
+  // setup cannot measure (checkProbes), and for those the model cannot (a pressure or a force on
+  // the balls) unless `unmeasured` is given: then those read NaN and it says why.
+  std::vector<double> measure(ParticleWater& water, std::string* unmeasured = nullptr);
 
  private:
   std::vector<double> gaugeSums(const ParticleWater& water, const std::vector<glm::vec4>& gauges);

@@ -103,14 +103,23 @@ TEST_F(LoadsTest, ForceProbesReadTheStepsLoadsAndWallsTheirOutwardPush) {
   }
 }
 
-TEST_F(LoadsTest, TheBallsRefuseAForceProbeInOneLine) {
+// On the balls a force probe is an Error; asked to measure what it can (the window's plots), the
+// gauge beside it still reads and the force reads NaN, with the reason.
+TEST_F(LoadsTest, TheBallsRefuseAForceProbeInOneLineOrMeasureTheRest) {
   balls::Params p;
   p.domainMax = glm::vec3(0.2f);
-  p.fill = water::Fill::None;
-  p.probes = {{.kind = water::ProbeKind::Force, .wall = water::ProbeWall::MinZ}};
+  p.fill = water::Fill::Slab;
+  p.slabHeight = 0.05f;
+  p.probes = {{.at = {0.1f, 0.1f, 0.0f}}, {.kind = water::ProbeKind::Force, .wall = water::ProbeWall::MinZ}};
   balls::Balls balls(shaders(), p);
   water::Probes probes(shaders());
   EXPECT_THROW(probes.measure(balls), Error);
+  std::string why;
+  const std::vector<double> got = probes.measure(balls, &why);
+  ASSERT_EQ(got.size(), 2u);
+  EXPECT_GT(got[0], 0.03) << "the gauge reads the slab";
+  EXPECT_TRUE(std::isnan(got[1]));
+  EXPECT_EQ(why.rfind("balls: force probes are measured on the fluid only", 0), 0u) << why;
 }
 
 // The fluid-tank scene, 0.4 × 0.2 m filled 0.2 m deep on the cubic lattice: the floor's mean force
