@@ -41,10 +41,10 @@ cd build-asan
 # and BallsView's debug views (tests/render/balls_debug_views_test.cpp), by name: their suites hold
 # the model's slower tests too.
 steps='BallsTest\.(GpuStepEquals|AccelerationsAndOrder|NothingIsLost|PistonPushes|SpinningObstacle|TooManyBalls|TapEmits|ObstacleEdited|CountingInTheCollide)'
-steps+='|FluidTest\.(OneSolverIteration|IterationsViscosity)|LifeTest\.(BinnedForces|FrictionAlone|PushBrush|VerletIsSecondOrder)'
+steps+='|FluidTest\.(OneSolverIteration|IterationsViscosity|LoadsOnTheWalls)|LifeTest\.(BinnedForces|FrictionAlone|PushBrush|VerletIsSecondOrder)'
 steps+='|RipplesTest\.(GpuMatchesCpu|TotalHeightIsConserved|CourantAboveTheLimit|MovingSpherePushes)'
 steps+='|SwarmTest\.(AnimatedPreset|BounceKeeps|Fp16StorageErrorAgainstFp32|TooLargeRequests|ResetScatters)'
-probes='Probes\.|ProbesTest\.(GaugesEqual|TheBodyProbe|AGaugeReads|PressuresEqual)|Validate\.(SceneProbes|ProbesTheScene|APressureProbe)'
+probes='Probes\.|Loads\.|LoadsTest\.(TheBalls|ForceProbesRead)|BoundaryLoadsTest\.|ProbesTest\.(GaugesEqual|TheBodyProbe|AGaugeReads|PressuresEqual)|Validate\.(SceneProbes|ProbesTheScene|APressureOrForceProbe)'
 debugViews='BallsViewTest\.(GridCellsCompaction|GridCellsOverlay|ScreenNormalsFace)'
 selection=(-R "Grid|Determinism|DomainEdges|ParticleMemory|GpuLimits|BadInput|Checkpoint|InputLimits|BadDrop|Hostile|Fuzz|SoakJudge|SoakCli|Json|Obj|Png|ParamJson|SceneFile|LifeRules|$steps|SwarmStages|Export|Video|Surface|Resolution|FramePacer|$probes|$debugViews|KeyBindings|Indicators")
 [ $# -gt 0 ] && selection=("$@")

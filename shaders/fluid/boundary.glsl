@@ -3,7 +3,8 @@
 // through the obstacles' own grid (common/obstacle_grid.glsl; cells of one spacing, so
 // uObstacleReach cells each way), each with its rest volume (OBSTACLE_VOLUMES) or a fluid
 // particle's. The including kernel defines, before including this file,
-//   void onBoundary(vec3 r, float r2, float volume);  // r = p − p_b, r2 = |r|² < reach²
+//   void onBoundary(vec3 r, float r2, float volume, uint k);  // r = p − p_b, r2 = |r|² < reach²,
+//                                                             // k = p_b's obstacle
 #ifndef FLUID_BOUNDARY_GLSL
 #define FLUID_BOUNDARY_GLSL
 
@@ -21,9 +22,9 @@ void onObstacleParticle(uint j, vec4 q) {
   const float r2 = dot(r, r);
   if (r2 >= gBoundaryReach2) return;
 #ifdef OBSTACLE_VOLUMES
-  onBoundary(r, r2, texelFetch(obstacleVolume, int(j)).x);
+  onBoundary(r, r2, texelFetch(obstacleVolume, int(j)).x, uint(q.w));
 #else
-  onBoundary(r, r2, uVolume);  // solid obstacles at the fluid's spacing: a fluid particle's volume
+  onBoundary(r, r2, uVolume, uint(q.w));  // solid obstacles at the fluid's spacing: a fluid particle's volume
 #endif
 }
 #include "common/obstacle_grid.glsl"

@@ -3,7 +3,8 @@
 // correction Δp_i = Σ_j V0 (λ_i + λ_j + s_corr) ∇W(p_i − p_j) + λ_i (Σ_b V_b ∇W(p_i − p_b) +
 // the walls' gradient), s_corr = −k (W(r)/W(Δq))^n, then the collisions: no closer than
 // uContact to an obstacle particle (no layer of them can be passed) and inside
-// the walls. Jacobi: reads p and λ of all, writes the corrected p to the other buffer.
+// the walls. Jacobi: reads p and λ of all, writes the corrected p to the other buffer. With
+// BOUNDARY_LOADS, the walls' and each obstacle's shares of the correction go to fluid/loads.glsl.
 #include "fluid/bindings.glsl"
 
 layout(local_size_x = FLUID_GROUP_SIZE) in;
@@ -26,6 +27,10 @@ vec3 gBoundaryGradient;
 bool gPushing = false;  // the boundary loop's second use: pushing gPushed out to uContact
 vec3 gPushed = vec3(0.0);
 uniform float uContact;  // m: the closest a fluid particle comes to an obstacle particle
+#ifdef BOUNDARY_LOADS
+uint gTouched = 0u;  // bit k: a particle of obstacle k was within reach
+int gOnly = -1;      // ≥ 0: only obstacle gOnly's particles count (its share, obstacleShare())
+#endif
 void onFluid(uint j, vec3 r, float r2) {
   const float len = sqrt(r2);
   if (len <= 0.0) return;
@@ -37,9 +42,13 @@ void onFluid(uint j, vec3 r, float r2) {
 #endif
   gDelta += (gLambda + lambda[j].x + scorr) * uVolume * spikyGrad(r, len);
 }
-void onBoundary(vec3 r, float r2, float volume) {
+void onBoundary(vec3 r, float r2, float volume, uint k) {
   const float len = sqrt(r2);
   if (len <= 0.0) return;
+#ifdef BOUNDARY_LOADS
+  if (gOnly >= 0 && k != uint(gOnly)) return;
+  gTouched |= 1u << k;
+#endif
   if (gPushing)
     gPushed += (uContact - len) / len * r;  // r from the corrected position: out to uContact
   else
@@ -52,22 +61,50 @@ void onBoundary(vec3 r, float r2, float volume) {
 
 uniform uint uCount;
 
+vec3 gP = vec3(0.0), gQ;  // the particle before the correction, and after it before the obstacles' push
 
-void main() {
-  const uint i = globalIndex();
-  if (i >= uCount) return;
+#ifdef BOUNDARY_LOADS
+#include "balls/bindings.glsl"
+#include "balls/obstacle_poses.glsl"
+// Obstacle k's share of this particle's correction (λ_i Σ_b V_b ∇W at p, then the push at q) and
+// its moment about c_k.
+void obstacleShare(uint k, out vec3 delta, out vec3 moment) {
+#ifdef HAS_OBSTACLE
+  gOnly = int(k);
+  gPushing = false;
+  gBoundaryGradient = vec3(0.0);
+  forEachBoundary(gP, uH);
+  const vec3 gradient = gLambda * gBoundaryGradient;
+  gPushing = true;
+  gPushed = vec3(0.0);
+  forEachBoundary(gQ, uContact);
+  const vec3 c = poseCentre[k].xyz;
+  delta = gradient + gPushed;
+  moment = cross(gP - c, gradient) + cross(gQ - c, gPushed);
+#else
+  delta = moment = vec3(0.0);
+#endif
+}
+#include "fluid/loads.glsl"
+#endif
+
+// Particle i's corrected position; `wallShare`: the walls' part of its correction (λ_i times
+// their gradient, then the clamp).
+vec4 corrected(uint i, out vec3 wallShare) {
   const vec4 pi = pred[i];
-  const vec3 p = pi.xyz;
+  gP = pi.xyz;
   gLambda = lambda[i].x;
   gDelta = vec3(0.0);
   gBoundaryGradient = vec3(0.0);
-  forEachFluid(i, p);
+  forEachFluid(i, gP);
 #ifdef HAS_OBSTACLE
-  forEachBoundary(p, uH);
+  forEachBoundary(gP, uH);
 #endif
   float unused = 0.0;
-  wallsDensity(p, unused, gBoundaryGradient);
-  vec3 q = p + gDelta + gLambda * gBoundaryGradient;
+  vec3 wallGradient = vec3(0.0);
+  wallsDensity(gP, unused, wallGradient);
+  gQ = gP + gDelta + gLambda * (gBoundaryGradient + wallGradient);
+  vec3 q = gQ;
 #ifdef HAS_OBSTACLE
   // Each obstacle particle within uContact of the corrected position pushes it out to uContact.
   gPushing = true;
@@ -75,5 +112,16 @@ void main() {
   forEachBoundary(q, uContact);
   q += gPushed;
 #endif
-  predOut[i] = vec4(clampToWalls(q), pi.w);
+  const vec3 inside = clampToWalls(q);
+  wallShare = gLambda * wallGradient + (inside - q);
+  return vec4(inside, pi.w);
+}
+
+void main() {
+  const uint i = globalIndex();
+  vec3 wallShare = vec3(0.0);
+  if (i < uCount) predOut[i] = corrected(i, wallShare);
+#ifdef BOUNDARY_LOADS
+  addLoads(wallShare, wallSides(gP), gTouched);  // by every invocation: the group adds them
+#endif
 }

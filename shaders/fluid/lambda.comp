@@ -3,7 +3,7 @@
 // density ρ_i/ρ0 = Σ_j V0 W(p_i − p_j) + Σ_b V_b W(p_i − p_b) + Σ_walls Φ(δ) (boundaries after
 // Akinci et al. 2012; walls in closed form), the constraint C_i = ρ_i/ρ0 − 1 (only compression:
 // a free surface is not pulled in), and λ_i = −C_i / (Σ_k |∇_k C_i|² + ε). Λ_i, the sum of λ_i
-// over the step's iterations, is the pressure's: p_i = −ρ0 Λ_i / dt² (fluid/loads.comp).
+// over the step's iterations, is the pressure's: p_i = −ρ0 Λ_i / dt² (fluid/pressure.comp).
 #include "fluid/bindings.glsl"
 
 layout(local_size_x = FLUID_GROUP_SIZE) in;
@@ -27,7 +27,7 @@ void onFluid(uint j, vec3 r, float r2) {
   gGradient += g;
   gGradients += dot(g, g);
 }
-void onBoundary(vec3 r, float r2, float volume) {
+void onBoundary(vec3 r, float r2, float volume, uint k) {
   gDensity += volume * poly6(r2);
   const float len = sqrt(r2);
   if (len > 0.0) gGradient += volume * spikyGrad(r, len);

@@ -1,7 +1,8 @@
 #version 430 core
 // PBF step 1 (Macklin & Müller 2013, algorithm 1, lines 1-4): v += dt·g (with damping), the
 // predicted position p = x + dt·v, kept inside the walls (half a spacing off them). Particle order; w carries the foam to
-// the velocity pass (the velocities are recomputed from the positions there).
+// the velocity pass (the velocities are recomputed from the positions there). With BOUNDARY_LOADS
+// the walls' share (the clamp) goes to fluid/loads.glsl.
 #include "fluid/bindings.glsl"
 
 layout(local_size_x = FLUID_GROUP_SIZE) in;
@@ -18,10 +19,23 @@ uniform float uDecay;   // exp(−damping·dt)
 #include "fluid/kernels.glsl"
 #include "fluid/walls.glsl"
 
+#ifdef BOUNDARY_LOADS
+void obstacleShare(uint k, out vec3 delta, out vec3 moment) { delta = moment = vec3(0.0); }
+#include "fluid/loads.glsl"
+#endif
+
 void main() {
   const uint i = globalIndex();
-  if (i >= uCount) return;
-  const vec4 v = vel[i];
-  const vec3 u = (v.xyz + uDt * uGravity) * uDecay;
-  pred[i] = vec4(clampToWalls(pos[i].xyz + uDt * u), v.w);
+  vec3 wallShare = vec3(0.0), p = vec3(0.0);
+  if (i < uCount) {
+    const vec4 v = vel[i];
+    const vec3 u = (v.xyz + uDt * uGravity) * uDecay;
+    p = pos[i].xyz + uDt * u;
+    const vec3 inside = clampToWalls(p);
+    pred[i] = vec4(inside, v.w);
+    wallShare = inside - p;
+  }
+#ifdef BOUNDARY_LOADS
+  addLoads(wallShare, wallSides(p), 0u);  // by every invocation: the group adds them
+#endif
 }

@@ -1,5 +1,5 @@
 #version 430 core
-// Pressure probes of the fluid (src/sim/fluid/fluid_pressure.cpp), up to FLUID_PRESSURE_BATCH
+// Pressure probes of the fluid (src/sim/fluid/fluid_probes.cpp), up to FLUID_PRESSURE_BATCH
 // points per dispatch, each reduced per work group into 2 floats: Σ V0 p_i W(a − x_i) and
 // Σ V0 W(a − x_i) over the particles (poly6, support h), which the CPU divides (Shepard). The
 // pressure of particle i is the solver's: p_i = −ρ0 Λ_i / dt², Λ_i the sum of its λ over the last

@@ -17,7 +17,7 @@ layout(std430, binding = FLUID_OUT) writeonly buffer Stats { float partials[]; }
 
 float gDensity;
 void onFluid(uint j, vec3 r, float r2) { gDensity += uVolume * poly6(r2); }
-void onBoundary(vec3 r, float r2, float volume) { gDensity += volume * poly6(r2); }
+void onBoundary(vec3 r, float r2, float volume, uint k) { gDensity += volume * poly6(r2); }
 
 #include "fluid/neighbours.glsl"
 #include "fluid/boundary.glsl"

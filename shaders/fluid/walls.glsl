@@ -48,4 +48,9 @@ uniform float uWallInset;  // d / 2, m
 
 vec3 clampToWalls(vec3 p) { return clamp(p, uWallMin + uWallInset, uWallMax - uWallInset); }
 
+// Per axis, the wall nearer p: −1 the one at the minimum, +1 the one at the maximum.
+vec3 wallSides(vec3 p) {
+  return mix(vec3(1.0), vec3(-1.0), lessThanEqual(p - uWallMin, uWallMax - p));
+}
+
 #endif

@@ -7,6 +7,7 @@
 
 #include "app/fit_gpu.h"
 #include "app/frame_writer.h"
+#include "app/probe_log.h"
 #include "base/log.h"
 #include "base/progress.h"
 #include "io/checkpoint_path.h"
@@ -97,6 +98,13 @@ int renderHeadless(const RenderJob& request) {
     checkExportable(scene.model, stage->exportSource(), *job.exportFormat);
   }
   if (job.exportFormat) exporter = std::make_unique<ParticleExporter>(job.outDir, *job.exportFormat, job.exportEvery);
+  std::unique_ptr<ProbeLog> probeLog;  // the scene's probes beside the exported frames
+  if (exporter) {
+    if (const ProbeReadings r = stage->probes(); !r.columns.empty()) {
+      if (!r.error.empty()) throw Error(r.error);  // a probe the model cannot measure: before any frame
+      probeLog = std::make_unique<ProbeLog>(job.outDir / "probes.csv");
+    }
+  }
   double surfaceMs = 0;  // building the meshes (GPU work and the wait for their sizes)
   RenderTarget target(width, height);
   gl::GpuProfiler profiler;
@@ -128,6 +136,7 @@ int renderHeadless(const RenderJob& request) {
         exporter->capture(int(frame), stage->simTime(), *stage->exportSource());
       }
       if (i == 0) exporter->writeObstacles(stage->exportObstacles());
+      if (probeLog && exporter->due(int(frame))) probeLog->write(frame, stage->simTime(), stage->probes());
       exporter->poll();
     }
     std::vector<std::uint8_t> pixels = video || pngFrames ? target.readRgba8() : std::vector<std::uint8_t>();

@@ -37,7 +37,14 @@ void timingTable(const gl::GpuProfiler& profiler) {
 
 }  // namespace
 
-void History::push(float cost, float value) {
+void History::push(float cost, float value, ProbeReadings readings) {
+  if (readings.columns != probes.columns)
+    probeRings.assign(readings.columns.size(), std::vector<float>(kHistory, 0.0f));
+  for (std::size_t k = 0; k < probeRings.size(); ++k) {
+    const double v = k < readings.values.size() ? readings.values[k] : NAN;
+    probeRings[k][std::size_t(next)] = std::isfinite(v) ? float(v) : 0.0f;
+  }
+  probes = std::move(readings);
   costMs[std::size_t(next)] = cost;
   metric[std::size_t(next)] = value;
   next = (next + 1) % kHistory;
@@ -128,6 +135,19 @@ void wrapped(const ImVec4& colour, const std::string& text) {
   ImGui::PopTextWrapPos();
 }
 
+// The scene's probes, one plot per column under its name (sim/water/probes.h), or why none.
+void probePlots(const History& h) {
+  if (!h.probes.error.empty()) wrapped(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "probes: " + h.probes.error);
+  for (std::size_t k = 0; k < h.probeRings.size(); ++k) {
+    ImGui::TextUnformatted(h.probes.columns[k].c_str());
+    const std::string overlay = plotOverlay(k < h.probes.values.size() ? h.probes.values[k] : NAN);
+    ImGui::PushID(int(k));
+    ImGui::PlotLines("##probe", h.probeRings[k].data(), History::kHistory, h.next, overlay.c_str(), FLT_MAX, FLT_MAX,
+                     ImVec2(ImGui::GetContentRegionAvail().x, 30));
+    ImGui::PopID();
+  }
+}
+
 // The model's status, each "; " clause on its own lines, broken only after ", " so a wrap never
 // splits a number ("... h = 0.\n03564 m" is what ImGui's wrap at '.' would make of it).
 void statusLines(const std::string& status) {
@@ -206,7 +226,10 @@ bool drawMainPanel(const Scene& scene, Stage& stage, const gl::GpuProfiler& prof
     if (!ui.message.empty())
       wrapped(ui.messageIsError ? ImVec4(1.0f, 0.45f, 0.4f, 1.0f) : ImVec4(0.6f, 0.9f, 0.6f, 1.0f), ui.message);
     if (ImGui::CollapsingHeader("Run", ImGuiTreeNodeFlags_DefaultOpen)) runSection(stage, ui);
-    if (ImGui::CollapsingHeader("Plots", ImGuiTreeNodeFlags_DefaultOpen)) livePlots(stage, ui);
+    if (ImGui::CollapsingHeader("Plots", ImGuiTreeNodeFlags_DefaultOpen)) {
+      livePlots(stage, ui);
+      probePlots(ui.history);
+    }
     ImGui::SetNextItemOpen(ui.showTimings, ImGuiCond_Always);  // D opens and closes it too
     ui.showTimings = ImGui::CollapsingHeader("GPU timings (D)");
     if (ui.showTimings) timingTable(profiler);

@@ -14,8 +14,12 @@ struct History {
   static constexpr int kHistory = 240;
   std::vector<float> costMs = std::vector<float>(kHistory, 0.0f);  // GPU ms per frame
   std::vector<float> metric = std::vector<float>(kHistory, 0.0f);  // the model's error metric
+  // The scene's probes: one ring per column, restarted when the columns change; NaN is kept as 0
+  // and shown by the last readings.
+  ProbeReadings probes;
+  std::vector<std::vector<float>> probeRings;
   int next = 0;
-  void push(float cost, float value);
+  void push(float cost, float value, ProbeReadings readings = {});
 };
 
 struct UiState {

@@ -232,7 +232,7 @@ int runWindow(const WindowJob& job) {
     if (auto m = exports.afterFrame(*stage, stepped)) show(*m);
     {
       const double metric = stage->liveMetric().second;
-      ui.history.push(float(profiler.totalMs()), std::isfinite(metric) ? float(metric) : 0.0f);
+      ui.history.push(float(profiler.totalMs()), std::isfinite(metric) ? float(metric) : 0.0f, stage->probes());
     }
     if (const auto d = stage->divergence(); d && ui.divergence.empty()) {
       ui.divergence = d->message;

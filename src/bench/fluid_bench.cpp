@@ -1,8 +1,9 @@
-// `tidepool bench fluid <scene> --n 65536,1M --iterations 4 --steps 10:110`: median GPU ms per fluid
-// step over a window of steps, split by pass (the solver's λ and Δp passes summed over the
-// iterations), with steps per second and GPU bytes per particle. --n sets the particle count of a
-// block-filled scene (bench-fluid) by choosing the spacing that fills the block with that many
-// particles on the cubic lattice; other scenes run as they are.
+// `tidepool bench fluid <scene> --n 65536,1M --iterations 4 --loads off,on --steps 10:110`: median
+// GPU ms per fluid step over a window of steps, split by pass (the solver's λ and Δp passes summed
+// over the iterations), with steps per second and GPU bytes per particle. --n sets the particle
+// count of a block-filled scene (bench-fluid) by choosing the spacing that fills the block with
+// that many particles on the cubic lattice; other scenes run as they are. --loads on adds force
+// probes on the floor and on every obstacle (sim/fluid/boundary_loads.h: what measuring costs).
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -38,8 +39,18 @@ float spacingFor(const fluid::Params& p, std::size_t n) {
   return float(std::cbrt(double(extent.x) * extent.y * extent.z / double(n)));
 }
 
+// The scene's probes, and with `loads` a force probe on the floor and on each obstacle.
+std::vector<water::ProbeParams> probes(const fluid::Params& p, bool loads) {
+  std::vector<water::ProbeParams> out = p.probes;
+  if (!loads) return out;
+  out.push_back({.kind = water::ProbeKind::Force, .wall = water::ProbeWall::MinZ});
+  for (std::size_t k = 0; k < p.obstacles.size(); ++k)
+    out.push_back({.kind = water::ProbeKind::Force, .obstacle = int(k)});
+  return out;
+}
+
 int run(Env& env, const std::string& sceneName, const std::string& sizes, const std::string& iterations,
-        const std::string& deterministic, const std::string& window) {
+        const std::string& deterministic, const std::string& loads, const std::string& window) {
   const Scene scene = loadScene(resolveScenePath(sceneName));
   const fluid::Params base = fluidScene(scene).model;
   const StepWindow w = parseStepWindow(window);
@@ -48,32 +59,36 @@ int run(Env& env, const std::string& sceneName, const std::string& sizes, const 
               scene.name.c_str(), w.first, w.last);
   const std::vector<bool> orders =
       deterministic.empty() ? std::vector<bool>{base.deterministic} : parseOnOff(deterministic, "--deterministic");
-  Table table({"particles", "spacing", "iters", "determ.", "cells", "predict ms", "count ms", "scan ms", "reorder ms",
-               "lambda ms", "delta ms", "velocity ms", "viscosity ms", "ms/step", "steps/s", "bytes/particle"});
+  const std::vector<bool> measured = parseOnOff(loads, "--loads");
+  Table table({"particles", "spacing", "iters", "determ.", "loads", "cells", "predict ms", "count ms", "scan ms",
+               "reorder ms", "lambda ms", "delta ms", "velocity ms", "viscosity ms", "ms/step", "steps/s",
+               "bytes/particle"});
   const std::vector<std::size_t> counts = block ? parseSizes(sizes) : std::vector<std::size_t>{0};
-  Steps steps("bench fluid", int(counts.size() * parseIterations(iterations).size() * orders.size()));
+  Steps steps("bench fluid", int(counts.size() * parseIterations(iterations).size() * orders.size() * measured.size()));
   for (std::size_t n : counts)
     for (int k : parseIterations(iterations))
-      for (bool stable : orders) {
-        steps.begin((block ? "about " + std::to_string(n) + " particles" : scene.name) + ", " + std::to_string(k) +
-                    " iterations, determ. " + (stable ? "on" : "off"));
-        fluid::Params p = base;
-        p.deterministic = stable;
-        if (block) {
-          p.setSpacing(spacingFor(base, n));
-          if (p.maxParticles > 0) p.maxParticles = std::max(p.maxParticles, int(n + n / 8));
+      for (bool stable : orders)
+        for (bool withLoads : measured) {
+          steps.begin((block ? "about " + std::to_string(n) + " particles" : scene.name) + ", " + std::to_string(k) +
+                      " iterations, determ. " + (stable ? "on" : "off") + ", loads " + (withLoads ? "on" : "off"));
+          fluid::Params p = base;
+          p.deterministic = stable;
+          p.probes = probes(base, withLoads);
+          if (block) {
+            p.setSpacing(spacingFor(base, n));
+            if (p.maxParticles > 0) p.maxParticles = std::max(p.maxParticles, int(n + n / 8));
+          }
+          p.iterations = k;
+          fluid::Fluid model(env.shaders, p);
+          const PassTimes t = timePasses(w.first, w.last - w.first, [&](gl::GpuProfiler& g) { model.stepOnce(&g); });
+          const double perStep = t.frameMs();
+          table.add({std::to_string(model.count()), fixed(p.spacing(), 5), std::to_string(k), stable ? "on" : "off",
+                     withLoads ? "on" : "off", std::to_string(model.cells()), t.cell("fluid.predict", 4),
+                     t.cell("fluid.count", 4), t.cell("fluid.scan", 4), t.cell("fluid.reorder", 4),
+                     t.cell("fluid.lambda", 4), t.cell("fluid.delta", 4), t.cell("fluid.velocity", 4),
+                     t.cell("fluid.viscosity", 4), fixed(perStep, 4), fixed(perStep > 0 ? 1000.0 / perStep : 0.0, 0),
+                     std::to_string(model.bytesPerParticle())});
         }
-        p.iterations = k;
-        fluid::Fluid model(env.shaders, p);
-        const PassTimes t = timePasses(w.first, w.last - w.first, [&](gl::GpuProfiler& g) { model.stepOnce(&g); });
-        const double perStep = t.frameMs();
-        table.add({std::to_string(model.count()), fixed(p.spacing(), 5), std::to_string(k), stable ? "on" : "off",
-                   std::to_string(model.cells()), t.cell("fluid.predict", 4), t.cell("fluid.count", 4),
-                   t.cell("fluid.scan", 4), t.cell("fluid.reorder", 4), t.cell("fluid.lambda", 4),
-                   t.cell("fluid.delta", 4), t.cell("fluid.velocity", 4), t.cell("fluid.viscosity", 4),
-                   fixed(perStep, 4), fixed(perStep > 0 ? 1000.0 / perStep : 0.0, 0),
-                   std::to_string(model.bytesPerParticle())});
-      }
   steps.finish();
   return finish(env, table);
 }
@@ -84,7 +99,8 @@ Benchmark addFluidBench(CLI::App& bench) {
   auto* sub =
       bench.add_subcommand("fluid", "fluid (PBF) step: ms per pass over a step window, steps/s, bytes per particle");
   struct Opts {
-    std::string scene = "bench-fluid", sizes = "65536,1M", iterations = "4", deterministic, window = "10:110";
+    std::string scene = "bench-fluid", sizes = "65536,1M", iterations = "4", deterministic, loads = "off",
+                window = "10:110";
   };
   auto o = std::make_shared<Opts>();
   sub->add_option("scene", o->scene, "scene (default bench-fluid)");
@@ -92,8 +108,11 @@ Benchmark addFluidBench(CLI::App& bench) {
   sub->add_option("--iterations", o->iterations, "solver iterations, one row each, e.g. 2,4,8");
   sub->add_option("--deterministic", o->deterministic,
                   "stable grid order (bit-identical runs) on or off, one row each, e.g. on,off");
+  sub->add_option("--loads", o->loads,
+                  "force probes on the floor and every obstacle off or on, one row each, e.g. off,on");
   sub->add_option("--steps", o->window, "timed step window FIRST:LAST");
-  return {sub, [o](Env& env) { return run(env, o->scene, o->sizes, o->iterations, o->deterministic, o->window); }};
+  return {sub,
+          [o](Env& env) { return run(env, o->scene, o->sizes, o->iterations, o->deterministic, o->loads, o->window); }};
 }
 
 }  // namespace tidepool::bench

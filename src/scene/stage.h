@@ -40,6 +40,14 @@ struct StageIndicators {
   std::optional<glm::mat4> view;  // 3D views: the camera's view matrix (the axes gizmo)
 };
 
+// One value per column (water::probeColumns); `error` says why some or all of them are NaN (a
+// probe the running model cannot measure).
+struct ProbeReadings {
+  std::vector<std::string> columns;
+  std::vector<double> values;
+  std::string error;
+};
+
 class Stage {
  public:
   virtual ~Stage() = default;
@@ -69,6 +77,9 @@ class Stage {
   virtual std::optional<DivergenceReport> divergence() const { return std::nullopt; }
   // The model's current error metric for the live plot (name with units, value); NaN: none yet.
   virtual std::pair<std::string, double> liveMetric() const { return {"", NAN}; }
+  // The scene's own probes (sim/water/probes.h), measured now, for the live plots: none for a
+  // stage without them.
+  virtual ProbeReadings probes() { return {}; }
   virtual std::optional<std::uint64_t> recover() { return std::nullopt; }
   virtual void flushChecks() {}
 

@@ -6,6 +6,7 @@
 #include "io/obj.h"
 #include "render/balls_view.h"
 #include "scene/param_json.h"
+#include "sim/water/probes.h"
 
 namespace tidepool {
 namespace {
@@ -21,7 +22,8 @@ class WaterStage final : public Stage {
         m_view(view),
         m_active(active),
         m_choice(active),
-        m_renderer(shaders) {
+        m_renderer(shaders),
+        m_probes(shaders) {
     run().start(shaders, nullptr, nullptr);
     m_resolution = liveResolution();
   }
@@ -97,6 +99,19 @@ class WaterStage final : public Stage {
   std::pair<std::string, double> liveMetric() const override {
     if (m_frames == 0) return {"density error (%)", NAN};
     return m_runs[index(m_active)]->liveMetric();
+  }
+  ProbeReadings probes() override {
+    const std::vector<water::ProbeParams>& listed = water().water().probes;
+    if (listed.empty()) return {};
+    ProbeReadings r;
+    r.columns = water::probeColumns(listed);
+    try {
+      r.values = m_probes.measure(*run().water(), &r.error);  // what this model cannot measure: NaN, and why
+    } catch (const Error& e) {  // a probe the setup cannot measure (edited to a missing obstacle)
+      r.error = e.what();
+      r.values.assign(r.columns.size(), NAN);
+    }
+    return r;
   }
   std::string status() const override {
     const WaterRun& r = *m_runs[index(m_active)];
@@ -199,6 +214,7 @@ class WaterStage final : public Stage {
   BallsViewSettings m_view;
   WaterModel m_active, m_choice;
   BallsView m_renderer;
+  water::Probes m_probes;
   std::string m_switchError;
   std::string m_resolutionError;  // why the last resolution edit was refused
   float m_resolution = 1;         // the refinement the running model's parameters have

@@ -77,3 +77,20 @@ TEST(Window, NoDisplayGivesAClearError) {
   ASSERT_EQ(r.errLines().size(), 1u) << r.err;
   EXPECT_NE(r.err.find("cannot open"), std::string::npos) << r.err;
 }
+
+// A water scene's probes are plotted live under the other plots: the fluid tank's gauges,
+// pressures and forces; a probe the model cannot measure (a force on the balls) is a line in the
+// panel, the others are still plotted, and the window keeps running.
+TEST(Window, ProbesArePlottedAndOneTheModelCannotMeasureIsALineInThePanel) {
+  test::TempDir dir;
+  dir.write("balls.json", R"({"model": "balls", "params": {"particles": {"radius": 0.01,
+      "domain_max": [0.2, 0.1, 0.2], "fill": "slab", "slab_height": 0.05},
+      "probes": [{"kind": "gauge", "at": [0.1, 0.05, 0]}, {"kind": "force", "wall": "-z"}]}})");
+  for (const std::string scene : {std::string("fluid-tank"), (dir / "balls.json").string()}) {
+    const std::string shot = (dir / "shot.png").string();
+    auto r = test::runProcess({"xvfb-run", "-a", "-s", "-screen 0 1920x1080x24", TIDEPOOL_EXE, "run", scene,
+                               "--backend", "window", "--size", "1280x720", "--frames", "3", "--screenshot", shot});
+    EXPECT_EQ(r.exitCode, 0) << scene << ": " << r.out << r.err;
+    EXPECT_EQ(io::readPng(shot).width, 1280) << scene;
+  }
+}

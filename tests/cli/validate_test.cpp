@@ -102,7 +102,9 @@ TEST(Validate, ProbesTheSceneCannotMeasureAreOneLineErrors) {
       {R"([{"kind": "body", "obstacle": 2}]}})", "probes[0]: obstacle 2 does not exist: the scene has 0 obstacles"},
       {R"([{"kind": "gauge", "at": [0.5, 0.1, 0]}]}})",
        "probes[0]: the gauge at (0.5, 0.1) is not inside the domain's x (0, 0.4) and y (0, 0.2)"},
-      {R"([{"kind": "force"}]}})", "probes[0].kind = 'force' is not one of: gauge, pressure, body"},
+      {R"([{"kind": "torque"}]}})", "probes[0].kind = 'torque' is not one of: gauge, pressure, force, body"},
+      {R"([{"kind": "force", "wall": "top"}]}})", "probes[0].wall = 'top' is not one of: none, -x, +x, -y, +y, -z, +z"},
+      {R"([{"kind": "force", "obstacle": 1}]}})", "probes[0]: obstacle 1 does not exist: the scene has 0 obstacles"},
       {R"([{"kind": "pressure", "at": [0.2, 0.1, 0.5]}]}})",
        "probes[0]: the pressure probe at (0.2, 0.1, 0.5) is not inside the domain"},
       {R"([{"kind": "gauge", "radius": -1}]}})", "probes[0].radius"},
@@ -113,13 +115,17 @@ TEST(Validate, ProbesTheSceneCannotMeasureAreOneLineErrors) {
   }
 }
 
-TEST(Validate, APressureProbeOnBallsIsOneLineBeforeAnyOutput) {
+TEST(Validate, APressureOrForceProbeOnBallsIsOneLineBeforeAnyOutput) {
   test::TempDir dir;
-  dir.write("balls.json", R"({"model": "balls", "params": {"particles": {"radius": 0.01,
-      "domain_max": [0.4, 0.2, 0.3], "fill": "slab", "slab_height": 0.1},
-      "probes": [{"kind": "pressure", "at": [0.2, 0.1, 0.05]}]}})");
-  test::expectOneLineError(
-      {"validate", (dir / "balls.json").string(), "--probe", "probes", "--csv", (dir / "p.csv").string()},
-      "balls: a pressure probe reads the fluid solver's pressure");
-  EXPECT_FALSE(std::filesystem::exists(dir / "p.csv"));
+  const std::pair<const char*, const char*> cases[] = {
+      {R"({"kind": "pressure", "at": [0.2, 0.1, 0.05]})", "balls: a pressure probe reads the fluid solver's pressure"},
+      {R"({"kind": "force", "wall": "-z"})", "balls: force probes are measured on the fluid only"}};
+  for (const auto& [probe, message] : cases) {
+    dir.write("balls.json", std::string(R"({"model": "balls", "params": {"particles": {"radius": 0.01,
+        "domain_max": [0.4, 0.2, 0.3], "fill": "slab", "slab_height": 0.1}, "probes": [)") +
+                                probe + "]}}");
+    test::expectOneLineError(
+        {"validate", (dir / "balls.json").string(), "--probe", "probes", "--csv", (dir / "p.csv").string()}, message);
+    EXPECT_FALSE(std::filesystem::exists(dir / "p.csv"));
+  }
 }

@@ -3,6 +3,7 @@
 // size limit) ends the run naming the file, with no half-written frame left behind.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <regex>
 
 #include "support/gl_test.h"
@@ -76,4 +77,32 @@ TEST(ExportCli, BenchExportTimesBothFormats) {
     EXPECT_TRUE(std::regex_search(r.out, std::regex(row))) << row << "\n" << r.out;
   test::expectOneLineError({"bench", "export", kBalls, "--format", "obj"}, "--format 'obj' is not vtk or ply");
   test::expectOneLineError({"bench", "export", kRipples, "--format", "ply"}, "ripples has no particles");
+}
+
+// The scene's probes go beside the exported frames, one row per exported frame in probes.csv with
+// validate's columns; a probe the model cannot measure (a force on the balls) is one line before
+// any frame.
+TEST(ExportCli, ProbesAreWrittenBesideTheFramesOrRefusedInOneLine) {
+  test::TempDir dir;
+  const std::filesystem::path out = dir / "out";
+  auto r = test::runTidepool({"render", "fluid-tank", "--frames", "3", "--size", "32x18", "--export", "vtk", "--every",
+                              "2", "--no-frames", "--quiet", "--out", out.string()});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  std::ifstream csv(out / "probes.csv");
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(csv, line);) lines.push_back(line);
+  ASSERT_EQ(lines.size(), 3u) << "a header and frames 0 and 2";
+  EXPECT_EQ(lines[0],
+            "time_s,frame,gauge0_height_m,gauge1_height_m,gauge2_height_m,pressure3_pa,pressure4_pa,force5_normal_n,"
+            "force6_normal_n");
+  EXPECT_EQ(lines[1].substr(0, 4), "0,0,") << "frame 0 at t = 0: " << lines[1];
+  EXPECT_EQ(lines[2].find("nan"), std::string::npos) << "frame 2 has stepped: every probe measured: " << lines[2];
+
+  dir.write("balls.json", R"({"model": "balls", "params": {"particles": {"radius": 0.01,
+      "domain_max": [0.2, 0.1, 0.2], "fill": "slab", "slab_height": 0.05},
+      "probes": [{"kind": "force", "wall": "-z"}]}})");
+  test::expectOneLineError({"render", (dir / "balls.json").string(), "--frames", "2", "--size", "32x18", "--export",
+                            "vtk", "--out", (dir / "balls").string(), "--quiet"},
+                           "balls: force probes are measured on the fluid only");
+  EXPECT_FALSE(std::filesystem::exists(dir / "balls" / "frame_00000.vtp"));
 }

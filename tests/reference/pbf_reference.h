@@ -1,9 +1,11 @@
 // CPU reference of one fluid step (Position Based Fluids, Macklin & Müller 2013), the oracle the
 // GPU step is compared against: plain loops over all pairs, double precision, the same order of
 // operations as src/sim/fluid/fluid_passes.cpp (predict, iterations of λ then Δp with s_corr,
-// obstacle contact and walls, velocity, XSPH, vorticity confinement), densities as ρ/ρ0.
+// obstacle contact and walls, velocity, XSPH, vorticity confinement), densities as ρ/ρ0; and the
+// boundaries' shares of the corrections, the loads (src/sim/fluid/boundary_loads.h).
 #pragma once
 
+#include <array>
 #include <glm/glm.hpp>
 #include <vector>
 
@@ -12,8 +14,9 @@
 namespace tidepool::fluid::reference {
 
 struct Boundary {
-  glm::dvec3 pos;  // world, m
-  double volume;   // m³
+  glm::dvec3 pos;    // world, m
+  double volume;     // m³
+  int obstacle = 0;  // its obstacle's index
 };
 
 struct Setup {
@@ -23,11 +26,21 @@ struct Setup {
   int iterations = 1;
   glm::dvec3 gravity{0, 0, -9.81}, wallMin{0.0}, wallMax{1.0};
   std::vector<Boundary> boundary;
+  std::vector<glm::dvec3> centres;  // each obstacle's centre, m (the moments' origin)
 };
 
 struct State {
   std::vector<glm::dvec3> x, v;
+  // The step's sums of the boundaries' shares of the corrections, m: per wall (−x, +x, −y, +y,
+  // −z, +z; along its normal) and per obstacle, with their moments about the centres (m²).
+  std::array<double, 6> wall{};
+  std::vector<glm::dvec3> obstacle, moment;
 };
+
+// The wall share Δ of one particle at p, each axis to the nearer wall.
+inline void addWallShare(const Setup& s, const glm::dvec3& p, const glm::dvec3& delta, State& st) {
+  for (int k = 0; k < 3; ++k) st.wall[2 * k + (p[k] - s.wallMin[k] <= s.wallMax[k] - p[k] ? 0 : 1)] += delta[k];
+}
 
 // The walls' half spaces less the quarter spaces of each pair (shaders/fluid/walls.glsl).
 inline void walls(const Setup& s, const glm::dvec3& p, double& rhoOut, glm::dvec3& gOut) {
@@ -82,7 +95,7 @@ inline double density(const Setup& s, const std::vector<glm::dvec3>& p, std::siz
   return rho;
 }
 
-inline std::vector<glm::dvec3> iterate(const Setup& s, const std::vector<glm::dvec3>& p) {
+inline std::vector<glm::dvec3> iterate(const Setup& s, const std::vector<glm::dvec3>& p, State& st) {
   const std::size_t n = p.size();
   std::vector<double> lambda(n);
   for (std::size_t i = 0; i < n; ++i) {
@@ -103,18 +116,31 @@ inline std::vector<glm::dvec3> iterate(const Setup& s, const std::vector<glm::dv
       const double scorr = -s.scorrK * std::pow(w * w * w, s.scorrN);
       delta += (lambda[i] + lambda[j] + scorr) * s.volume * spikyGradient(r, s.h);
     }
-    for (const Boundary& b : s.boundary) boundary += b.volume * spikyGradient(p[i] - b.pos, s.h);
+    std::vector<glm::dvec3> gradient(s.centres.size(), glm::dvec3(0.0)), push(s.centres.size(), glm::dvec3(0.0));
+    for (const Boundary& b : s.boundary) {
+      boundary += b.volume * spikyGradient(p[i] - b.pos, s.h);
+      gradient[std::size_t(b.obstacle)] += b.volume * spikyGradient(p[i] - b.pos, s.h);
+    }
     double unused = 0;
-    walls(s, p[i], unused, boundary);
-    glm::dvec3 q = p[i] + delta + lambda[i] * boundary;
-    glm::dvec3 pushed(0.0);  // each obstacle particle within the contact distance pushes q out to it
+    glm::dvec3 wallGradient(0.0);
+    walls(s, p[i], unused, wallGradient);
+    const glm::dvec3 q0 = p[i] + delta + lambda[i] * (boundary + wallGradient);
+    glm::dvec3 q = q0, pushed(0.0);  // each obstacle particle within the contact distance pushes q out to it
     for (const Boundary& b : s.boundary) {
       const glm::dvec3 r = q - b.pos;
       const double len = glm::length(r);
-      if (len > 0 && len < s.contact) pushed += (s.contact - len) / len * r;
+      if (len > 0 && len < s.contact) {
+        pushed += (s.contact - len) / len * r;
+        push[std::size_t(b.obstacle)] += (s.contact - len) / len * r;
+      }
     }
     q += pushed;
     out[i] = glm::clamp(q, s.wallMin + s.inset, s.wallMax - s.inset);
+    addWallShare(s, p[i], lambda[i] * wallGradient + (out[i] - q), st);
+    for (std::size_t k = 0; k < s.centres.size(); ++k) {
+      st.obstacle[k] += lambda[i] * gradient[k] + push[k];
+      st.moment[k] += glm::cross(p[i] - s.centres[k], lambda[i] * gradient[k]) + glm::cross(q0 - s.centres[k], push[k]);
+    }
   }
   return out;
 }
@@ -122,10 +148,15 @@ inline std::vector<glm::dvec3> iterate(const Setup& s, const std::vector<glm::dv
 inline void step(const Setup& s, State& st) {
   const std::size_t n = st.x.size();
   std::vector<glm::dvec3> p(n);
-  for (std::size_t i = 0; i < n; ++i)
-    p[i] =
-        glm::clamp(st.x[i] + s.dt * ((st.v[i] + s.dt * s.gravity) * s.decay), s.wallMin + s.inset, s.wallMax - s.inset);
-  for (int k = 0; k < s.iterations; ++k) p = iterate(s, p);
+  st.wall = {};
+  st.obstacle.assign(s.centres.size(), glm::dvec3(0.0));
+  st.moment.assign(s.centres.size(), glm::dvec3(0.0));
+  for (std::size_t i = 0; i < n; ++i) {
+    const glm::dvec3 free = st.x[i] + s.dt * ((st.v[i] + s.dt * s.gravity) * s.decay);
+    p[i] = glm::clamp(free, s.wallMin + s.inset, s.wallMax - s.inset);
+    addWallShare(s, free, p[i] - free, st);
+  }
+  for (int k = 0; k < s.iterations; ++k) p = iterate(s, p, st);
   std::vector<glm::dvec3> v(n), omega(n, glm::dvec3(0.0));
   for (std::size_t i = 0; i < n; ++i) v[i] = (p[i] - st.x[i]) / s.dt;
   std::vector<glm::dvec3> out = v;

@@ -227,4 +227,8 @@ std::vector<double> Balls::pressures(const std::vector<glm::vec3>&) {
       "as fluid (\"model\": \"fluid\")");
 }
 
+water::Loads Balls::loads() {
+  throw Error("balls: force probes are measured on the fluid only; run the scene as fluid (\"model\": \"fluid\")");
+}
+
 }  // namespace tidepool::balls

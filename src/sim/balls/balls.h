@@ -72,6 +72,7 @@ class Balls final : public sim::Model, public water::ParticleWater {
   float domainRotation() const override;  // radians about x
   // Pressure probes: the balls have no pressure field (throws Error saying so).
   std::vector<double> pressures(const std::vector<glm::vec3>& points) override;
+  water::Loads loads() override;  // Error: not measured
   water::Packing packing() const override { return Params::kPacking; }
   const water::Setup& water() const override { return m_params; }
   std::size_t bytesPerBall() const;                                   // GPU memory per ball, grid included

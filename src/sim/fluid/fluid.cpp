@@ -49,7 +49,8 @@ Fluid::Fluid(gl::ShaderLibrary& shaders, const Params& params)
       m_shaders(shaders),
       m_params(params),
       m_obstacles(shaders),
-      m_probe(shaders) {
+      m_probe(shaders),
+      m_loads(shaders) {
   // Obstacle particles weigh in the density sum with their rest volumes (rest_lattice.h).
   m_obstacles.setVolumes([this](const water::ObstacleBody& b) {
     return boundaryVolumes(b.particles, b.built.shell, m_params.h(), m_solidVolume);
@@ -116,6 +117,7 @@ void Fluid::reset() {
   m_time = 0;
   m_steps = 0;
   m_densitiesValid = false;
+  m_loadsOn = m_wallLoadsOn = false;
   grid::GridParams gp{
       .domainMin = w.domainMin, .domainMax = w.domainMax, .cellSize = cellSize(), .stable = w.deterministic};
   m_grid = std::make_unique<grid::UniformGrid>(m_shaders, gp, m_capacity);
@@ -206,7 +208,8 @@ void Fluid::visitOwnState(sim::StateVisitor& v) {
 std::size_t Fluid::bytesPerParticle() const {
   if (m_count == 0) return 0;
   const std::size_t own = m_x.size() + m_v.size() + m_pred.size() + m_scratch[0].size() + m_scratch[1].size() +
-                          m_lambda.size() + m_lambdaSum.size() + m_permutation.size();
+                          m_lambda.size() + m_lambdaSum.size() + m_permutation.size() +
+                          (m_loadsOn ? m_loads.bytes() : 0);
   return (own + m_grid->memoryBytes()) / m_count;
 }
 

@@ -23,6 +23,7 @@
 #include "gl/gpu_profiler.h"
 #include "gl/shader_library.h"
 #include "grid/grid.h"
+#include "sim/fluid/boundary_loads.h"
 #include "sim/fluid/density_probe.h"
 #include "sim/fluid/fluid_params.h"
 #include "sim/fluid/rest_lattice.h"
@@ -75,8 +76,10 @@ class Fluid final : public sim::Model, public water::ParticleWater {
   glm::vec3 wallMin() const override { return m_walls.min; }
   glm::vec3 wallMax() const override { return m_walls.max; }
   float domainRotation() const override;
-  // The solver's pressure of the last step at each point (fluid_pressure.cpp); NaN before the first step.
+  // The solver's pressure of the last step at each point (fluid_probes.cpp); NaN before the first step.
   std::vector<double> pressures(const std::vector<glm::vec3>& points) override;
+  // The loads of the last step (boundary_loads.h), while the setup lists a force probe.
+  water::Loads loads() override;
 
   glm::vec3 gravity() const;                                            // current, turned with the domain
   double h() const { return m_params.h(); }                             // smoothing radius, m
@@ -119,6 +122,9 @@ class Fluid final : public sim::Model, public water::ParticleWater {
   void sortByCell(gl::GpuProfiler* profiler);
   void solve(gl::GpuProfiler* profiler);  // the iterations
   void updateVelocities(gl::GpuProfiler* profiler);
+  // With m_loadsOn: binds the loads' partials and returns BOUNDARY_LOADS (and LOADS_WALLS with
+  // m_wallLoadsOn), for predict and Δp.
+  std::vector<gl::ShaderDefine> bindLoads() const;
   // What the kernels share (fluid_kernels.h); bindNeighbours() binds the grid's cell starts.
   SphUniforms sph() const;
   WallUniforms walls() const;
@@ -139,6 +145,10 @@ class Fluid final : public sim::Model, public water::ParticleWater {
   std::string m_obstacleError;
   water::Walls m_walls;
   DensityProbe m_probe;
+  BoundaryLoads m_loads;
+  // A force probe is listed: the step measures the loads, the walls' only for a probe on a wall
+  // (theirs cost the most: most work groups touch a wall); after it, m_loads holds its sums.
+  bool m_loadsOn = false, m_wallLoadsOn = false;
   double m_time = 0;
   std::uint64_t m_steps = 0;
   bool m_trackOrder = false;

@@ -67,12 +67,18 @@ struct PredictUniforms {  // fluid/predict.comp
   float dt = 0;
   glm::vec3 gravity{0.0f};  // m/s², turned with the domain
   float decay = 1;          // exp(−damping·dt)
+  GLuint loadSlots = 0;     // fluid/loads.glsl, with BOUNDARY_LOADS
   SphUniforms sph;
   WallUniforms walls;
   static constexpr auto fields() {
     using U = PredictUniforms;
-    return std::tuple{gl::field("uCount", &U::count), gl::field("uDt", &U::dt), gl::field("uGravity", &U::gravity),
-                      gl::field("uDecay", &U::decay), gl::field(&U::sph),       gl::field(&U::walls)};
+    return std::tuple{gl::field("uCount", &U::count),
+                      gl::field("uDt", &U::dt),
+                      gl::field("uGravity", &U::gravity),
+                      gl::field("uDecay", &U::decay),
+                      gl::field("uLoadSlots", &U::loadSlots),
+                      gl::field(&U::sph),
+                      gl::field(&U::walls)};
   }
 };
 
@@ -99,8 +105,9 @@ struct LambdaUniforms {  // fluid/lambda.comp
 struct DeltaUniforms {  // fluid/delta.comp
   GLuint count = 0;
   float scorrK = 0, scorrN = 0;
-  float scorrInvQ = 0;  // 1 / (1 − Δq²/h²)
-  float contact = 0;    // m: the closest a fluid particle comes to an obstacle particle
+  float scorrInvQ = 0;   // 1 / (1 − Δq²/h²)
+  float contact = 0;     // m: the closest a fluid particle comes to an obstacle particle
+  GLuint loadSlots = 0;  // fluid/loads.glsl, with BOUNDARY_LOADS
   SphUniforms sph;
   WallUniforms walls;
   NeighbourUniforms neighbours;
@@ -112,6 +119,7 @@ struct DeltaUniforms {  // fluid/delta.comp
                       gl::field("uScorrN", &U::scorrN),
                       gl::field("uScorrInvQ", &U::scorrInvQ),
                       gl::field("uContact", &U::contact),
+                      gl::field("uLoadSlots", &U::loadSlots),
                       gl::field(&U::sph),
                       gl::field(&U::walls),
                       gl::field(&U::neighbours),

@@ -33,12 +33,20 @@ void Fluid::stepOnce(gl::GpuProfiler* profiler) {
   // Placed where they are at the step's end, when the collisions see them (timed as "balls.obstacles").
   m_obstacles.place(m_params.obstacles, m_time + m_params.dt, m_params.domainMin, m_params.domainMax, profiler);
   m_walls = water::wallsAt(m_params, m_time + m_params.dt);  // the collisions see the walls at the step's end
+  m_wallLoadsOn = std::ranges::any_of(m_params.probes, [](const water::ProbeParams& p) {
+    return p.kind == water::ProbeKind::Force && p.wall != water::ProbeWall::None;
+  });
+  m_loadsOn = m_wallLoadsOn || std::ranges::any_of(m_params.probes, [](const water::ProbeParams& p) {
+                return p.kind == water::ProbeKind::Force && p.wall == water::ProbeWall::None;
+              });
+  if (m_loadsOn) m_loads.begin(m_count, m_obstacles.size());
   if (m_count > 0) {
     predict(profiler);
     sortByCell(profiler);
     solve(profiler);
     updateVelocities(profiler);
   }
+  if (m_loadsOn) m_loads.sum();
   m_densitiesValid = m_count > 0 && m_params.iterations > 0;
   m_time += m_params.dt;
   ++m_steps;
@@ -60,9 +68,19 @@ NeighbourUniforms Fluid::bindNeighbours() const {
   return {kGridReach, m_grid->uniforms()};
 }
 
+std::vector<gl::ShaderDefine> Fluid::bindLoads() const {
+  if (!m_loadsOn) return {};
+  m_loads.bind();
+  if (m_wallLoadsOn) return {{"BOUNDARY_LOADS", ""}, {"LOADS_WALLS", ""}};
+  return {{"BOUNDARY_LOADS", ""}};
+}
+
 void Fluid::predict(gl::GpuProfiler* profiler) {
   auto scope = timed(profiler, "fluid.predict");
-  const gl::Kernel<PredictUniforms> predict(m_shaders, "fluid/predict.comp", {FLUID_POS, FLUID_VEL_IN, FLUID_OUT});
+  std::vector<gl::ShaderDefine> defines = bindLoads();
+  if (m_loadsOn) defines.push_back({"LOADS_FIRST", ""});  // zeroes the partials
+  const gl::Kernel<PredictUniforms> predict(m_shaders, "fluid/predict.comp",
+                                            {FLUID_POS, FLUID_VEL_IN, FLUID_OUT, FLUID_LOADS}, defines);
   m_x.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_POS);
   m_v.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_VEL_IN);
   m_pred.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_OUT);
@@ -70,6 +88,7 @@ void Fluid::predict(gl::GpuProfiler* profiler) {
                                     .dt = m_params.dt,
                                     .gravity = gravity(),
                                     .decay = std::exp(-m_params.damping * m_params.dt),
+                                    .loadSlots = m_loads.slots(),
                                     .sph = sph(),
                                     .walls = walls()});
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
@@ -97,10 +116,12 @@ void Fluid::solve(gl::GpuProfiler* profiler) {
   const std::vector<gl::ShaderDefine> boundary = boundaryDefines(m_obstacles);
   std::vector<gl::ShaderDefine> deltaDefines = boundary;
   if (q.scorrN == 4.0f) deltaDefines.push_back({"SCORR_N4", ""});
+  for (const gl::ShaderDefine& d : bindLoads()) deltaDefines.push_back(d);
   const gl::Kernel<LambdaUniforms> lambda(m_shaders, "fluid/lambda.comp",
                                           {FLUID_CELL_START, FLUID_PRED, FLUID_LAMBDA, FLUID_PRESSURE}, boundary);
   const gl::Kernel<DeltaUniforms> delta(m_shaders, "fluid/delta.comp",
-                                        {FLUID_CELL_START, FLUID_PRED, FLUID_LAMBDA, FLUID_OUT}, deltaDefines);
+                                        {FLUID_CELL_START, FLUID_PRED, FLUID_LAMBDA, FLUID_OUT, FLUID_LOADS},
+                                        deltaDefines);
   for (int k = 0; k < q.iterations; ++k) {
     {
       auto scope = timed(profiler, "fluid.lambda");
@@ -128,6 +149,7 @@ void Fluid::solve(gl::GpuProfiler* profiler) {
                                     .scorrN = q.scorrN,
                                     .scorrInvQ = 1.0f / (1.0f - dq * dq),
                                     .contact = kObstacleContact * q.spacing(),
+                                    .loadSlots = m_loads.slots(),
                                     .sph = sph(),
                                     .walls = walls(),
                                     .neighbours = bindNeighbours(),

@@ -4,6 +4,7 @@
 // look the same.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <glm/glm.hpp>
 #include <vector>
@@ -18,6 +19,17 @@ class UniformGrid;
 }
 
 namespace tidepool::water {
+
+// What the water exerted on a boundary during the last step: the force (N) and, on an obstacle,
+// the torque about its centre (N·m).
+struct Load {
+  glm::dvec3 force{0.0}, torque{0.0};
+};
+constexpr std::size_t kWalls = 6;  // −x, +x, −y, +y, −z, +z
+struct Loads {
+  std::array<Load, kWalls> walls;  // a wall's force is along its normal
+  std::vector<Load> obstacles;     // one per obstacle
+};
 
 // The uniforms of a water model's health.comp (common/health.glsl, water/health.glsl).
 struct HealthUniforms {
@@ -48,6 +60,10 @@ class ParticleWater {
   // The water's pressure (Pa) at each point, as of the last step (sim/water/probes.h; NaN before
   // the first step). Throws Error where the model has no pressure field.
   virtual std::vector<double> pressures(const std::vector<glm::vec3>& points) = 0;
+  // The loads of the last step on the walls and the obstacles, measured while the setup lists a
+  // force probe (the walls' while one is on a wall; NaN where not measured or before the first
+  // such step). Throws Error where the model has none.
+  virtual Loads loads() = 0;
 };
 
 }  // namespace tidepool::water

@@ -1,5 +1,6 @@
 #include "sim/water/probes.h"
 
+#include <algorithm>
 #include <cmath>
 #include <glm/gtc/quaternion.hpp>
 #include <numbers>
@@ -40,17 +41,21 @@ double ringWeight(double u) { return 8.0 * u * std::pow(1.0 - u * u, 3.0); }  //
 
 void visitProbes(ParamVisitor& v, std::vector<ProbeParams>& probes) {
   v.list(
-      {"probes", "Probes", "measurements that validate --probe probes writes: gauges, pressures, obstacle poses"},
+      {"probes", "Probes",
+       "measurements that validate --probe probes writes: gauges, pressures, forces, obstacle poses"},
       probes, kMaxProbes,
       [](ParamVisitor& v, ProbeParams& p) {
         v.choice({"kind", "Kind",
-                  "gauge: water height at a vertical line; pressure: at a point (fluid); body: an obstacle's pose "
-                  "and velocity"},
+                  "gauge: water height at a vertical line; pressure: at a point (fluid); force: on an obstacle or "
+                  "a wall (fluid); body: an obstacle's pose and velocity"},
                  p.kind, kProbeKindNames);
         v.vector({"at", "At", "gauge: the vertical line through (x, y), z unused; pressure: the point, m"}, p.at,
                  -100.0f, 100.0f);
         v.real({"radius", "Radius", "gauge: footprint radius, m (0: five particle spacings)"}, p.radius, 0.0f, 100.0f);
-        v.integer({"obstacle", "Obstacle", "body: index in the obstacles list"}, p.obstacle, 0, int(kMaxObstacles) - 1);
+        v.integer({"obstacle", "Obstacle", "force, body: index in the obstacles list"}, p.obstacle, 0,
+                  int(kMaxObstacles) - 1);
+        v.choice({"wall", "Wall", "force: this wall (-x, +x, -y, +y, -z, +z) instead of an obstacle"}, p.wall,
+                 kProbeWallNames);
       },
       [](std::size_t i, const ProbeParams& p) {
         return std::to_string(i) + ": " + kProbeKindNames[std::size_t(p.kind)];
@@ -69,7 +74,8 @@ void checkProbes(const Setup& s) {
   };
   for (std::size_t i = 0; i < s.probes.size(); ++i) {
     const ProbeParams& p = s.probes[i];
-    if (p.kind == ProbeKind::Body && std::size_t(p.obstacle) >= s.obstacles.size())
+    const bool onObstacle = p.kind == ProbeKind::Body || (p.kind == ProbeKind::Force && p.wall == ProbeWall::None);
+    if (onObstacle && std::size_t(p.obstacle) >= s.obstacles.size())
       throw Error(item(i) + ": obstacle " + std::to_string(p.obstacle) + " does not exist: the scene has " +
                   std::to_string(s.obstacles.size()) + " obstacle" + (s.obstacles.size() == 1 ? "" : "s"));
     if (p.kind == ProbeKind::Gauge && !inside(p.at, 2))
@@ -92,6 +98,12 @@ std::vector<std::string> probeColumns(const std::vector<ProbeParams>& probes) {
     switch (probes[i].kind) {
       case ProbeKind::Gauge: add(n, {"height_m"}); break;
       case ProbeKind::Pressure: add(n, {"pa"}); break;
+      case ProbeKind::Force:
+        if (probes[i].wall == ProbeWall::None)
+          add(n, {"fx_n", "fy_n", "fz_n", "tx_n_m", "ty_n_m", "tz_n_m"});
+        else
+          add(n, {"normal_n"});
+        break;
       case ProbeKind::Body:
         add(n, {"x_m", "y_m", "z_m", "qw", "qx", "qy", "qz", "vx_m_s", "vy_m_s", "vz_m_s", "wx_rad_s", "wy_rad_s",
                 "wz_rad_s"});
@@ -143,7 +155,7 @@ std::vector<double> Probes::gaugeSums(const ParticleWater& water, const std::vec
   return sums;
 }
 
-std::vector<double> Probes::measure(ParticleWater& water) {
+std::vector<double> Probes::measure(ParticleWater& water, std::string* unmeasured) {
   const Setup& s = water.water();
   checkProbes(s);
   const float r = water.radius();
@@ -160,7 +172,30 @@ std::vector<double> Probes::measure(ParticleWater& water) {
       points.push_back(p.at);
     }
   const std::vector<double> sums = gauges.empty() ? std::vector<double>{} : gaugeSums(water, gauges);
-  const std::vector<double> pressures = points.empty() ? std::vector<double>{} : water.pressures(points);
+  // What the model cannot measure throws, or with `unmeasured` reads NaN and says why there.
+  auto measured = [&](auto read, auto none) {
+    if (!unmeasured) return read();
+    try {
+      return read();
+    } catch (const Error& e) {
+      *unmeasured = e.what();
+      return none();
+    }
+  };
+  const std::vector<double> pressures =
+      points.empty()
+          ? std::vector<double>{}
+          : measured([&] { return water.pressures(points); }, [&] { return std::vector<double>(points.size(), NAN); });
+  const bool forces = std::ranges::any_of(s.probes, [](const ProbeParams& p) { return p.kind == ProbeKind::Force; });
+  const Loads loads = !forces
+                          ? Loads{}
+                          : measured([&] { return water.loads(); },
+                                     [&] {
+                                       Loads none;
+                                       for (Load& w : none.walls) w.force = glm::dvec3(NAN);
+                                       none.obstacles.assign(s.obstacles.size(), {glm::dvec3(NAN), glm::dvec3(NAN)});
+                                       return none;
+                                     });
   const double volume = volumePerParticle(r, water.packing());
 
   std::vector<double> out;
@@ -172,6 +207,17 @@ std::vector<double> Probes::measure(ParticleWater& water) {
         ++gauge;
         break;
       case ProbeKind::Pressure: out.push_back(pressures.at(pressure++)); break;
+      case ProbeKind::Force: {
+        if (p.wall != ProbeWall::None) {  // along the wall's outward normal: the water pushes it out
+          const std::size_t w = std::size_t(p.wall) - 1;
+          out.push_back((w % 2 == 0 ? -1.0 : 1.0) * loads.walls.at(w).force[int(w / 2)]);
+          break;
+        }
+        const Load& l = loads.obstacles.at(std::size_t(p.obstacle));
+        for (int k = 0; k < 3; ++k) out.push_back(l.force[k]);
+        for (int k = 0; k < 3; ++k) out.push_back(l.torque[k]);
+        break;
+      }
       case ProbeKind::Body: {
         const ObstaclePose& pose = water.obstacles().pose(std::size_t(p.obstacle));
         glm::quat q = glm::normalize(glm::quat_cast(pose.rotation));

@@ -14,6 +14,11 @@
 //          dt²), interpolated by Shepard's Σ V p_i W / Σ V W (poly6, support h; 0 where no
 //          particle is within h). The balls have no pressure field: a pressure probe on them is
 //          an Error (a contact stress is not the fluid's pressure at rest).
+//   force  {"kind": "force", "obstacle": k} or {"kind": "force", "wall": "-z"}  what the water
+//          exerted on obstacle k (force, N, and torque about its centre, N·m) or on a wall (its
+//          force along the wall's outward normal, N) during the last step: the fluid's, from the momentum its boundary
+//          corrections gave the water (sim/fluid/boundary_loads.h), F = −m ΣΔx / dt². The model measures loads only
+//          while a force probe is listed. The balls: an Error (not measured yet).
 //   body   {"kind": "body", "obstacle": k}  obstacle k's pose and velocity as placed at the last
 //          step: centre (m), orientation (unit quaternion w, x, y, z), velocity (m/s), angular
 //          velocity (rad/s).
@@ -55,8 +60,9 @@ class Probes {
  public:
   explicit Probes(gl::ShaderLibrary& shaders) : m_shaders(shaders) {}
   // One value per column of probeColumns(water.water().probes). Throws Error for probes the
-  // water cannot measure (checkProbes).
-  std::vector<double> measure(ParticleWater& water);
+  // setup cannot measure (checkProbes), and for those the model cannot (a pressure or a force on
+  // the balls) unless `unmeasured` is given: then those read NaN and it says why.
+  std::vector<double> measure(ParticleWater& water, std::string* unmeasured = nullptr);
 
  private:
   std::vector<double> gaugeSums(const ParticleWater& water, const std::vector<glm::vec4>& gauges);

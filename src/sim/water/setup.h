@@ -52,13 +52,16 @@ bool sameBody(const ObstacleParams& a, const ObstacleParams& b);
 
 // A measurement the scene asks for (sim/water/probes.h says what each kind reads).
 constexpr std::size_t kMaxProbes = 16;
-enum class ProbeKind { Gauge, Pressure, Body };
-constexpr std::array<const char*, 3> kProbeKindNames = {"gauge", "pressure", "body"};
+enum class ProbeKind { Gauge, Pressure, Force, Body };
+constexpr std::array<const char*, 4> kProbeKindNames = {"gauge", "pressure", "force", "body"};
+enum class ProbeWall { None, MinX, MaxX, MinY, MaxY, MinZ, MaxZ };  // MinX..MaxZ: water::Loads::walls' order + 1
+constexpr std::array<const char*, 7> kProbeWallNames = {"none", "-x", "+x", "-y", "+y", "-z", "+z"};
 struct ProbeParams {
   ProbeKind kind = ProbeKind::Gauge;
-  glm::vec3 at{0.5f, 0.5f, 0.0f};  // gauge: the line through (x, y); pressure: the point, m
-  float radius = 0.0f;             // gauge: footprint radius R, m (0: five spacings)
-  int obstacle = 0;                // body: the obstacle's index in `obstacles`
+  glm::vec3 at{0.5f, 0.5f, 0.0f};    // gauge: the line through (x, y); pressure: the point, m
+  float radius = 0.0f;               // gauge: footprint radius R, m (0: five spacings)
+  int obstacle = 0;                  // force, body: the obstacle's index in `obstacles`
+  ProbeWall wall = ProbeWall::None;  // force: a wall instead of an obstacle
 };
 
 struct Setup {

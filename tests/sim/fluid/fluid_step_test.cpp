@@ -1,8 +1,10 @@
 // The GPU fluid step equals the CPU reference (tests/reference/pbf_reference.h): one solver
 // iteration alone, then several with XSPH, vorticity confinement and an obstacle's boundary
-// particles, in both grid reorder modes.
+// particles, in both grid reorder modes; and the loads on the walls and the obstacle (force,
+// torque) equal the reference's sums of the boundaries' shares, without changing the step.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <random>
 
@@ -21,6 +23,9 @@ using FluidTest = test::GlTest;
 // The README's figure: fp32 against double, measured 2.2e-6 (one iteration) and 2.5e-6 (three,
 // with XSPH, vorticity, damping and the shell) of the largest displacement and speed.
 constexpr double kStepError = 4e-6;
+// The loads' figure: float sums of the step's shares against double, measured 1.0e-6 (walls) and
+// up to 3.4e-6 (the obstacles' forces and torques) of the largest load of their kind.
+constexpr double kLoadError = 1e-5;
 
 Params box() {
   Params p;
@@ -90,13 +95,31 @@ double compare(const std::vector<glm::vec4>& before, const std::vector<glm::vec4
   return worst / largest;
 }
 
-double run(gl::ShaderLibrary& shaders, Params p, bool obstacle, double* velocityError) {
-  if (obstacle) {
+struct StepRun {
+  double displacement = 0, velocity = 0;  // relative errors (compare())
+  std::vector<glm::vec4> positions;       // the GPU's, after the step
+  water::Loads loads;                     // the GPU's, with a force probe listed
+  reference::State cpu;
+  double scale = 0;  // −m / dt²: the reference's sums to forces
+};
+
+// `obstacles`: 0; 1: a sphere's shell just above the block, within h of its top; 2: and a solid
+// box in the block's corner, which pushes the particles inside it out to the contact distance.
+StepRun run(gl::ShaderLibrary& shaders, Params p, int obstacles) {
+  if (obstacles > 0) {
     water::ObstacleParams o;
     o.shape = water::Shape::Sphere;
-    o.centre = glm::vec3(0.07f, 0.06f, 0.125f);  // just above the block, within h of its top
+    o.centre = glm::vec3(0.07f, 0.06f, 0.125f);
     o.size = glm::vec3(0.03f);
     o.shell = true;
+    p.obstacles.push_back(o);
+  }
+  if (obstacles > 1) {
+    water::ObstacleParams o;
+    o.shape = water::Shape::Box;
+    o.centre = glm::vec3(0.025f, 0.03f, 0.02f);
+    o.size = glm::vec3(0.012f, 0.018f, 0.01f);
+    o.orientation = glm::vec3(10.0f, 20.0f, 30.0f);
     p.obstacles.push_back(o);
   }
   std::vector<glm::vec4> pos, vel;
@@ -112,16 +135,26 @@ double run(gl::ShaderLibrary& shaders, Params p, bool obstacle, double* velocity
   }
   x0 = cpu.x;
   reference::Setup s = setupOf(gpu);
-  if (obstacle) {
-    const water::ObstacleParams& o = p.obstacles[0];
+  const double solid = restLattice(p.spacing(), gpu.h(), water::Packing::Hcp).volume;  // as Fluid's solids
+  for (std::size_t k = 0; k < p.obstacles.size(); ++k) {
+    const water::ObstacleParams& o = p.obstacles[k];
+    const water::ObstaclePose pose = gpu.obstacles().pose(k);
+    s.centres.push_back(glm::dvec3(pose.centre));
     const std::vector<glm::vec4> body = water::Obstacle(o, 0.5f * p.spacing()).particles();
-    const std::vector<float> volumes = boundaryVolumes(body, o.shell, gpu.h(), gpu.rest().volume);
+    const std::vector<float> volumes = boundaryVolumes(body, o.shell, gpu.h(), o.shell ? gpu.rest().volume : solid);
     for (std::size_t b = 0; b < body.size(); ++b)
-      s.boundary.push_back({glm::dvec3(o.centre) + glm::dvec3(glm::vec3(body[b])), double(volumes[b])});
+      s.boundary.push_back({glm::dvec3(pose.centre) + glm::dmat3(pose.rotation) * glm::dvec3(glm::vec3(body[b])),
+                            double(volumes[b]), int(k)});
   }
   gpu.stepOnce();
   reference::step(s, cpu);
-  return compare(pos, gpu.downloadPositions(), gpu.lastOrder(), cpu, x0, velocityError, gpu.downloadVelocities());
+  StepRun out;
+  out.positions = gpu.downloadPositions();
+  out.displacement = compare(pos, out.positions, gpu.lastOrder(), cpu, x0, &out.velocity, gpu.downloadVelocities());
+  if (!p.probes.empty()) out.loads = gpu.loads();
+  out.cpu = cpu;
+  out.scale = -gpu.mass() / (double(p.dt) * p.dt);
+  return out;
 }
 
 }  // namespace
@@ -129,11 +162,10 @@ double run(gl::ShaderLibrary& shaders, Params p, bool obstacle, double* velocity
 TEST_F(FluidTest, OneSolverIterationEqualsTheCpuReference) {
   Params p = box();
   p.iterations = 1;
-  double velocityError = 0;
-  const double error = run(shaders(), p, false, &velocityError);
-  std::printf("one iteration: displacement error %.3g, velocity error %.3g (relative)\n", error, velocityError);
-  EXPECT_LT(error, kStepError);
-  EXPECT_LT(velocityError, kStepError);
+  const StepRun r = run(shaders(), p, 0);
+  std::printf("one iteration: displacement error %.3g, velocity error %.3g (relative)\n", r.displacement, r.velocity);
+  EXPECT_LT(r.displacement, kStepError);
+  EXPECT_LT(r.velocity, kStepError);
 }
 
 TEST_F(FluidTest, IterationsViscosityVorticityAndObstacleEqualTheCpuReference) {
@@ -142,10 +174,49 @@ TEST_F(FluidTest, IterationsViscosityVorticityAndObstacleEqualTheCpuReference) {
   p.viscosity = 0.05f;
   p.vorticity = 0.5f;
   p.damping = 3.0f;  // 1/s: strong enough that damping before gravity shows (2.6e-5)
-  double velocityError = 0;
-  const double error = run(shaders(), p, true, &velocityError);
-  std::printf("3 iterations, XSPH, vorticity, sphere shell: displacement error %.3g, velocity error %.3g\n", error,
-              velocityError);
-  EXPECT_LT(error, kStepError);
-  EXPECT_LT(velocityError, kStepError);
+  const StepRun r = run(shaders(), p, 1);
+  std::printf("3 iterations, XSPH, vorticity, sphere shell: displacement error %.3g, velocity error %.3g\n",
+              r.displacement, r.velocity);
+  EXPECT_LT(r.displacement, kStepError);
+  EXPECT_LT(r.velocity, kStepError);
+}
+
+// The step with two obstacles measuring the loads (force probes on an obstacle and a wall): the
+// positions are bit for bit those of the step without; each wall's force and each obstacle's force and torque equal
+// the reference's, within kLoadError of the largest load of their kind.
+TEST_F(FluidTest, LoadsOnTheWallsAndTheObstaclesEqualTheCpuReferenceAndLeaveTheStepAlone) {
+  Params p = box();
+  p.iterations = 3;
+  const StepRun plain = run(shaders(), p, 2);
+  p.probes = {{.kind = water::ProbeKind::Force, .obstacle = 0}};
+  EXPECT_TRUE(std::isnan(run(shaders(), p, 2).loads.walls[0].force.x)) << "no probe on a wall: walls not measured";
+  p.probes.push_back({.kind = water::ProbeKind::Force, .wall = water::ProbeWall::MaxZ});
+  const StepRun r = run(shaders(), p, 2);
+  ASSERT_EQ(r.positions.size(), plain.positions.size());
+  for (std::size_t i = 0; i < r.positions.size(); ++i) ASSERT_EQ(r.positions[i], plain.positions[i]) << i;
+  EXPECT_LT(r.displacement, kStepError) << "the step with a turned box pushing particles out";
+
+  double wallLargest = 0, wallWorst = 0;
+  for (std::size_t w = 0; w < water::kWalls; ++w) {
+    const double want = r.scale * r.cpu.wall[w];
+    glm::dvec3 along(0.0);
+    along[int(w / 2)] = want;
+    wallLargest = std::max(wallLargest, std::abs(want));
+    wallWorst = std::max(wallWorst, glm::length(r.loads.walls[w].force - along));
+    EXPECT_EQ(r.loads.walls[w].torque, glm::dvec3(0.0));
+  }
+  std::printf("walls: largest %.4g N, error %.3g\n", wallLargest, wallWorst / wallLargest);
+  EXPECT_GT(wallLargest, 0.0);
+  EXPECT_LT(wallWorst / wallLargest, kLoadError);  // fails on NaN too
+  ASSERT_EQ(r.loads.obstacles.size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k) {
+    const glm::dvec3 force = r.scale * r.cpu.obstacle[k], torque = r.scale * r.cpu.moment[k];
+    const double forceError = glm::length(r.loads.obstacles[k].force - force) / glm::length(force);
+    const double torqueError = glm::length(r.loads.obstacles[k].torque - torque) / glm::length(torque);
+    std::printf("obstacle %zu: %.4g N, error %.3g; torque %.4g N m, error %.3g\n", k, glm::length(force), forceError,
+                glm::length(torque), torqueError);
+    EXPECT_GT(glm::length(force), 0.0) << "the block presses on obstacle " << k;
+    EXPECT_LT(forceError, kLoadError) << k;
+    EXPECT_LT(torqueError, kLoadError) << k;
+  }
 }

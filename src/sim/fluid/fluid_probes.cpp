@@ -1,5 +1,6 @@
-// The fluid's pressure probes (water::ParticleWater::pressures, sim/water/probes.h), from the
-// solver's pressure p_i = −ρ0 Λ_i / dt² of the last step (shaders/fluid/pressure.comp).
+// What the probes read of the fluid (sim/water/probes.h): the pressure, from the solver's
+// p_i = −ρ0 Λ_i / dt² of the last step (shaders/fluid/pressure.comp), and the loads on the walls
+// and obstacles (boundary_loads.h).
 #include <cmath>
 
 #include "fluid/bindings.glsl"
@@ -53,6 +54,19 @@ std::vector<double> Fluid::pressures(const std::vector<glm::vec3>& points) {
       out.push_back(weights > 0 ? weighted / weights : 0.0);  // no water within h: 0 Pa
     }
   }
+  return out;
+}
+
+water::Loads Fluid::loads() {
+  if (!m_loadsOn || !m_densitiesValid) {  // no step since reset, or none that measured
+    water::Loads none;
+    for (water::Load& w : none.walls) w.force = glm::dvec3(NAN);
+    none.obstacles.assign(m_obstacles.size(), {glm::dvec3(NAN), glm::dvec3(NAN)});
+    return none;
+  }
+  water::Loads out = m_loads.read(-mass() / (double(m_params.dt) * m_params.dt));
+  if (!m_wallLoadsOn)
+    for (water::Load& w : out.walls) w.force = glm::dvec3(NAN);  // not measured
   return out;
 }
 

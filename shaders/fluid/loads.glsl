@@ -1,0 +1,88 @@
+// The loads on the walls and the obstacles (src/sim/fluid/boundary_loads.h), for the kernels that
+// move particles off a boundary (predict and delta, with BOUNDARY_LOADS). A boundary's share Δ of
+// a particle's correction is momentum it gave the water: over a step the water pushes back on it
+// with F = −m ΣΔ / dt². Each kernel hands every invocation's shares to addLoads(); the work group
+// adds them in a fixed order and adds the sums to its own partials, so the result does not depend
+// on scheduling. The step's first kernel (predict, with LOADS_FIRST) zeroes its group's partials
+// before adding; the walls' shares count only with LOADS_WALLS (a force probe on a wall). Slots:
+// the six walls (−x, +x, −y, +y, −z, +z: a wall's Δ is along its normal), then one per obstacle,
+// with the moment about its centre c_k (each pair's correction lies on the line through the two
+// particles, so (p − c_k) × Δ is its moment).
+// The including kernel defines, before including this file,
+//   void obstacleShare(uint k, out vec3 delta, out vec3 moment);  // this invocation's, for k
+// and calls addLoads() from every invocation of the group (none may return before it).
+#ifndef FLUID_LOADS_GLSL
+#define FLUID_LOADS_GLSL
+
+#define LOAD_WALL_SLOTS 6u
+#define LOADS_TOUCHED_WALLS 31u  // the touched mask's bit for the walls (obstacles: bits 0-15)
+
+layout(std430, binding = FLUID_LOADS) buffer Loads { vec4 loads[]; };  // per group and slot: ΣΔ, Σ moment
+uniform uint uLoadSlots;  // 6 + the obstacles
+
+shared float sLoad[6][FLUID_GROUP_SIZE];
+shared uint sTouched;
+
+// Sums the group's six values per invocation into slot `slot` (walls: one value per wall).
+void addGroup(uint slot, vec3 a, vec3 b, bool walls) {
+  const uint t = gl_LocalInvocationIndex;
+  sLoad[0][t] = a.x, sLoad[1][t] = a.y, sLoad[2][t] = a.z;
+  sLoad[3][t] = b.x, sLoad[4][t] = b.y, sLoad[5][t] = b.z;
+  barrier();
+  for (uint stride = uint(FLUID_GROUP_SIZE) / 2u; stride > 0u; stride /= 2u) {
+    if (t < stride)
+      for (int v = 0; v < 6; ++v) sLoad[v][t] += sLoad[v][t + stride];
+    barrier();
+  }
+  if (t == 0u) {
+    const uint base = groupIndex() * uLoadSlots;
+    if (walls) {
+      for (uint w = 0u; w < LOAD_WALL_SLOTS; ++w) {
+        vec3 along = vec3(0.0);
+        along[w / 2u] = sLoad[w][0];
+        loads[2u * (base + w)] += vec4(along, 0.0);
+      }
+    } else {
+      loads[2u * (base + slot)] += vec4(sLoad[0][0], sLoad[1][0], sLoad[2][0], 0.0);
+      loads[2u * (base + slot) + 1u] += vec4(sLoad[3][0], sLoad[4][0], sLoad[5][0], 0.0);
+    }
+  }
+  barrier();  // sLoad is reused
+}
+
+// `wall`: this invocation's correction by the walls, per axis; `side` per axis: −1 the wall at
+// the minimum, +1 at the maximum; `touched`: bit k for each obstacle k whose particles moved it.
+void addLoads(vec3 wall, vec3 side, uint touched) {
+  if (gl_LocalInvocationIndex == 0u) {
+    sTouched = 0u;
+#ifdef LOADS_FIRST
+    const uint base = 2u * groupIndex() * uLoadSlots;
+    for (uint s = 0u; s < 2u * uLoadSlots; ++s) loads[base + s] = vec4(0.0);
+#endif
+  }
+  barrier();
+#ifdef LOADS_WALLS
+  if (wall != vec3(0.0)) touched |= 1u << LOADS_TOUCHED_WALLS;
+#endif
+  if (touched != 0u) atomicOr(sTouched, touched);  // a bit mask: the same whatever the order
+  barrier();
+  const uint all = sTouched;
+  if ((all & (1u << LOADS_TOUCHED_WALLS)) != 0u) {
+    vec3 low = vec3(0.0), high = vec3(0.0);
+    for (int k = 0; k < 3; ++k) {
+      if (side[k] < 0.0)
+        low[k] = wall[k];
+      else
+        high[k] = wall[k];
+    }
+    addGroup(0u, vec3(low.x, high.x, low.y), vec3(high.y, low.z, high.z), true);
+  }
+  for (uint k = 0u; k < LOADS_TOUCHED_WALLS; ++k) {
+    if ((all & (1u << k)) == 0u) continue;
+    vec3 delta = vec3(0.0), moment = vec3(0.0);
+    if ((touched & (1u << k)) != 0u) obstacleShare(k, delta, moment);
+    addGroup(LOAD_WALL_SLOTS + k, delta, moment, false);
+  }
+}
+
+#endif
