@@ -213,12 +213,19 @@ std::vector<double> Probes::measure(ParticleWater& water, std::string* unmeasure
           out.push_back((w % 2 == 0 ? -1.0 : 1.0) * loads.walls.at(w).force[int(w / 2)]);
           break;
         }
-        const Load& l = loads.obstacles.at(std::size_t(p.obstacle));
-        for (int k = 0; k < 3; ++k) out.push_back(l.force[k]);
-        for (int k = 0; k < 3; ++k) out.push_back(l.torque[k]);
+        // An obstacle added since the last step (the window's panel) has no loads yet: NaN.
+        const Load none{glm::dvec3(NAN), glm::dvec3(NAN)};
+        const std::size_t k = std::size_t(p.obstacle);
+        const Load& l = k < loads.obstacles.size() ? loads.obstacles[k] : none;
+        for (int c = 0; c < 3; ++c) out.push_back(l.force[c]);
+        for (int c = 0; c < 3; ++c) out.push_back(l.torque[c]);
         break;
       }
       case ProbeKind::Body: {
+        if (std::size_t(p.obstacle) >= water.obstacles().size()) {  // added since the last step: not placed yet
+          out.insert(out.end(), 13, NAN);
+          break;
+        }
         const ObstaclePose& pose = water.obstacles().pose(std::size_t(p.obstacle));
         glm::quat q = glm::normalize(glm::quat_cast(pose.rotation));
         if (q.w < 0) q = -q;  // one of the two quaternions of a rotation: w ≥ 0

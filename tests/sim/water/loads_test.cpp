@@ -103,6 +103,34 @@ TEST_F(LoadsTest, ForceProbesReadTheStepsLoadsAndWallsTheirOutwardPush) {
   }
 }
 
+// An obstacle added while running (the window's panel) has no pose or loads until the next step
+// builds it: its force and body probes read NaN until then, and values after it.
+TEST_F(LoadsTest, ProbesOfAnObstacleAddedWhileRunningReadNaNUntilTheNextStep) {
+  fluid::Params p = tank({0.2f, 0.1f, 0.3f}, 0.1f, 0.02f);
+  water::ObstacleParams ball;
+  ball.centre = glm::vec3(0.06f, 0.05f, 0.06f);
+  ball.size = glm::vec3(0.03f);
+  p.obstacles = {ball};
+  using water::ProbeKind;
+  p.probes = {{.kind = ProbeKind::Force, .obstacle = 0}};
+  fluid::Fluid fluid(shaders(), p);
+  fluid.stepOnce();
+  water::ObstacleParams added = ball;
+  added.centre.x = 0.15f;
+  added.size = glm::vec3(0.02f);
+  fluid.params().obstacles.push_back(added);
+  fluid.params().probes.push_back({.kind = ProbeKind::Force, .obstacle = 1});
+  fluid.params().probes.push_back({.kind = ProbeKind::Body, .obstacle = 1});
+  water::Probes probes(shaders());
+  std::vector<double> got = probes.measure(fluid);
+  ASSERT_EQ(got.size(), 6u + 6u + 13u);
+  EXPECT_FALSE(std::isnan(got[2])) << "the first obstacle's loads";
+  for (std::size_t c = 6; c < got.size(); ++c) EXPECT_TRUE(std::isnan(got[c])) << "column " << c;
+  fluid.stepOnce();
+  got = probes.measure(fluid);
+  for (std::size_t c = 0; c < got.size(); ++c) EXPECT_FALSE(std::isnan(got[c])) << "column " << c;
+}
+
 // On the balls a force probe is an Error; asked to measure what it can (the window's plots), the
 // gauge beside it still reads and the force reads NaN, with the reason.
 TEST_F(LoadsTest, TheBallsRefuseAForceProbeInOneLineOrMeasureTheRest) {
