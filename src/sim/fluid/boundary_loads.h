@@ -1,9 +1,10 @@
 // The loads the fluid puts on the walls and the obstacles in a step (shaders/fluid/loads.glsl):
 // predict and every solver iteration add each work group's shares of the boundaries' position
 // corrections to that group's partials, loads_sum.comp adds them in chunks of groups and read()
-// the chunks, all in a fixed order, and the force is −m ΣΔ / dt² (the momentum the boundary gave the water, per
-// second). The partials take 6 + obstacles slots of 32 B per group of FLUID_GROUP_SIZE particles: under 6 B per
-// particle, less than one state array, so they fit wherever the state does.
+// the chunks, all in a fixed order, and the force is −m ΣΔ / dt² (the momentum the boundary gave
+// the water, per second). The partials take 6 + obstacles slots of 32 B per group of
+// FLUID_GROUP_SIZE particles: under 6 B per particle, less than one state array, so they fit
+// wherever the state does.
 #pragma once
 
 #include <cstddef>

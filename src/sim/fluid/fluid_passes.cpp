@@ -33,12 +33,12 @@ void Fluid::stepOnce(gl::GpuProfiler* profiler) {
   // Placed where they are at the step's end, when the collisions see them (timed as "balls.obstacles").
   m_obstacles.place(m_params.obstacles, m_time + m_params.dt, m_params.domainMin, m_params.domainMax, profiler);
   m_walls = water::wallsAt(m_params, m_time + m_params.dt);  // the collisions see the walls at the step's end
-  m_wallLoadsOn = std::ranges::any_of(m_params.probes, [](const water::ProbeParams& p) {
-    return p.kind == water::ProbeKind::Force && p.wall != water::ProbeWall::None;
-  });
-  m_loadsOn = m_wallLoadsOn || std::ranges::any_of(m_params.probes, [](const water::ProbeParams& p) {
-                return p.kind == water::ProbeKind::Force && p.wall == water::ProbeWall::None;
-              });
+  m_loadsOn = m_wallLoadsOn = false;  // a force probe measures the loads; one on a wall, the walls' too
+  for (const water::ProbeParams& p : m_params.probes)
+    if (p.kind == water::ProbeKind::Force) {
+      m_loadsOn = true;
+      m_wallLoadsOn = m_wallLoadsOn || p.wall != water::ProbeWall::None;
+    }
   if (m_loadsOn) m_loads.begin(m_count, m_obstacles.size());
   if (m_count > 0) {
     predict(profiler);

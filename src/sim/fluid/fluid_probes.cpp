@@ -58,15 +58,10 @@ std::vector<double> Fluid::pressures(const std::vector<glm::vec3>& points) {
 }
 
 water::Loads Fluid::loads() {
-  if (!m_loadsOn || !m_densitiesValid) {  // no step since reset, or none that measured
-    water::Loads none;
-    for (water::Load& w : none.walls) w.force = glm::dvec3(NAN);
-    none.obstacles.assign(m_obstacles.size(), {glm::dvec3(NAN), glm::dvec3(NAN)});
-    return none;
-  }
+  // No step since reset, or none that measured.
+  if (!m_loadsOn || !m_densitiesValid) return water::Loads::unmeasured(m_obstacles.size());
   water::Loads out = m_loads.read(-mass() / (double(m_params.dt) * m_params.dt));
-  if (!m_wallLoadsOn)
-    for (water::Load& w : out.walls) w.force = glm::dvec3(NAN);  // not measured
+  if (!m_wallLoadsOn) out.unmeasuredWalls();
   return out;
 }
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <glm/glm.hpp>
 #include <vector>
@@ -24,11 +25,21 @@ namespace tidepool::water {
 // the torque about its centre (N·m).
 struct Load {
   glm::dvec3 force{0.0}, torque{0.0};
+  static Load unmeasured() { return {glm::dvec3(NAN), glm::dvec3(NAN)}; }
 };
 constexpr std::size_t kWalls = 6;  // −x, +x, −y, +y, −z, +z
 struct Loads {
   std::array<Load, kWalls> walls;  // a wall's force is along its normal
   std::vector<Load> obstacles;     // one per obstacle
+  void unmeasuredWalls() {         // NaN forces (a wall has no torque)
+    for (Load& w : walls) w.force = glm::dvec3(NAN);
+  }
+  static Loads unmeasured(std::size_t obstacles) {  // NaN throughout
+    Loads none;
+    none.unmeasuredWalls();
+    none.obstacles.assign(obstacles, Load::unmeasured());
+    return none;
+  }
 };
 
 // The uniforms of a water model's health.comp (common/health.glsl, water/health.glsl).

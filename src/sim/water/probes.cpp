@@ -187,15 +187,9 @@ std::vector<double> Probes::measure(ParticleWater& water, std::string* unmeasure
           ? std::vector<double>{}
           : measured([&] { return water.pressures(points); }, [&] { return std::vector<double>(points.size(), NAN); });
   const bool forces = std::ranges::any_of(s.probes, [](const ProbeParams& p) { return p.kind == ProbeKind::Force; });
-  const Loads loads = !forces
-                          ? Loads{}
-                          : measured([&] { return water.loads(); },
-                                     [&] {
-                                       Loads none;
-                                       for (Load& w : none.walls) w.force = glm::dvec3(NAN);
-                                       none.obstacles.assign(s.obstacles.size(), {glm::dvec3(NAN), glm::dvec3(NAN)});
-                                       return none;
-                                     });
+  const Loads loads =
+      !forces ? Loads{}
+              : measured([&] { return water.loads(); }, [&] { return Loads::unmeasured(s.obstacles.size()); });
   const double volume = volumePerParticle(r, water.packing());
 
   std::vector<double> out;
@@ -214,9 +208,8 @@ std::vector<double> Probes::measure(ParticleWater& water, std::string* unmeasure
           break;
         }
         // An obstacle added since the last step (the window's panel) has no loads yet: NaN.
-        const Load none{glm::dvec3(NAN), glm::dvec3(NAN)};
         const std::size_t k = std::size_t(p.obstacle);
-        const Load& l = k < loads.obstacles.size() ? loads.obstacles[k] : none;
+        const Load l = k < loads.obstacles.size() ? loads.obstacles[k] : Load::unmeasured();
         for (int c = 0; c < 3; ++c) out.push_back(l.force[c]);
         for (int c = 0; c < 3; ++c) out.push_back(l.torque[c]);
         break;

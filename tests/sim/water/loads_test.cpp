@@ -30,6 +30,16 @@ fluid::Params tank(glm::vec3 size, float fill, float spacing) {
   return p;
 }
 
+// A tank 0.2 × 0.1 m filled 0.1 m deep with a sphere of radius 0.03 m in the water at x.
+fluid::Params smallTankWithABall(float x) {
+  fluid::Params p = tank({0.2f, 0.1f, 0.3f}, 0.1f, 0.02f);
+  water::ObstacleParams ball;
+  ball.centre = glm::vec3(x, 0.05f, 0.06f);
+  ball.size = glm::vec3(0.03f);
+  p.obstacles = {ball};
+  return p;
+}
+
 // The mean of every step's loads from t = 1 s to 2 s.
 water::Loads meanLoads(fluid::Fluid& fluid) {
   while (fluid.time() < 1.0) fluid.stepOnce();
@@ -77,11 +87,7 @@ TEST(Loads, ForceProbesHaveTheirColumnsAndNameAMissingObstacle) {
 // Probes::measure reads the loads of the same step: an obstacle's force and torque as they are,
 // a wall's force along its outward normal (the water pushes every wall out).
 TEST_F(LoadsTest, ForceProbesReadTheStepsLoadsAndWallsTheirOutwardPush) {
-  fluid::Params p = tank({0.2f, 0.1f, 0.3f}, 0.1f, 0.02f);
-  water::ObstacleParams ball;
-  ball.centre = glm::vec3(0.1f, 0.05f, 0.06f);
-  ball.size = glm::vec3(0.03f);
-  p.obstacles = {ball};
+  fluid::Params p = smallTankWithABall(0.1f);
   using water::ProbeKind, water::ProbeWall;
   p.probes = {{.kind = ProbeKind::Force, .obstacle = 0}};
   for (ProbeWall w : {ProbeWall::MinX, ProbeWall::MaxX, ProbeWall::MinY, ProbeWall::MaxY, ProbeWall::MinZ})
@@ -106,16 +112,12 @@ TEST_F(LoadsTest, ForceProbesReadTheStepsLoadsAndWallsTheirOutwardPush) {
 // An obstacle added while running (the window's panel) has no pose or loads until the next step
 // builds it: its force and body probes read NaN until then, and values after it.
 TEST_F(LoadsTest, ProbesOfAnObstacleAddedWhileRunningReadNaNUntilTheNextStep) {
-  fluid::Params p = tank({0.2f, 0.1f, 0.3f}, 0.1f, 0.02f);
-  water::ObstacleParams ball;
-  ball.centre = glm::vec3(0.06f, 0.05f, 0.06f);
-  ball.size = glm::vec3(0.03f);
-  p.obstacles = {ball};
+  fluid::Params p = smallTankWithABall(0.06f);
   using water::ProbeKind;
   p.probes = {{.kind = ProbeKind::Force, .obstacle = 0}};
   fluid::Fluid fluid(shaders(), p);
   fluid.stepOnce();
-  water::ObstacleParams added = ball;
+  water::ObstacleParams added = p.obstacles[0];
   added.centre.x = 0.15f;
   added.size = glm::vec3(0.02f);
   fluid.params().obstacles.push_back(added);
