@@ -30,10 +30,14 @@ void Fluid::stepOnce(gl::GpuProfiler* profiler) {
     m_obstacleError = error;
   }
   emitFromTap();
-  // Placed where they are at the step's end, when the collisions see them (timed as "balls.obstacles").
-  m_obstacles.place(m_params.obstacles, m_time + m_params.dt, m_params.domainMin, m_params.domainMax, profiler);
   m_walls = water::wallsAt(m_params, m_time + m_params.dt);  // the collisions see the walls at the step's end
-  m_loadsOn = m_wallLoadsOn = false;  // a force probe measures the loads; one on a wall, the walls' too
+  moveBodies();
+  // Placed where they are at the step's end, when the collisions see them (timed as "balls.obstacles").
+  m_obstacles.place(m_params.obstacles, m_bodies.poses(m_params.obstacles, m_time + m_params.dt), m_params.domainMin,
+                    m_params.domainMax, profiler);
+  // A force probe or a body measures the loads; a probe on a wall, the walls' too.
+  m_loadsOn = m_bodies.any();
+  m_wallLoadsOn = false;
   for (const water::ProbeParams& p : m_params.probes)
     if (p.kind == water::ProbeKind::Force) {
       m_loadsOn = true;
@@ -50,6 +54,27 @@ void Fluid::stepOnce(gl::GpuProfiler* profiler) {
   m_densitiesValid = m_count > 0 && m_params.iterations > 0;
   m_time += m_params.dt;
   ++m_steps;
+  keepBodies();
+}
+
+void Fluid::moveBodies() {
+  m_bodies.sync(m_params.obstacles, m_obstacles);
+  if (!m_bodies.any()) return;
+  if (m_bodiesRestored) {
+    const std::size_t n = m_bodyState.size() / sizeof(water::BodyState);
+    if (n == m_obstacles.size()) m_bodies.setStates(m_bodyState.read<water::BodyState>(n));
+  }
+  m_bodiesRestored = false;
+  m_bodies.advance(m_params.dt, glm::dvec3(gravity()), m_walls, m_obstacles);
+}
+
+void Fluid::keepBodies() {
+  if (!m_bodies.any()) return;
+  if (m_steps > 0) m_bodies.setLoads(loads(), m_obstacles);
+  const std::vector<water::BodyState> states = m_bodies.states();
+  const std::size_t bytes = states.size() * sizeof(water::BodyState);
+  if (m_bodyState.size() != bytes) m_bodyState = gl::Buffer(bytes);
+  m_bodyState.upload(states.data(), bytes);
 }
 
 void Fluid::step(gl::GpuProfiler& profiler) {

@@ -154,10 +154,9 @@ void Obstacles::refreshVolumes() {
   m_dirty = true;  // sorted again at the next place()
 }
 
-void Obstacles::place(const std::vector<ObstacleParams>& params, double time, glm::vec3 domainMin, glm::vec3 domainMax,
-                      gl::GpuProfiler* profiler) {
-  std::vector<ObstaclePose> poses(m_bodies.size());
-  for (std::size_t k = 0; k < poses.size(); ++k) poses[k] = obstaclePose(params[k], time);
+void Obstacles::place(const std::vector<ObstacleParams>& params, std::vector<ObstaclePose> poses, glm::vec3 domainMin,
+                      glm::vec3 domainMax, gl::GpuProfiler* profiler) {
+  poses.resize(m_bodies.size());
   const bool moved = m_dirty || poses != m_poses;
   m_poses = std::move(poses);
   m_dirty = false;
@@ -181,6 +180,11 @@ void Obstacles::place(const std::vector<ObstacleParams>& params, double time, gl
   for (std::size_t k = 0; k < m_bodies.size(); ++k) {
     if (m_bodies[k].particles.empty()) continue;
     const ObstacleParams& o = params[k];
+    if (o.dynamic) {  // anywhere in the domain
+      lo = glm::min(lo, domainMin);
+      hi = glm::max(hi, domainMax);
+      continue;
+    }
     const glm::vec3 swing = o.path.kind == PathKind::None ? glm::vec3(0.0f) : glm::abs(o.path.amplitude);
     lo = glm::min(lo, o.centre - swing - m_bodies[k].reach);
     hi = glm::max(hi, o.centre + swing + m_bodies[k].reach);
