@@ -125,8 +125,8 @@ void Fluid::reset() {
   m_grid = std::make_unique<grid::UniformGrid>(m_shaders, gp, m_capacity);
   m_obstacleError.clear();
   m_walls = water::wallsAt(w, 0.0);
-  m_bodiesRestored = false;
-  keepBodies();
+  m_bodiesRestored = m_bodyLoadsPending = false;
+  settleBodies();
 }
 
 void Fluid::emitFromTap() {
@@ -165,6 +165,7 @@ std::string Fluid::status() const {
 std::vector<sim::StateBuffer> Fluid::stateBuffers() {
   const std::size_t bytes = m_count * sizeof(glm::vec4);
   if (!m_bodies.any()) return {{"positions", &m_x, bytes}, {"velocities", &m_v, bytes}};
+  settleBodies();
   return {{"positions", &m_x, bytes}, {"velocities", &m_v, bytes}, {"bodies", &m_bodyState, m_bodyState.size()}};
 }
 
@@ -196,7 +197,8 @@ void Fluid::resume(const sim::StateStamp& good) {
   m_time = good.time;
   m_steps = good.steps;
   m_densitiesValid = false;
-  m_bodiesRestored = true;
+  m_bodiesRestored = true;  // the watch's copy of m_bodyState
+  m_bodyLoadsPending = false;
   m_params.dt *= 0.5f;
   m_params.substeps = std::min(m_params.substeps * 2, 1000);  // same simulated time per frame
 }
@@ -206,6 +208,7 @@ void Fluid::visitOwnState(sim::StateVisitor& v) {
   if (v.loading()) {
     m_densitiesValid = false;  // λ is not saved: the next step makes it anew
     m_bodiesRestored = true;   // the bodies' states come with the state buffers
+    m_bodyLoadsPending = false;
   }
   sim::capacityEntry(v, m_capacity, [&](std::size_t capacity) { allocate(0, capacity); });
   v.count("model.count", m_count, m_capacity);

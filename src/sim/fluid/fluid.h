@@ -125,10 +125,15 @@ class Fluid final : public sim::Model, public water::ParticleWater {
   void sortByCell(gl::GpuProfiler* profiler);
   void solve(gl::GpuProfiler* profiler);  // the iterations
   void updateVelocities(gl::GpuProfiler* profiler);
-  // The dynamic obstacles: their states back from m_bodyState after a restore, their move to the
-  // step's end; after the step, the water's loads on them and their states into m_bodyState.
+  // The dynamic obstacles. A step asks for the water's loads on them at its end
+  // (requestBodyLoads) and the next one reads them (receiveBodyLoads) after it has queued its
+  // predict and sort, so that the GPU has work while the CPU waits; moveBodies() then moves them
+  // to the step's end (from m_bodyState after a restore). settleBodies() writes their states,
+  // with any loads still on the way, into m_bodyState (for checkpoints and the watch).
+  void requestBodyLoads();
+  void receiveBodyLoads();
   void moveBodies();
-  void keepBodies();
+  void settleBodies();
   // With m_loadsOn: binds the loads' partials and returns BOUNDARY_LOADS (and LOADS_WALLS with
   // m_wallLoadsOn), for predict and Δp.
   std::vector<gl::ShaderDefine> bindLoads() const;
@@ -150,8 +155,9 @@ class Fluid final : public sim::Model, public water::ParticleWater {
   std::unique_ptr<grid::UniformGrid> m_grid;
   water::Obstacles m_obstacles;
   water::Bodies m_bodies;
-  gl::Buffer m_bodyState;         // water::BodyState per obstacle: in the state buffers (checkpoints, the watch)
-  bool m_bodiesRestored = false;  // m_bodyState was loaded or restored: m_bodies reads it at the next step
+  gl::Buffer m_bodyState;           // water::BodyState per obstacle: in the state buffers (checkpoints, the watch)
+  bool m_bodiesRestored = false;    // m_bodyState was loaded or restored: m_bodies reads it at the next step
+  bool m_bodyLoadsPending = false;  // the last step's loads are on their way back (requestBodyLoads)
   std::string m_obstacleError;
   water::Walls m_walls;
   DensityProbe m_probe;

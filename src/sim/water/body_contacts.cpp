@@ -13,8 +13,8 @@ struct CellHash {
   double cell = 1;
   std::unordered_map<std::uint64_t, std::vector<glm::dvec3>> cells;
   static std::uint64_t key(glm::ivec3 c) {
-    return (std::uint64_t(std::uint32_t(c.x) & 0x1fffffu) << 42) | (std::uint64_t(std::uint32_t(c.y) & 0x1fffffu) << 21) |
-           std::uint64_t(std::uint32_t(c.z) & 0x1fffffu);
+    return (std::uint64_t(std::uint32_t(c.x) & 0x1fffffu) << 42) |
+           (std::uint64_t(std::uint32_t(c.y) & 0x1fffffu) << 21) | std::uint64_t(std::uint32_t(c.z) & 0x1fffffu);
   }
   glm::ivec3 at(glm::dvec3 p) const { return glm::ivec3(glm::floor(p / cell)); }
   void add(glm::dvec3 p) { cells[key(at(p))].push_back(p); }

@@ -23,10 +23,10 @@ struct ContactBody {
 };
 
 struct BodyContact {
-  int a = 0, b = -1;        // the bodies' indices in the list; b = -1: a wall
-  glm::dvec3 point{0.0};    // world, m
-  glm::dvec3 normal{0.0};   // pushes a away from b (or the wall)
-  double gap = 0;           // m beyond touching; negative: overlapping
+  int a = 0, b = -1;       // the bodies' indices in the list; b = -1: a wall
+  glm::dvec3 point{0.0};   // world, m
+  glm::dvec3 normal{0.0};  // pushes a away from b (or the wall)
+  double gap = 0;          // m beyond touching; negative: overlapping
   glm::dvec3 wallVelocity{0.0};
 };
 

@@ -18,10 +18,10 @@
 namespace tidepool::water {
 
 struct MassProperties {
-  double mass = 0;                  // kg
-  glm::dvec3 centre{0.0};           // centre of mass in the own frame, m
-  glm::dmat3 inertia{1.0};          // about the centre of mass, own frame, kg·m²
-  glm::dmat3 inverseInertia{1.0};   // its inverse, 1/(kg·m²)
+  double mass = 0;                 // kg
+  glm::dvec3 centre{0.0};          // centre of mass in the own frame, m
+  glm::dmat3 inertia{1.0};         // about the centre of mass, own frame, kg·m²
+  glm::dmat3 inverseInertia{1.0};  // its inverse, 1/(kg·m²)
 };
 // Mass = density × volume; the centre and the inertia as of equal masses on the particles (own
 // frame, as built), plus each particle's own share as a cube of the lattice's volume per particle.
@@ -29,11 +29,11 @@ MassProperties massProperties(const std::vector<glm::vec4>& particles, double vo
 
 // The state a step changes: what checkpoints and the divergence watch keep, kBodyDoubles doubles.
 struct BodyState {
-  glm::dvec3 position{0.0};                   // the centre of mass, world, m
+  glm::dvec3 position{0.0};                    // the centre of mass, world, m
   glm::dquat orientation{1.0, 0.0, 0.0, 0.0};  // own frame -> world
-  glm::dvec3 momentum{0.0};                   // kg·m/s
-  glm::dvec3 angularMomentum{0.0};            // about the centre of mass, world, kg·m²/s
-  glm::dvec3 force{0.0}, torque{0.0};         // the water's in the last step, N and N·m about the centre of mass
+  glm::dvec3 momentum{0.0};                    // kg·m/s
+  glm::dvec3 angularMomentum{0.0};             // about the centre of mass, world, kg·m²/s
+  glm::dvec3 force{0.0}, torque{0.0};          // the water's in the last step, N and N·m about the centre of mass
   double pad = 0;
 };
 constexpr std::size_t kBodyDoubles = sizeof(BodyState) / sizeof(double);

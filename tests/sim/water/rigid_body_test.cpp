@@ -76,7 +76,8 @@ TEST(RigidBody, ABoxsMassIsItsDensityTimesItsVolumeAndItsInertiaNearlyTheSolidBo
   EXPECT_LT(glm::length(m.centre), kRadius);
   const double want[3] = {m.mass * (bb * bb + c * c) / 3, m.mass * (a * a + c * c) / 3, m.mass * (a * a + bb * bb) / 3};
   for (int i = 0; i < 3; ++i) {
-    std::printf("I%d %.4g, solid box %.4g (%+.1f%%)\n", i, m.inertia[i][i], want[i], 100 * (m.inertia[i][i] / want[i] - 1));
+    std::printf("I%d %.4g, solid box %.4g (%+.1f%%)\n", i, m.inertia[i][i], want[i],
+                100 * (m.inertia[i][i] / want[i] - 1));
     EXPECT_NEAR(m.inertia[i][i], want[i], 0.10 * want[i]) << "axis " << i;
   }
   EXPECT_LT(std::abs(m.inertia[0][1]), 0.02 * want[0]) << "the axes are principal";
