@@ -265,6 +265,19 @@ std::vector<glm::vec4> Obstacle::particles() const {
     }
     out.emplace_back(q, 0.0f);
   }
+  // A box's particles lie as far inside each face as inside the opposite one: the lattice's layers
+  // start where its box does, so the room left inside each face differs (up to a layer spacing);
+  // shifted by half the difference, both faces keep the same room (the particles stay inside)
+  // and the particles' centre of mass is the box's.
+  if (!out.empty() && o.shape == Shape::Box) {
+    glm::vec3 lo(1e30f), hi(-1e30f);
+    for (const glm::vec4& q : out) {
+      lo = glm::min(lo, glm::vec3(q));
+      hi = glm::max(hi, glm::vec3(q));
+    }
+    const glm::vec3 shift = -0.5f * (lo + hi);
+    for (glm::vec4& q : out) q += glm::vec4(shift, 0.0f);
+  }
   return out;
 }
 

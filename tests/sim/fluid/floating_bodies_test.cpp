@@ -52,7 +52,7 @@ Settled settle(fluid::Fluid& fluid) {
   while (fluid.time() < 2.0) {
     fluid.stepOnce();
     if (fluid.time() < 1.5) continue;
-    out.centre += fluid.bodies().body(0).state().position;
+    out.centre += glm::dvec3(fluid.obstacles().pose(0).centre);
     out.speed = std::max(out.speed, glm::length(fluid.bodies().body(0).velocity()));
     ++n;
   }
