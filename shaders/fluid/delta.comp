@@ -30,6 +30,10 @@ uniform float uContact;  // m: the closest a fluid particle comes to an obstacle
 #ifdef BOUNDARY_LOADS
 uint gTouched = 0u;  // bit k: a particle of obstacle k was within reach
 int gOnly = -1;      // ≥ 0: only obstacle gOnly's particles count (its share, obstacleShare())
+// The first obstacle met: its share is summed on the way, in the order a recount would sum it
+// (any other obstacle's share is recounted; a particle seldom has two within reach).
+int gFirst = -1;
+vec3 gFirstGradient = vec3(0.0), gFirstPushed = vec3(0.0);
 #endif
 void onFluid(uint j, vec3 r, float r2) {
   const float len = sqrt(r2);
@@ -48,11 +52,21 @@ void onBoundary(vec3 r, float r2, float volume, uint k) {
 #ifdef BOUNDARY_LOADS
   if (gOnly >= 0 && k != uint(gOnly)) return;
   gTouched |= 1u << k;
+  if (gFirst < 0) gFirst = int(k);
 #endif
-  if (gPushing)
-    gPushed += (uContact - len) / len * r;  // r from the corrected position: out to uContact
-  else
-    gBoundaryGradient += volume * spikyGrad(r, len);
+  if (gPushing) {
+    const vec3 push = (uContact - len) / len * r;  // r from the corrected position: out to uContact
+    gPushed += push;
+#ifdef BOUNDARY_LOADS
+    if (k == uint(gFirst)) gFirstPushed += push;
+#endif
+  } else {
+    const vec3 gradient = volume * spikyGrad(r, len);
+    gBoundaryGradient += gradient;
+#ifdef BOUNDARY_LOADS
+    if (k == uint(gFirst)) gFirstGradient += gradient;
+#endif
+  }
 }
 
 #include "fluid/neighbours.glsl"
@@ -70,17 +84,22 @@ vec3 gP = vec3(0.0), gQ;  // the particle before the correction, and after it be
 // its moment about c_k.
 void obstacleShare(uint k, out vec3 delta, out vec3 moment) {
 #ifdef HAS_OBSTACLE
-  gOnly = int(k);
-  gPushing = false;
-  gBoundaryGradient = vec3(0.0);
-  forEachBoundary(gP, uH);
-  const vec3 gradient = gLambda * gBoundaryGradient;
-  gPushing = true;
-  gPushed = vec3(0.0);
-  forEachBoundary(gQ, uContact);
+  vec3 gradientSum = gFirstGradient, pushed = gFirstPushed;
+  if (int(k) != gFirst) {  // recounted: only k's particles
+    gOnly = int(k);
+    gPushing = false;
+    gBoundaryGradient = vec3(0.0);
+    forEachBoundary(gP, uH);
+    gradientSum = gBoundaryGradient;
+    gPushing = true;
+    gPushed = vec3(0.0);
+    forEachBoundary(gQ, uContact);
+    pushed = gPushed;
+  }
+  const vec3 gradient = gLambda * gradientSum;
   const vec3 c = poseCentre[k].xyz;
-  delta = gradient + gPushed;
-  moment = cross(gP - c, gradient) + cross(gQ - c, gPushed);
+  delta = gradient + pushed;
+  moment = cross(gP - c, gradient) + cross(gQ - c, pushed);
 #else
   delta = moment = vec3(0.0);
 #endif

@@ -23,29 +23,32 @@ uniform uint uLoadSlots;  // 6 + the obstacles
 shared float sLoad[6][FLUID_GROUP_SIZE];
 shared uint sTouched;
 
-// Sums the group's six values per invocation into slot `slot` (walls: one value per wall).
+// Sums the group's six values per invocation into slot `slot` (walls: one value per wall), in a
+// fixed order: 6 × LOAD_LANES invocations each add LOAD_RUN consecutive values of one, then six
+// add those partial sums and add them to the group's partials.
+#define LOAD_RUN 8u
+#define LOAD_LANES (uint(FLUID_GROUP_SIZE) / LOAD_RUN)
+shared float sLoadRun[6][LOAD_LANES];
 void addGroup(uint slot, vec3 a, vec3 b, bool walls) {
   const uint t = gl_LocalInvocationIndex;
   sLoad[0][t] = a.x, sLoad[1][t] = a.y, sLoad[2][t] = a.z;
   sLoad[3][t] = b.x, sLoad[4][t] = b.y, sLoad[5][t] = b.z;
   barrier();
-  for (uint stride = uint(FLUID_GROUP_SIZE) / 2u; stride > 0u; stride /= 2u) {
-    if (t < stride)
-      for (int v = 0; v < 6; ++v) sLoad[v][t] += sLoad[v][t + stride];
-    barrier();
+  if (t < 6u * LOAD_LANES) {
+    const uint v = t / LOAD_LANES, first = (t % LOAD_LANES) * LOAD_RUN;
+    float sum = 0.0;
+    for (uint i = 0u; i < LOAD_RUN; ++i) sum += sLoad[v][first + i];
+    sLoadRun[v][t % LOAD_LANES] = sum;
   }
-  if (t == 0u) {
+  barrier();
+  if (t < 6u) {
+    float sum = 0.0;
+    for (uint l = 0u; l < LOAD_LANES; ++l) sum += sLoadRun[t][l];
     const uint base = groupIndex() * uLoadSlots;
-    if (walls) {
-      for (uint w = 0u; w < LOAD_WALL_SLOTS; ++w) {
-        vec3 along = vec3(0.0);
-        along[w / 2u] = sLoad[w][0];
-        loads[2u * (base + w)] += vec4(along, 0.0);
-      }
-    } else {
-      loads[2u * (base + slot)] += vec4(sLoad[0][0], sLoad[1][0], sLoad[2][0], 0.0);
-      loads[2u * (base + slot) + 1u] += vec4(sLoad[3][0], sLoad[4][0], sLoad[5][0], 0.0);
-    }
+    if (walls)
+      loads[2u * (base + t)][t / 2u] += sum;  // wall t's push, along its axis
+    else
+      loads[2u * (base + slot) + t / 3u][t % 3u] += sum;  // ΣΔ (t < 3), Σ moment
   }
   barrier();  // sLoad is reused
 }

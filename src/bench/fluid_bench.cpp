@@ -1,9 +1,11 @@
-// `tidepool bench fluid <scene> --n 65536,1M --iterations 4 --loads off,on --steps 10:110`: median
+// `tidepool bench fluid <scene> --n 65536,1M --iterations 4 --loads off,on --bodies 0,10 --steps 10:110`: median
 // GPU ms per fluid step over a window of steps, split by pass (the solver's λ and Δp passes summed
 // over the iterations), with steps per second and GPU bytes per particle. --n sets the particle
 // count of a block-filled scene (bench-fluid) by choosing the spacing that fills the block with
 // that many particles on the cubic lattice; other scenes run as they are. --loads on adds force
-// probes on the floor and on every obstacle (sim/fluid/boundary_loads.h: what measuring costs).
+// probes on the floor and on every obstacle (sim/fluid/boundary_loads.h: what measuring costs);
+// --bodies N adds N boxes afloat at the block's surface, dynamic (sim/water/bodies.h) or, with
+// --dynamic off, held where they are: what moving them costs beyond their boundary particles.
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -49,8 +51,43 @@ std::vector<water::ProbeParams> probes(const fluid::Params& p, bool loads) {
   return out;
 }
 
+std::vector<int> parseBodies(const std::string& text) {
+  std::vector<int> out;
+  std::stringstream ss(text);
+  for (std::string item; std::getline(ss, item, ',');) {
+    char* end = nullptr;
+    const long k = std::strtol(item.c_str(), &end, 10);
+    if (item.empty() || *end != '\0' || k < 0 || k > long(water::kMaxObstacles))
+      throw Error("--bodies '" + io::printable(item) + "' is not a whole number in [0, " +
+                  std::to_string(water::kMaxObstacles) + "]");
+    out.push_back(int(k));
+  }
+  if (out.empty()) throw Error("--bodies is empty");
+  return out;
+}
+
+// `n` boxes of 500 kg/m³ half under water at the fill's top, in two rows across it, a tenth of its
+// width wide, added to the scene's obstacles.
+void addBodies(fluid::Params& p, int n, bool dynamic) {
+  if (p.obstacles.size() + std::size_t(n) > water::kMaxObstacles)
+    throw Error("--bodies " + std::to_string(n) + ": the scene has " + std::to_string(p.obstacles.size()) +
+                " obstacles and at most " + std::to_string(water::kMaxObstacles) + " fit");
+  const glm::vec3 lo = glm::max(p.fillMin, p.domainMin), hi = glm::min(p.fillMax, p.domainMax);
+  const int perRow = (n + 1) / 2;
+  for (int i = 0; i < n; ++i) {
+    water::ObstacleParams box;
+    box.shape = water::Shape::Box;
+    box.size = glm::vec3(0.05f * (hi.x - lo.x));
+    box.centre = glm::vec3(lo.x + (hi.x - lo.x) * (float(i % perRow) + 0.5f) / float(perRow),
+                           lo.y + (hi.y - lo.y) * (i < perRow ? 0.25f : 0.75f), hi.z);
+    box.dynamic = dynamic;
+    p.obstacles.push_back(box);
+  }
+}
+
 int run(Env& env, const std::string& sceneName, const std::string& sizes, const std::string& iterations,
-        const std::string& deterministic, const std::string& loads, const std::string& window) {
+        const std::string& deterministic, const std::string& loads, const std::string& bodies,
+        const std::string& dynamic, const std::string& window) {
   const Scene scene = loadScene(resolveScenePath(sceneName));
   const fluid::Params base = fluidScene(scene).model;
   const StepWindow w = parseStepWindow(window);
@@ -60,35 +97,47 @@ int run(Env& env, const std::string& sceneName, const std::string& sizes, const 
   const std::vector<bool> orders =
       deterministic.empty() ? std::vector<bool>{base.deterministic} : parseOnOff(deterministic, "--deterministic");
   const std::vector<bool> measured = parseOnOff(loads, "--loads");
-  Table table({"particles", "spacing", "iters", "determ.", "loads", "cells", "predict ms", "count ms", "scan ms",
-               "reorder ms", "lambda ms", "delta ms", "velocity ms", "viscosity ms", "ms/step", "steps/s",
-               "bytes/particle"});
+  const std::vector<int> bodyCounts = parseBodies(bodies);
+  const std::vector<bool> moving = parseOnOff(dynamic, "--dynamic");
+  // The rows: each body count with each --dynamic setting (none: one row).
+  std::vector<std::pair<int, bool>> bodyRows;
+  for (int n : bodyCounts)
+    for (bool m : moving)
+      if (n > 0 || m == moving.front()) bodyRows.emplace_back(n, n > 0 && m);
+  Table table({"particles", "spacing", "iters", "determ.", "loads", "bodies", "dynamic", "cells", "predict ms",
+               "count ms", "scan ms", "reorder ms", "lambda ms", "delta ms", "velocity ms", "viscosity ms", "ms/step",
+               "steps/s", "bytes/particle"});
   const std::vector<std::size_t> counts = block ? parseSizes(sizes) : std::vector<std::size_t>{0};
-  Steps steps("bench fluid", int(counts.size() * parseIterations(iterations).size() * orders.size() * measured.size()));
+  Steps steps("bench fluid", int(counts.size() * parseIterations(iterations).size() * orders.size() * measured.size() *
+                                 bodyCounts.size()));
   for (std::size_t n : counts)
     for (int k : parseIterations(iterations))
       for (bool stable : orders)
-        for (bool withLoads : measured) {
-          steps.begin((block ? "about " + std::to_string(n) + " particles" : scene.name) + ", " + std::to_string(k) +
-                      " iterations, determ. " + (stable ? "on" : "off") + ", loads " + (withLoads ? "on" : "off"));
-          fluid::Params p = base;
-          p.deterministic = stable;
-          p.probes = probes(base, withLoads);
-          if (block) {
-            p.setSpacing(spacingFor(base, n));
-            if (p.maxParticles > 0) p.maxParticles = std::max(p.maxParticles, int(n + n / 8));
+        for (bool withLoads : measured)
+          for (const auto& [bodyCount, bodiesMove] : bodyRows) {
+            steps.begin((block ? "about " + std::to_string(n) + " particles" : scene.name) + ", " + std::to_string(k) +
+                        " iterations, determ. " + (stable ? "on" : "off") + ", loads " + (withLoads ? "on" : "off") +
+                        ", " + std::to_string(bodyCount) + (bodiesMove ? " dynamic" : " fixed") + " bodies");
+            fluid::Params p = base;
+            p.deterministic = stable;
+            p.probes = probes(base, withLoads);
+            addBodies(p, bodyCount, bodiesMove);
+            if (block) {
+              p.setSpacing(spacingFor(base, n));
+              if (p.maxParticles > 0) p.maxParticles = std::max(p.maxParticles, int(n + n / 8));
+            }
+            p.iterations = k;
+            fluid::Fluid model(env.shaders, p);
+            const PassTimes t = timePasses(w.first, w.last - w.first, [&](gl::GpuProfiler& g) { model.stepOnce(&g); });
+            const double perStep = t.frameMs();
+            table.add({std::to_string(model.count()), fixed(p.spacing(), 5), std::to_string(k), stable ? "on" : "off",
+                       withLoads ? "on" : "off", std::to_string(bodyCount), bodiesMove ? "on" : "off",
+                       std::to_string(model.cells()), t.cell("fluid.predict", 4), t.cell("fluid.count", 4),
+                       t.cell("fluid.scan", 4), t.cell("fluid.reorder", 4), t.cell("fluid.lambda", 4),
+                       t.cell("fluid.delta", 4), t.cell("fluid.velocity", 4), t.cell("fluid.viscosity", 4),
+                       fixed(perStep, 4), fixed(perStep > 0 ? 1000.0 / perStep : 0.0, 0),
+                       std::to_string(model.bytesPerParticle())});
           }
-          p.iterations = k;
-          fluid::Fluid model(env.shaders, p);
-          const PassTimes t = timePasses(w.first, w.last - w.first, [&](gl::GpuProfiler& g) { model.stepOnce(&g); });
-          const double perStep = t.frameMs();
-          table.add({std::to_string(model.count()), fixed(p.spacing(), 5), std::to_string(k), stable ? "on" : "off",
-                     withLoads ? "on" : "off", std::to_string(model.cells()), t.cell("fluid.predict", 4),
-                     t.cell("fluid.count", 4), t.cell("fluid.scan", 4), t.cell("fluid.reorder", 4),
-                     t.cell("fluid.lambda", 4), t.cell("fluid.delta", 4), t.cell("fluid.velocity", 4),
-                     t.cell("fluid.viscosity", 4), fixed(perStep, 4), fixed(perStep > 0 ? 1000.0 / perStep : 0.0, 0),
-                     std::to_string(model.bytesPerParticle())});
-        }
   steps.finish();
   return finish(env, table);
 }
@@ -99,8 +148,8 @@ Benchmark addFluidBench(CLI::App& bench) {
   auto* sub =
       bench.add_subcommand("fluid", "fluid (PBF) step: ms per pass over a step window, steps/s, bytes per particle");
   struct Opts {
-    std::string scene = "bench-fluid", sizes = "65536,1M", iterations = "4", deterministic, loads = "off",
-                window = "10:110";
+    std::string scene = "bench-fluid", sizes = "65536,1M", iterations = "4", deterministic, loads = "off", bodies = "0",
+                dynamic = "on", window = "10:110";
   };
   auto o = std::make_shared<Opts>();
   sub->add_option("scene", o->scene, "scene (default bench-fluid)");
@@ -110,9 +159,14 @@ Benchmark addFluidBench(CLI::App& bench) {
                   "stable grid order (bit-identical runs) on or off, one row each, e.g. on,off");
   sub->add_option("--loads", o->loads,
                   "force probes on the floor and every obstacle off or on, one row each, e.g. off,on");
+  sub->add_option("--bodies", o->bodies,
+                  "dynamic boxes afloat at the water's surface, one row each, e.g. 0,10 (sim/water/bodies.h)");
+  sub->add_option("--dynamic", o->dynamic, "those boxes dynamic or held still, one row each, e.g. on,off");
   sub->add_option("--steps", o->window, "timed step window FIRST:LAST");
-  return {sub,
-          [o](Env& env) { return run(env, o->scene, o->sizes, o->iterations, o->deterministic, o->loads, o->window); }};
+  return {sub, [o](Env& env) {
+            return run(env, o->scene, o->sizes, o->iterations, o->deterministic, o->loads, o->bodies, o->dynamic,
+                       o->window);
+          }};
 }
 
 }  // namespace tidepool::bench

@@ -1,7 +1,8 @@
 // Reading a few bytes back from the GPU without stalling it: request() copies them into a
 // staging buffer and drops a fence; poll() returns them once the fence has passed, never waiting.
-// Used by the divergence watch (a handful of reduced values every few frames) and the particle
-// export (a model's state buffers, one after the other, every exported frame).
+// Used by the divergence watch (a handful of reduced values every few frames), the particle
+// export (a model's state buffers, one after the other, every exported frame) and the fluid's
+// bodies (their loads, read while the GPU starts the next step).
 #pragma once
 
 #include <cstddef>
@@ -31,7 +32,7 @@ class AsyncReadback {
   bool pending() const { return m_fence != nullptr; }
   // True (and `out` filled) once the copy has completed on the GPU; false while it has not.
   bool poll(std::vector<std::byte>& out);
-  // Blocks until the copy is done (tests and shutdown only).
+  // Blocks until the copy is done (the bodies' loads, which the next step needs; tests, shutdown).
   void wait(std::vector<std::byte>& out);
 
  private:

@@ -1,7 +1,7 @@
 // Checkpoints of running stages: 200 frames straight equal 100 frames, a save to a file, a load
 // into a freshly created stage and 100 more frames, bit for bit, for every model (with the state
 // each one keeps besides its buffers in play: a tap, Verlet's accelerations, moving obstacles and
-// walls, rain's random generator, scheduled drops, life's rules and fp16 storage, the swarm's
+// walls, bodies, rain's random generator, scheduled drops, life's rules and fp16 storage, the swarm's
 // image colours, the water stage's switched model); and what a restore refuses.
 #include "scene/checkpoint.h"
 
@@ -129,7 +129,17 @@ const char* kFluid = R"({"model": "fluid", "params": {
   "obstacles": [{"shape": "sphere", "centre": [0.3, 0.1, 0.1], "size": [0.08, 0.08, 0.08],
                  "path": {"kind": "oscillate", "amplitude": [0.04, 0, 0], "period": 1}}]}})";
 
+// Two bodies dropped into the water: one falls onto the other's corner.
+const char* kFluidBodies = R"({"model": "fluid", "params": {
+  "particles": {"spacing": 0.03, "domain_max": [0.4, 0.2, 0.4], "fill": "block", "fill_max": [0.4, 0.2, 0.12]},
+  "engine": {"substeps": 2, "dt": 0.002},
+  "obstacles": [{"shape": "box", "centre": [0.2, 0.1, 0.2], "size": [0.06, 0.06, 0.03], "dynamic": true, "density": 400},
+                {"shape": "box", "centre": [0.24, 0.1, 0.3], "size": [0.04, 0.04, 0.04], "dynamic": true,
+                 "density": 900, "orientation": [0, 20, 10]}]}})";
+
 }  // namespace
+
+TEST_F(Checkpoints, FluidWithBodiesRestoresExactly) { expectExactRestore(shaders(), kFluidBodies); }
 
 TEST_F(Checkpoints, BallsRestoreExactly) { expectExactRestore(shaders(), kBalls); }
 

@@ -4,7 +4,7 @@
 // order decided by thread timing (the grid's atomicAdd slots) may show up here; the grid's stable
 // order within cells (grid/grid.h) removes it. Thread timing only sometimes scrambles that order:
 // UniformGridTest.StableOrderDoesNotDependOnTheAtomicSlots scrambles it on purpose.
-// The water scenes move an obstacle and run a tap, so those paths are covered too.
+// The water scenes move an obstacle and run a tap, so those paths are covered too, and bodies.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -95,6 +95,25 @@ TEST_F(Determinism, Fluid) {
   fluid::Params p = s.params.model<fluid::Params>();
   p.substeps = 4;
   p.vorticity = 0.01f;  // every pass of the step, XSPH and vorticity included
+  expectReproducible<fluid::Fluid>(60, shaders(), p);
+}
+
+// Bodies dropped into the water, onto each other and the walls: their loads are group sums added
+// in a fixed order, their contacts solved in a fixed order.
+TEST_F(Determinism, FluidWithBodies) {
+  const Scene s = waterScene("fluid", R"({"spacing": 0.02, "domain_max": [0.6, 0.4, 0.5], "fill": "block",
+                                     "fill_min": [0, 0, 0], "fill_max": [0.6, 0.4, 0.12]})");
+  fluid::Params p = s.params.model<fluid::Params>();
+  p.substeps = 4;
+  water::ObstacleParams box;
+  box.shape = water::Shape::Box;
+  box.size = glm::vec3(0.06f, 0.05f, 0.03f);
+  box.dynamic = true;
+  p.obstacles = {box, box};
+  p.obstacles[0].centre = glm::vec3(0.3f, 0.2f, 0.2f);
+  p.obstacles[1].centre = glm::vec3(0.34f, 0.22f, 0.3f);
+  p.obstacles[1].orientation = glm::vec3(0.0f, 25.0f, 0.0f);
+  p.obstacles[1].density = 1500.0f;
   expectReproducible<fluid::Fluid>(60, shaders(), p);
 }
 

@@ -62,9 +62,13 @@ void Balls::reset() {
   char radius[48];
   std::snprintf(radius, sizeof radius, "particles.radius = %g m", double(p.radius));
   water::checkWaterRequest("balls", "ball", radius, water::estimatedWater(p), p, cost());
+  for (std::size_t k = 0; k < m_params.obstacles.size(); ++k)
+    if (m_params.obstacles[k].dynamic)
+      throw Error("balls: obstacles[" + std::to_string(k) +
+                  "] is dynamic, and bodies move with the fluid only; run the scene as fluid (\"model\": \"fluid\")");
   m_obstacles.build(m_params.obstacles, p.radius);  // a bad mesh fails before anything is allocated
   m_radius = p.radius;
-  m_obstacles.place(m_params.obstacles, 0.0, p.domainMin, p.domainMax);
+  m_obstacles.place(m_params.obstacles, water::posesAt(m_params.obstacles, 0.0), p.domainMin, p.domainMax);
   const std::vector<glm::vec4> water =
       water::waterParticles(p, [this](glm::vec3 q) { return m_obstacles.occupied(q); });
   allocate(water.size(), water.size() + (m_params.tap ? std::size_t(m_params.tapMax) : 0));

@@ -77,7 +77,8 @@ void Balls::rebuildObstacles() {
 }
 
 void Balls::placeObstacles(double time, gl::GpuProfiler* profiler) {
-  m_obstacles.place(m_params.obstacles, time, m_params.domainMin, m_params.domainMax, profiler);
+  m_obstacles.place(m_params.obstacles, water::posesAt(m_params.obstacles, time), m_params.domainMin,
+                    m_params.domainMax, profiler);
 }
 
 std::vector<gl::ShaderDefine> Balls::defines(bool verlet) const {

@@ -44,6 +44,20 @@ void BoundaryLoads::sum() {
 
 water::Loads BoundaryLoads::read(double scale) const {
   const std::vector<glm::vec4> sums = m_sums.read<glm::vec4>(2 * m_chunks * m_slots);
+  return fromSums(sums.data(), scale);
+}
+
+void BoundaryLoads::request() { m_copy.request(m_sums, 2 * m_chunks * m_slots * sizeof(glm::vec4)); }
+
+water::Loads BoundaryLoads::received(double scale) {
+  std::vector<std::byte> bytes;
+  m_copy.wait(bytes);
+  if (bytes.size() != 2 * m_chunks * m_slots * sizeof(glm::vec4))
+    return water::Loads::unmeasured(m_slots - water::kWalls);
+  return fromSums(reinterpret_cast<const glm::vec4*>(bytes.data()), scale);
+}
+
+water::Loads BoundaryLoads::fromSums(const glm::vec4* sums, double scale) const {
   water::Loads out;
   for (GLuint s = 0; s < m_slots; ++s) {
     water::Load load;

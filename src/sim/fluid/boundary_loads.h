@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "gl/async_readback.h"
 #include "gl/buffer.h"
 #include "gl/shader_library.h"
 #include "sim/water/particle_water.h"
@@ -29,10 +30,17 @@ class BoundaryLoads {
   void sum();  // the step's sums per chunk of groups and slot (after its last iteration)
   // The sums as forces and torques: `scale` = −m / dt² (kg/s²); walls about nothing (zero torque).
   water::Loads read(double scale) const;
+  // The same in two halves, so that the GPU goes on with other work in between: request() copies
+  // the step's sums aside, received() waits for that copy and reads it.
+  void request();
+  water::Loads received(double scale);
 
  private:
+  water::Loads fromSums(const glm::vec4* sums, double scale) const;
+
   gl::ShaderLibrary& m_shaders;
   gl::Buffer m_partials, m_sums;
+  gl::AsyncReadback m_copy;
   std::size_t m_groups = 0, m_chunks = 0;
   GLuint m_slots = 0;
 };

@@ -29,6 +29,7 @@
 #include "sim/fluid/rest_lattice.h"
 #include "sim/model.h"
 #include "sim/particle_memory.h"
+#include "sim/water/bodies.h"
 #include "sim/water/obstacles.h"
 #include "sim/water/particle_water.h"
 #include "sim/water/water_frame.h"
@@ -54,7 +55,7 @@ class Fluid final : public sim::Model, public water::ParticleWater {
   std::size_t count() const override { return m_count; }  // sim::Model and water::ParticleWater
   std::string status() const override;
   std::uint64_t stepCount() const override { return m_steps; }
-  std::vector<sim::StateBuffer> stateBuffers() override;  // positions, velocities
+  std::vector<sim::StateBuffer> stateBuffers() override;  // positions, velocities (and bodies)
 
   void stepOnce(gl::GpuProfiler* profiler = nullptr);  // one step of water.dt
   Stats stats();                                       // the density probe and energies (blocking)
@@ -72,6 +73,7 @@ class Fluid final : public sim::Model, public water::ParticleWater {
   float radius() const override { return m_params.radius; }
   water::Packing packing() const override { return Params::kPacking; }
   const water::Obstacles& obstacles() const override { return m_obstacles; }
+  const water::Bodies& bodies() const { return m_bodies; }  // the dynamic obstacles
   const water::Setup& water() const override { return m_params; }
   glm::vec3 wallMin() const override { return m_walls.min; }
   glm::vec3 wallMax() const override { return m_walls.max; }
@@ -105,8 +107,9 @@ class Fluid final : public sim::Model, public water::ParticleWater {
   std::optional<std::string> unhealthy(const sim::DivergenceWatch::Words& words) override;
   std::string method() const override;
   void resume(const sim::StateStamp& good) override;
-  // Checkpoints: the clock, the count and the tap's counters (obstacle poses and walls follow
-  // from the time and the parameters; λ and the predictions are made anew every step).
+  // Checkpoints: the clock, the count and the tap's counters (the bodies are a state buffer; other
+  // obstacles' poses and the walls follow from the time and the parameters; λ and the
+  // predictions are made anew every step).
   void visitOwnState(sim::StateVisitor& v) override;
 
   void allocate(std::size_t count, std::size_t capacity);
@@ -122,6 +125,15 @@ class Fluid final : public sim::Model, public water::ParticleWater {
   void sortByCell(gl::GpuProfiler* profiler);
   void solve(gl::GpuProfiler* profiler);  // the iterations
   void updateVelocities(gl::GpuProfiler* profiler);
+  // The dynamic obstacles. A step asks for the water's loads on them at its end
+  // (requestBodyLoads) and the next one reads them (receiveBodyLoads) after it has queued its
+  // predict and sort, so that the GPU has work while the CPU waits; moveBodies() then moves them
+  // to the step's end (from m_bodyState after a restore). settleBodies() writes their states,
+  // with any loads still on the way, into m_bodyState (for checkpoints and the watch).
+  void requestBodyLoads();
+  void receiveBodyLoads();
+  void moveBodies();
+  void settleBodies();
   // With m_loadsOn: binds the loads' partials and returns BOUNDARY_LOADS (and LOADS_WALLS with
   // m_wallLoadsOn), for predict and Δp.
   std::vector<gl::ShaderDefine> bindLoads() const;
@@ -142,11 +154,15 @@ class Fluid final : public sim::Model, public water::ParticleWater {
   gl::Buffer m_x, m_v, m_pred, m_scratch[2], m_lambda, m_lambdaSum, m_permutation;
   std::unique_ptr<grid::UniformGrid> m_grid;
   water::Obstacles m_obstacles;
+  water::Bodies m_bodies;
+  gl::Buffer m_bodyState;           // water::BodyState per obstacle: in the state buffers (checkpoints, the watch)
+  bool m_bodiesRestored = false;    // m_bodyState was loaded or restored: m_bodies reads it at the next step
+  bool m_bodyLoadsPending = false;  // the last step's loads are on their way back (requestBodyLoads)
   std::string m_obstacleError;
   water::Walls m_walls;
   DensityProbe m_probe;
   BoundaryLoads m_loads;
-  // A force probe is listed: the step measures the loads, the walls' only for a probe on a wall
+  // A force probe or a dynamic obstacle is listed: the step measures the loads, the walls' only for a probe on a wall
   // (theirs cost the most: most work groups touch a wall); after it, m_loads holds its sums.
   bool m_loadsOn = false, m_wallLoadsOn = false;
   double m_time = 0;

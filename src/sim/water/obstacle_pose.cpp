@@ -21,15 +21,11 @@ glm::mat4 ObstaclePose::matrix() const {
   return m;
 }
 
-bool animated(const ObstacleParams& o) {
-  return (o.spin != 0.0f && o.spinAxis != glm::vec3(0.0f)) ||
-         (o.path.kind != PathKind::None && o.path.amplitude != glm::vec3(0.0f));
-}
-
 ObstaclePose obstaclePose(const ObstacleParams& o, double time) {
   ObstaclePose pose;
   pose.rotation = orientationMatrix(o.orientation);
   pose.centre = o.centre;
+  if (o.dynamic) return pose;  // at rest where it starts: bodies.h moves it
   const float axisLength = glm::length(o.spinAxis);
   if (o.spin != 0.0f && axisLength > 0.0f) {
     const glm::vec3 axis = o.spinAxis / axisLength;
@@ -52,6 +48,13 @@ ObstaclePose obstaclePose(const ObstacleParams& o, double time) {
     }
   }
   return pose;
+}
+
+std::vector<ObstaclePose> posesAt(const std::vector<ObstacleParams>& obstacles, double time) {
+  std::vector<ObstaclePose> out;
+  out.reserve(obstacles.size());
+  for (const ObstacleParams& o : obstacles) out.push_back(obstaclePose(o, time));
+  return out;
 }
 
 }  // namespace tidepool::water

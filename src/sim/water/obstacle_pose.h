@@ -6,6 +6,7 @@
 #pragma once
 
 #include <glm/glm.hpp>
+#include <vector>
 
 #include "sim/water/setup.h"
 
@@ -25,9 +26,7 @@ struct ObstaclePose {
 };
 
 ObstaclePose obstaclePose(const ObstacleParams& o, double time);
-
-// True when the obstacle moves by itself (spin or path): its pose changes every step.
-bool animated(const ObstacleParams& o);
+std::vector<ObstaclePose> posesAt(const std::vector<ObstacleParams>& obstacles, double time);  // each one's
 
 glm::mat3 orientationMatrix(glm::vec3 degrees);  // about x, then y, then z
 

@@ -154,10 +154,9 @@ void Obstacles::refreshVolumes() {
   m_dirty = true;  // sorted again at the next place()
 }
 
-void Obstacles::place(const std::vector<ObstacleParams>& params, double time, glm::vec3 domainMin, glm::vec3 domainMax,
-                      gl::GpuProfiler* profiler) {
-  std::vector<ObstaclePose> poses(m_bodies.size());
-  for (std::size_t k = 0; k < poses.size(); ++k) poses[k] = obstaclePose(params[k], time);
+void Obstacles::place(const std::vector<ObstacleParams>& params, std::vector<ObstaclePose> poses, glm::vec3 domainMin,
+                      glm::vec3 domainMax, gl::GpuProfiler* profiler) {
+  poses.resize(m_bodies.size());
   const bool moved = m_dirty || poses != m_poses;
   m_poses = std::move(poses);
   m_dirty = false;
@@ -175,15 +174,31 @@ void Obstacles::place(const std::vector<ObstacleParams>& params, double time, gl
   m_poseBlock.upload(&block, sizeof block);
 
   // The grid covers where the obstacles can be (each one's reach about its path's range of
-  // centres, fixed while it moves) and balls can touch them (the domain and 2r around it).
+  // centres, fixed while it moves; a body's about where it is) and balls can touch them (the
+  // domain and 2r around it).
   const float margin = 2.0f * m_radius;
   glm::vec3 lo(1e30f), hi(-1e30f);
+  bool dynamic = false;
   for (std::size_t k = 0; k < m_bodies.size(); ++k) {
     if (m_bodies[k].particles.empty()) continue;
     const ObstacleParams& o = params[k];
+    if (o.dynamic) {  // where it is now
+      lo = glm::min(lo, m_poses[k].centre - m_bodies[k].reach);
+      hi = glm::max(hi, m_poses[k].centre + m_bodies[k].reach);
+      dynamic = true;
+      continue;
+    }
     const glm::vec3 swing = o.path.kind == PathKind::None ? glm::vec3(0.0f) : glm::abs(o.path.amplitude);
     lo = glm::min(lo, o.centre - swing - m_bodies[k].reach);
     hi = glm::max(hi, o.centre + swing + m_bodies[k].reach);
+  }
+  if (dynamic) {
+    // Bodies move every step: their bounds in whole blocks of 16 cells, so that the grid is made
+    // anew only when one crosses into another block. Water particles outside the grid skip the
+    // obstacles at once, so it covers no more of the domain than the bodies need.
+    const float block = 16.0f * cellSize();
+    lo = domainMin + glm::floor((lo - domainMin) / block) * block;
+    hi = domainMin + glm::ceil((hi - domainMin) / block) * block;
   }
   lo = glm::max(lo - margin, domainMin - margin);
   hi = glm::min(hi + margin, domainMax + margin);

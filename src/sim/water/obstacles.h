@@ -1,6 +1,6 @@
 // The obstacles of the water (balls and fluid): each one's fixed particles are built once in its own frame
 // (shape, size, mesh; water_init.h) and placed every step by its rigid pose (centre, orientation,
-// spin, path; obstacle_pose.h), evaluated from the time. On the GPU:
+// spin, path; obstacle_pose.h), evaluated from the time, or a dynamic one's (bodies.h). On the GPU:
 //   bodies    all obstacles' particles in their own frames, one after the other, w = obstacle index
 //   place     obstacle_place.comp: world = centre_k + R_k·body for particle of obstacle k
 //   grid      the placed particles of every obstacle in one grid of cell 2r over their reach,
@@ -68,10 +68,11 @@ class Obstacles {
   // (a missing or open mesh) is undone in `params`. Returns whether anything was rebuilt or
   // refused; `error` then says what was refused (empty: nothing).
   bool update(std::vector<ObstacleParams>& params, float radius, std::string& error);
-  // Poses at `time`; when one changed (or the bodies did), the particles' world positions and the
-  // grid (bounded by the domain, where particles can be).
-  void place(const std::vector<ObstacleParams>& params, double time, glm::vec3 domainMin, glm::vec3 domainMax,
-             gl::GpuProfiler* profiler = nullptr);
+  // The obstacles at `poses` (posesAt(params, time), or a model's bodies for the dynamic ones):
+  // when one changed (or the bodies did), the particles' world positions and the grid (bounded
+  // by the domain, where particles can be; all of it while a dynamic obstacle is listed).
+  void place(const std::vector<ObstacleParams>& params, std::vector<ObstaclePose> poses, glm::vec3 domainMin,
+             glm::vec3 domainMax, gl::GpuProfiler* profiler = nullptr);
   bool occupied(glm::vec3 world) const;  // inside an obstacle at its placed pose
   // What common/obstacle_grid.glsl reads: its uniforms (defaults when none is active()), and
   // bind() binds its pose block and buffer textures (when active()).
@@ -86,6 +87,7 @@ class Obstacles {
   void refreshVolumes();
   const gl::Buffer* volumes() const { return m_volumeFn ? &m_volumeSorted : nullptr; }  // vec4 (x), grid order
   float cellSize() const { return 2.0f * m_radius; }                                    // of the obstacle grid
+  float radius() const { return m_radius; }                                             // r they were built for
 
   bool active() const { return m_grid != nullptr; }  // any particles: the kernels' HAS_OBSTACLE
   std::size_t size() const { return m_bodies.size(); }

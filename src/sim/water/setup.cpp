@@ -112,6 +112,11 @@ void visit(ParamVisitor& v, ObstacleParams& o) {
     v.real({"phase", "Phase", "degrees at t = 0"}, o.path.phase, -360.0f, 360.0f);
     v.endGroup();
   }
+  v.flag({"dynamic", "Dynamic",
+          "a rigid body the water, gravity and contacts move (fluid), starting at rest at its centre; spin and path "
+          "unused"},
+         o.dynamic);
+  v.real({"density", "Density", "kg/m^3 of a dynamic obstacle (water: 1000)"}, o.density, 1.0f, 100000.0f);
 }
 
 bool sameBody(const ObstacleParams& a, const ObstacleParams& b) {

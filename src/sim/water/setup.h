@@ -34,7 +34,7 @@ struct ObstaclePath {
 
 // One obstacle: fixed particles from a shape, built once in the obstacle's own frame (shape,
 // mesh, shell, size), and a rigid pose that may change every step without rebuilding them
-// (centre, orientation, spin, path; sim/water/obstacle_pose.h).
+// (centre, orientation, spin, path; sim/water/obstacle_pose.h), or, dynamic, from its motion.
 struct ObstacleParams {
   Shape shape = Shape::Sphere;
   std::string mesh = "torus";  // mesh: OBJ in assets/meshes (".obj" optional) or a path
@@ -45,6 +45,10 @@ struct ObstacleParams {
   float spin = 0.0f;                 // rad/s about spinAxis through the (moving) centre
   glm::vec3 spinAxis{0.0f, 0.0f, 1.0f};
   ObstaclePath path;
+  // A rigid body the water pushes (sim/water/bodies.h): gravity, the water and contacts move it
+  // from its centre and orientation at rest; spin and path are then unused.
+  bool dynamic = false;
+  float density = 500.0f;  // kg/m³ of a dynamic obstacle
 };
 void visit(ParamVisitor& v, ObstacleParams& o);
 // The parameters its particles are built from (a change rebuilds them; pose changes do not).

@@ -215,6 +215,25 @@ bool Obstacle::inside(glm::vec3 q) const {
   return false;
 }
 
+double Obstacle::volume(std::size_t particles) const {
+  const glm::dvec3 s(m_params.size);
+  const double pi = 3.141592653589793;
+  if (!m_params.shell) {
+    if (m_mesh) {  // the divergence theorem over the closed surface's triangles
+      const io::TriangleMesh& m = m_mesh->mesh();
+      double six = 0;
+      for (const glm::uvec3& t : m.triangles)
+        six +=
+            glm::dot(glm::dvec3(m.vertices[t.x]), glm::cross(glm::dvec3(m.vertices[t.y]), glm::dvec3(m.vertices[t.z])));
+      return std::abs(six) / 6.0;
+    }
+    if (m_params.shape == Shape::Sphere) return 4.0 / 3.0 * pi * s.x * s.x * s.x;
+    if (m_params.shape == Shape::Box) return 8.0 * s.x * s.y * s.z;
+    if (m_params.shape == Shape::Capsule) return pi * s.x * s.x * (2.0 * s.z + 4.0 / 3.0 * s.x);
+  }
+  return double(particles) * double(volumePerParticle(m_radius, Packing::Hcp));
+}
+
 std::vector<glm::vec4> Obstacle::particles() const {
   const ObstacleParams& o = m_params;
   std::vector<glm::vec4> out;
@@ -245,6 +264,19 @@ std::vector<glm::vec4> Obstacle::particles() const {
       if (!surface) continue;
     }
     out.emplace_back(q, 0.0f);
+  }
+  // A box's particles lie as far inside each face as inside the opposite one: the lattice's layers
+  // start where its box does, so the room left inside each face differs (up to a layer spacing);
+  // shifted by half the difference, both faces keep the same room (the particles stay inside)
+  // and the particles' centre of mass is the box's.
+  if (!out.empty() && o.shape == Shape::Box) {
+    glm::vec3 lo(1e30f), hi(-1e30f);
+    for (const glm::vec4& q : out) {
+      lo = glm::min(lo, glm::vec3(q));
+      hi = glm::max(hi, glm::vec3(q));
+    }
+    const glm::vec3 shift = -0.5f * (lo + hi);
+    for (glm::vec4& q : out) q += glm::vec4(shift, 0.0f);
   }
   return out;
 }

@@ -31,7 +31,10 @@ class Obstacle {
   ~Obstacle();
   bool inside(glm::vec3 q) const;            // q (own frame) in the shape (analytic shapes: boundary included)
   std::vector<glm::vec4> particles() const;  // vec4: position m (own frame), w = 0
-  const io::TriangleMesh* mesh() const;      // the scaled mesh of a mesh shape (own frame), else null
+  // m³ of material: a solid sphere's, box's or capsule's in closed form, a closed mesh's enclosed
+  // volume; shells, cups and helices: `particles` × the HCP lattice's volume per particle.
+  double volume(std::size_t particles) const;
+  const io::TriangleMesh* mesh() const;  // the scaled mesh of a mesh shape (own frame), else null
 
  private:
   ObstacleParams m_params;

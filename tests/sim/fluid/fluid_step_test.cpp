@@ -104,7 +104,8 @@ struct StepRun {
 };
 
 // `obstacles`: 0; 1: a sphere's shell just above the block, within h of its top; 2: and a solid
-// box in the block's corner, which pushes the particles inside it out to the contact distance.
+// box in the block's corner, which pushes the particles inside it out to the contact distance;
+// 3: and a small solid sphere beside the box, so that particles between them have both in reach.
 StepRun run(gl::ShaderLibrary& shaders, Params p, int obstacles) {
   if (obstacles > 0) {
     water::ObstacleParams o;
@@ -120,6 +121,12 @@ StepRun run(gl::ShaderLibrary& shaders, Params p, int obstacles) {
     o.centre = glm::vec3(0.025f, 0.03f, 0.02f);
     o.size = glm::vec3(0.012f, 0.018f, 0.01f);
     o.orientation = glm::vec3(10.0f, 20.0f, 30.0f);
+    p.obstacles.push_back(o);
+  }
+  if (obstacles > 2) {
+    water::ObstacleParams o;
+    o.centre = glm::vec3(0.055f, 0.03f, 0.02f);
+    o.size = glm::vec3(0.008f);
     p.obstacles.push_back(o);
   }
   std::vector<glm::vec4> pos, vel;
@@ -181,17 +188,17 @@ TEST_F(FluidTest, IterationsViscosityVorticityAndObstacleEqualTheCpuReference) {
   EXPECT_LT(r.velocity, kStepError);
 }
 
-// The step with two obstacles measuring the loads (force probes on an obstacle and a wall): the
+// The step with three obstacles measuring the loads (force probes on an obstacle and a wall): the
 // positions are bit for bit those of the step without; each wall's force and each obstacle's force and torque equal
 // the reference's, within kLoadError of the largest load of their kind.
 TEST_F(FluidTest, LoadsOnTheWallsAndTheObstaclesEqualTheCpuReferenceAndLeaveTheStepAlone) {
   Params p = box();
   p.iterations = 3;
-  const StepRun plain = run(shaders(), p, 2);
+  const StepRun plain = run(shaders(), p, 3);
   p.probes = {{.kind = water::ProbeKind::Force, .obstacle = 0}};
-  EXPECT_TRUE(std::isnan(run(shaders(), p, 2).loads.walls[0].force.x)) << "no probe on a wall: walls not measured";
+  EXPECT_TRUE(std::isnan(run(shaders(), p, 3).loads.walls[0].force.x)) << "no probe on a wall: walls not measured";
   p.probes.push_back({.kind = water::ProbeKind::Force, .wall = water::ProbeWall::MaxZ});
-  const StepRun r = run(shaders(), p, 2);
+  const StepRun r = run(shaders(), p, 3);
   ASSERT_EQ(r.positions.size(), plain.positions.size());
   for (std::size_t i = 0; i < r.positions.size(); ++i) ASSERT_EQ(r.positions[i], plain.positions[i]) << i;
   EXPECT_LT(r.displacement, kStepError) << "the step with a turned box pushing particles out";
@@ -208,8 +215,8 @@ TEST_F(FluidTest, LoadsOnTheWallsAndTheObstaclesEqualTheCpuReferenceAndLeaveTheS
   std::printf("walls: largest %.4g N, error %.3g\n", wallLargest, wallWorst / wallLargest);
   EXPECT_GT(wallLargest, 0.0);
   EXPECT_LT(wallWorst / wallLargest, kLoadError);  // fails on NaN too
-  ASSERT_EQ(r.loads.obstacles.size(), 2u);
-  for (std::size_t k = 0; k < 2; ++k) {
+  ASSERT_EQ(r.loads.obstacles.size(), 3u);
+  for (std::size_t k = 0; k < 3; ++k) {
     const glm::dvec3 force = r.scale * r.cpu.obstacle[k], torque = r.scale * r.cpu.moment[k];
     const double forceError = glm::length(r.loads.obstacles[k].force - force) / glm::length(force);
     const double torqueError = glm::length(r.loads.obstacles[k].torque - torque) / glm::length(torque);

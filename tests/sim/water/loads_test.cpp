@@ -182,7 +182,7 @@ TEST_F(LoadsTest, ARestingTanksFloorCarriesItsWeightAndItsWallsTheHydrostaticThr
 
 // A box of half extent 0.04 m held 0.07 m under water in a tank filled 0.3 m deep: the water
 // pushes it up by ρ g V, V = 0.08³ m³ the box asked for (and kept free of water by the fill),
-// within 8%: measured 5.9% more, the water settling into the hollows between the box's surface
+// within 8%: measured 5.3% more, the water settling into the hollows between the box's surface
 // particles (docs/ACCURACY.md, "Probes"); the floor carries the water's weight and that lift;
 // no sideways force or torque to speak of (under 2% of the lift, in N and N·m per m).
 TEST_F(LoadsTest, ABoxHeldUnderWaterIsPushedUpByTheWeightOfTheWaterItDisplaces) {

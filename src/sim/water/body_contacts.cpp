@@ -1,0 +1,172 @@
+#include "sim/water/body_contacts.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <unordered_map>
+
+namespace tidepool::water {
+namespace {
+
+// A sparse grid of cell 2r + margin over one body's particles near another: cell -> particles.
+struct CellHash {
+  double cell = 1;
+  std::unordered_map<std::uint64_t, std::vector<glm::dvec3>> cells;
+  static std::uint64_t key(glm::ivec3 c) {
+    return (std::uint64_t(std::uint32_t(c.x) & 0x1fffffu) << 42) |
+           (std::uint64_t(std::uint32_t(c.y) & 0x1fffffu) << 21) | std::uint64_t(std::uint32_t(c.z) & 0x1fffffu);
+  }
+  glm::ivec3 at(glm::dvec3 p) const { return glm::ivec3(glm::floor(p / cell)); }
+  void add(glm::dvec3 p) { cells[key(at(p))].push_back(p); }
+};
+
+// A body's particles in the world at its present pose (the rotation made once, not per particle).
+struct Placer {
+  glm::dmat3 rotation;
+  glm::dvec3 position, centre;
+  explicit Placer(const RigidBody& b) : rotation(b.rotation()), position(b.state().position), centre(b.mass().centre) {}
+  glm::dvec3 operator()(glm::vec4 own) const { return position + rotation * (glm::dvec3(own) - centre); }
+};
+
+void wallContacts(const std::vector<ContactBody>& bodies, const Walls& walls, const ContactSettings& s,
+                  std::vector<BodyContact>& out) {
+  const glm::dvec3 lo = glm::dvec3(walls.min) + s.radius, hi = glm::dvec3(walls.max) - s.radius;
+  for (std::size_t k = 0; k < bodies.size(); ++k) {
+    const RigidBody& b = *bodies[k].body;
+    const glm::dvec3 origin(b.pose().centre);
+    const double near = bodies[k].reach + s.margin;
+    if (glm::all(glm::greaterThan(origin - near, glm::dvec3(walls.min))) &&
+        glm::all(glm::lessThan(origin + near, glm::dvec3(walls.max))))
+      continue;
+    const Placer place(b);
+    for (const glm::vec4& q : *bodies[k].particles) {
+      const glm::dvec3 p = place(q);
+      for (int axis = 0; axis < 3; ++axis) {
+        const double below = p[axis] - lo[axis], above = hi[axis] - p[axis];
+        if (below < s.margin) {
+          BodyContact c{.a = int(k), .point = p, .gap = below};
+          c.normal[axis] = 1.0;
+          c.point[axis] -= s.radius;
+          c.wallVelocity[axis] = walls.minVel[axis];
+          out.push_back(c);
+        }
+        if (above < s.margin) {
+          BodyContact c{.a = int(k), .point = p, .gap = above};
+          c.normal[axis] = -1.0;
+          c.point[axis] += s.radius;
+          c.wallVelocity[axis] = walls.maxVel[axis];
+          out.push_back(c);
+        }
+      }
+    }
+  }
+}
+
+void pairContacts(const std::vector<ContactBody>& bodies, const ContactSettings& s, std::vector<BodyContact>& out) {
+  const double touch = 2.0 * s.radius, reachPair = touch + s.margin;
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    for (std::size_t j = i + 1; j < bodies.size(); ++j) {
+      const RigidBody &a = *bodies[i].body, &b = *bodies[j].body;
+      const glm::dvec3 ca(a.pose().centre), cb(b.pose().centre);
+      if (glm::distance(ca, cb) > bodies[i].reach + bodies[j].reach + s.margin) continue;
+      // b's particles that a's could reach, hashed; then a's that b's could reach, against them.
+      CellHash hash{.cell = reachPair, .cells = {}};
+      const Placer placeA(a), placeB(b);
+      for (const glm::vec4& q : *bodies[j].particles) {
+        const glm::dvec3 p = placeB(q);
+        if (glm::distance(p, ca) <= bodies[i].reach + reachPair) hash.add(p);
+      }
+      if (hash.cells.empty()) continue;
+      for (const glm::vec4& q : *bodies[i].particles) {
+        const glm::dvec3 p = placeA(q);
+        if (glm::distance(p, cb) > bodies[j].reach + reachPair) continue;
+        const glm::ivec3 c = hash.at(p);
+        for (int dz = -1; dz <= 1; ++dz)
+          for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+              const auto cell = hash.cells.find(CellHash::key(c + glm::ivec3(dx, dy, dz)));
+              if (cell == hash.cells.end()) continue;
+              for (const glm::dvec3& o : cell->second) {
+                const double dist = glm::distance(p, o);
+                if (dist >= reachPair || dist <= 0.0) continue;
+                out.push_back(BodyContact{
+                    .a = int(i), .b = int(j), .point = 0.5 * (p + o), .normal = (p - o) / dist, .gap = dist - touch});
+              }
+            }
+      }
+    }
+}
+
+// 1 / (the impulse along n that changes the relative velocity at the contact by one unit).
+double inverseMass(const RigidBody& body, glm::dvec3 r, glm::dvec3 n) {
+  const glm::dvec3 rn = glm::cross(r, n);
+  return 1.0 / body.mass().mass + glm::dot(rn, body.inverseInertiaWorld() * rn);
+}
+
+struct Row {
+  BodyContact contact;
+  double normalImpulse = 0;
+  glm::dvec3 frictionImpulse{0.0};
+};
+
+}  // namespace
+
+std::vector<BodyContact> findContacts(const std::vector<ContactBody>& bodies, const Walls& walls,
+                                      const ContactSettings& s) {
+  std::vector<BodyContact> out;
+  wallContacts(bodies, walls, s, out);
+  pairContacts(bodies, s, out);
+  return out;
+}
+
+void resolveContacts(const std::vector<ContactBody>& bodies, const std::vector<BodyContact>& contacts, double dt,
+                     const ContactSettings& s) {
+  std::vector<Row> rows;
+  rows.reserve(contacts.size());
+  for (const BodyContact& c : contacts) rows.push_back({c});
+  for (int it = 0; it < s.iterations; ++it)
+    for (Row& row : rows) {
+      const BodyContact& c = row.contact;
+      RigidBody& a = *bodies[std::size_t(c.a)].body;
+      RigidBody* b = c.b >= 0 ? bodies[std::size_t(c.b)].body : nullptr;
+      auto relative = [&] { return a.velocityAt(c.point) - (b ? b->velocityAt(c.point) : c.wallVelocity); };
+      auto apply = [&](glm::dvec3 impulse) {
+        a.applyImpulse(impulse, c.point);
+        if (b) b->applyImpulse(-impulse, c.point);
+      };
+      auto inverse = [&](glm::dvec3 dir) {
+        double k = inverseMass(a, c.point - a.state().position, dir);
+        if (b) k += inverseMass(*b, c.point - b->state().position, dir);
+        return k;
+      };
+      // Normal: the closing speed the gap allows, or the push out of an overlap.
+      const double target = c.gap > 0.0 ? -c.gap / dt : -s.baumgarte * c.gap / dt;
+      const double vn = glm::dot(relative(), c.normal);
+      const double next = std::max(0.0, row.normalImpulse + (target - vn) / inverse(c.normal));
+      apply((next - row.normalImpulse) * c.normal);
+      row.normalImpulse = next;
+      // Friction: stop the sliding, up to μ times the normal impulse.
+      const glm::dvec3 v = relative(), slide = v - glm::dot(v, c.normal) * c.normal;
+      const double speed = glm::length(slide);
+      glm::dvec3 friction = row.frictionImpulse;
+      if (speed > 0.0) friction -= slide / (speed * inverse(slide / speed)) * speed;
+      const double most = s.friction * row.normalImpulse, size = glm::length(friction);
+      if (size > most) friction *= most / size;
+      apply(friction - row.frictionImpulse);
+      row.frictionImpulse = friction;
+    }
+}
+
+void stepBodies(const std::vector<ContactBody>& bodies, double dt, glm::dvec3 gravity, const Walls& walls,
+                double radius) {
+  double fastest = 0;
+  for (const ContactBody& c : bodies) {
+    c.body->accelerate(dt, gravity);
+    fastest = std::max(fastest, glm::length(c.body->velocity()) + glm::length(c.body->omega()) * c.reach);
+  }
+  const ContactSettings settings{.radius = radius, .margin = std::max(0.5 * radius, 2.0 * fastest * dt)};
+  resolveContacts(bodies, findContacts(bodies, walls, settings), dt, settings);
+  for (const ContactBody& c : bodies) c.body->move(dt);
+}
+
+}  // namespace tidepool::water

@@ -1,0 +1,70 @@
+// A dynamic obstacle as a rigid body: six degrees of freedom (the centre of mass, the orientation
+// as a unit quaternion, linear and angular momentum), its mass, centre of mass and inertia
+// computed from its particles, and what the water did to it in the last step. Integrated with the
+// water's steps (semi-implicit Euler, in double):
+//   P += dt (F + m g),  L += dt τ         the water's load of the last step, and gravity
+//   contacts (body_contacts.h)           impulses that stop it entering a wall or another body
+//   x += dt P / m,  q += dt/2 (0, ω) q   ω = R I⁻¹ Rᵀ L, then q normalised
+// The water's force and torque come from the step before (explicit coupling, as in Akinci et al.
+// 2012, "Versatile rigid-fluid coupling for incompressible SPH", section 5).
+#pragma once
+
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <vector>
+
+#include "sim/water/obstacle_pose.h"
+
+namespace tidepool::water {
+
+struct MassProperties {
+  double mass = 0;                 // kg
+  glm::dvec3 centre{0.0};          // centre of mass in the own frame, m
+  glm::dmat3 inertia{1.0};         // about the centre of mass, own frame, kg·m²
+  glm::dmat3 inverseInertia{1.0};  // its inverse, 1/(kg·m²)
+};
+// Mass = density × volume; the centre and the inertia as of equal masses on the particles (own
+// frame, as built), plus each particle's own share as a cube of the lattice's volume per particle.
+MassProperties massProperties(const std::vector<glm::vec4>& particles, double volume, double density);
+
+// The state a step changes: what checkpoints and the divergence watch keep, kBodyDoubles doubles.
+struct BodyState {
+  glm::dvec3 position{0.0};                    // the centre of mass, world, m
+  glm::dquat orientation{1.0, 0.0, 0.0, 0.0};  // own frame -> world
+  glm::dvec3 momentum{0.0};                    // kg·m/s
+  glm::dvec3 angularMomentum{0.0};             // about the centre of mass, world, kg·m²/s
+  glm::dvec3 force{0.0}, torque{0.0};          // the water's in the last step, N and N·m about the centre of mass
+  double pad = 0;
+};
+constexpr std::size_t kBodyDoubles = sizeof(BodyState) / sizeof(double);
+static_assert(sizeof(BodyState) == 20 * sizeof(double), "BodyState is a plain record of doubles");
+
+class RigidBody {
+ public:
+  // At rest, where the obstacle's centre and orientation put it.
+  RigidBody(const MassProperties& mass, const ObstacleParams& o);
+
+  const MassProperties& mass() const { return m_mass; }
+  void setMass(const MassProperties& mass) { m_mass = mass; }
+  BodyState& state() { return m_state; }
+  const BodyState& state() const { return m_state; }
+
+  glm::dmat3 rotation() const { return glm::mat3_cast(m_state.orientation); }
+  glm::dvec3 velocity() const { return m_state.momentum / m_mass.mass; }  // of the centre of mass
+  glm::dvec3 omega() const;                                               // world, rad/s
+  glm::dmat3 inverseInertiaWorld() const;                                 // R I⁻¹ Rᵀ
+  glm::dvec3 velocityAt(glm::dvec3 world) const { return velocity() + glm::cross(omega(), world - m_state.position); }
+  glm::dvec3 place(glm::vec3 own) const;  // a point of the own frame (as built), in the world
+  ObstaclePose pose() const;              // for placing its particles: the own frame's origin
+
+  void applyImpulse(glm::dvec3 impulse, glm::dvec3 at);  // at a world point
+  // Gravity and the water's last load, over dt.
+  void accelerate(double dt, glm::dvec3 gravity);
+  void move(double dt);  // the pose, with the momenta as they now are
+
+ private:
+  MassProperties m_mass;
+  BodyState m_state;
+};
+
+}  // namespace tidepool::water
