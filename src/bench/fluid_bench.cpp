@@ -20,17 +20,19 @@
 namespace tidepool::bench {
 namespace {
 
-std::vector<int> parseIterations(const std::string& text) {
+// A comma list of whole numbers in [lo, hi] for `option` ("--iterations 2,4,8").
+std::vector<int> parseWholeNumbers(const std::string& text, const char* option, long lo, long hi) {
   std::vector<int> out;
   std::stringstream ss(text);
+  const std::string range = "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
   for (std::string item; std::getline(ss, item, ',');) {
     char* end = nullptr;
     const long k = std::strtol(item.c_str(), &end, 10);
-    if (item.empty() || *end != '\0' || k < 1 || k > 100)
-      throw Error("--iterations '" + io::printable(item) + "' is not a whole number in [1, 100]");
+    if (item.empty() || *end != '\0' || k < lo || k > hi)
+      throw Error(std::string(option) + " '" + io::printable(item) + "' is not a whole number in " + range);
     out.push_back(int(k));
   }
-  if (out.empty()) throw Error("--iterations is empty");
+  if (out.empty()) throw Error(std::string(option) + " is empty");
   return out;
 }
 
@@ -48,21 +50,6 @@ std::vector<water::ProbeParams> probes(const fluid::Params& p, bool loads) {
   out.push_back({.kind = water::ProbeKind::Force, .wall = water::ProbeWall::MinZ});
   for (std::size_t k = 0; k < p.obstacles.size(); ++k)
     out.push_back({.kind = water::ProbeKind::Force, .obstacle = int(k)});
-  return out;
-}
-
-std::vector<int> parseBodies(const std::string& text) {
-  std::vector<int> out;
-  std::stringstream ss(text);
-  for (std::string item; std::getline(ss, item, ',');) {
-    char* end = nullptr;
-    const long k = std::strtol(item.c_str(), &end, 10);
-    if (item.empty() || *end != '\0' || k < 0 || k > long(water::kMaxObstacles))
-      throw Error("--bodies '" + io::printable(item) + "' is not a whole number in [0, " +
-                  std::to_string(water::kMaxObstacles) + "]");
-    out.push_back(int(k));
-  }
-  if (out.empty()) throw Error("--bodies is empty");
   return out;
 }
 
@@ -92,26 +79,27 @@ int run(Env& env, const std::string& sceneName, const std::string& sizes, const 
   const fluid::Params base = fluidScene(scene).model;
   const StepWindow w = parseStepWindow(window);
   const bool block = base.fill == water::Fill::Block;
-  std::printf("fluid benchmark on %s: scene %s, steps %d..%d, medians per step\n", env.device.c_str(),
-              scene.name.c_str(), w.first, w.last);
+  const std::vector<int> iterationCounts = parseWholeNumbers(iterations, "--iterations", 1, 100);
   const std::vector<bool> orders =
       deterministic.empty() ? std::vector<bool>{base.deterministic} : parseOnOff(deterministic, "--deterministic");
   const std::vector<bool> measured = parseOnOff(loads, "--loads");
-  const std::vector<int> bodyCounts = parseBodies(bodies);
+  const std::vector<int> bodyCounts = parseWholeNumbers(bodies, "--bodies", 0, long(water::kMaxObstacles));
   const std::vector<bool> moving = parseOnOff(dynamic, "--dynamic");
+  const std::vector<std::size_t> counts = block ? parseSizes(sizes) : std::vector<std::size_t>{0};
   // The rows: each body count with each --dynamic setting (none: one row).
   std::vector<std::pair<int, bool>> bodyRows;
   for (int n : bodyCounts)
     for (bool m : moving)
       if (n > 0 || m == moving.front()) bodyRows.emplace_back(n, n > 0 && m);
+  std::printf("fluid benchmark on %s: scene %s, steps %d..%d, medians per step\n", env.device.c_str(),
+              scene.name.c_str(), w.first, w.last);
   Table table({"particles", "spacing", "iters", "determ.", "loads", "bodies", "dynamic", "cells", "predict ms",
                "count ms", "scan ms", "reorder ms", "lambda ms", "delta ms", "velocity ms", "viscosity ms", "ms/step",
                "steps/s", "bytes/particle"});
-  const std::vector<std::size_t> counts = block ? parseSizes(sizes) : std::vector<std::size_t>{0};
-  Steps steps("bench fluid", int(counts.size() * parseIterations(iterations).size() * orders.size() * measured.size() *
-                                 bodyCounts.size()));
+  Steps steps("bench fluid",
+              int(counts.size() * iterationCounts.size() * orders.size() * measured.size() * bodyRows.size()));
   for (std::size_t n : counts)
-    for (int k : parseIterations(iterations))
+    for (int k : iterationCounts)
       for (bool stable : orders)
         for (bool withLoads : measured)
           for (const auto& [bodyCount, bodiesMove] : bodyRows) {

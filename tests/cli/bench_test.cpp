@@ -88,3 +88,21 @@ TEST(Bench, FluidRunsEachSizeAndIterationCount) {
   expectOneLineError({"bench", "fluid", "bench-fluid", "--n", "4096", "--iterations", "0"},
                      "--iterations '0' is not a whole number in [1, 100]");
 }
+
+// --bodies adds that many boxes afloat, dynamic and (with --dynamic off) held: one row each, and
+// a single row for none.
+TEST(Bench, FluidRowsForBodiesDynamicAndHeld) {
+  test::TempDir dir;
+  auto r = runTidepool({"bench", "fluid", "bench-fluid", "--n", "4096", "--bodies", "0,2", "--dynamic", "off,on",
+                        "--steps", "1:3", "--repeats", "1", "--csv", (dir / "fluid.csv").string()});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::string csv = io::readTextFile(dir / "fluid.csv");
+  EXPECT_NE(csv.find(",0,off,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find(",2,off,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find(",2,on,"), std::string::npos) << csv;
+  std::size_t rows = 0;
+  for (char c : csv) rows += c == '\n';
+  EXPECT_EQ(rows, 4u) << csv;
+  expectOneLineError({"bench", "fluid", "bench-fluid", "--bodies", "17"},
+                     "--bodies '17' is not a whole number in [0, 16]");
+}
