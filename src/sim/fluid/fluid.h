@@ -4,6 +4,7 @@
 // Blocks of water start on a cubic lattice of the spacing (rest_lattice.h says why).
 //   predict    v += dt·g, p = x + dt·v                                     (particle order)
 //   sort       grid of cell h on p (count, scan), p and x to cell order  (neighbours for the step)
+//   bodies     the dynamic obstacles moved by the last step's loads, then every obstacle placed
 //   iterate    `iterations` times: λ (density, constraint, λ), then Δp with s_corr, the obstacles
 //              (no closer than kObstacleContact) and the walls
 //   velocity   v = (p − x)/dt, x = p

@@ -6,7 +6,7 @@
 //   contacts (body_contacts.h)           impulses that stop it entering a wall or another body
 //   x += dt P / m,  q += dt/2 (0, ω) q   ω = R I⁻¹ Rᵀ L, then q normalised
 // The water's force and torque come from the step before (explicit coupling, as in Akinci et al.
-// 2012, "Versatile rigid-fluid coupling for incompressible SPH", section 5).
+// 2012, "Versatile rigid-fluid coupling for incompressible SPH").
 #pragma once
 
 #include <glm/glm.hpp>

@@ -169,8 +169,7 @@ TEST_F(LoadsTest, ARestingTanksFloorCarriesItsWeightAndItsWallsTheHydrostaticThr
               100 * (-mean.walls[4].force.z / weight - 1));
   EXPECT_NEAR(-mean.walls[4].force.z, weight, 0.001 * weight) << "the floor pushes down";
   EXPECT_NEAR(mean.walls[5].force.z, 0.0, 1e-9) << "the lid: no water there";
-  const double width[4] = {0.2, 0.2, 0.4, 0.4};  // the ±x walls are 0.2 m wide, the ±y walls 0.4 m  // the −x and +x
-                                                 // walls are 0.2 m wide, the ±y walls 0.4 m
+  const double width[4] = {0.2, 0.2, 0.4, 0.4};  // the ±x walls are 0.2 m wide, the ±y walls 0.4 m
   for (int w = 0; w < 4; ++w) {
     const double thrust = kRho * kG * H * H * width[w] / 2, got = mean.walls[std::size_t(w)].force[w / 2];
     const double outward = w % 2 == 0 ? -got : got;
