@@ -84,9 +84,10 @@ class Fluid final : public sim::Model, public water::ParticleWater {
   // The loads of the last step (boundary_loads.h), while the setup lists a force probe.
   water::Loads loads() override;
 
-  glm::vec3 gravity() const;                                            // current, turned with the domain
-  double h() const { return m_params.h(); }                             // smoothing radius, m
-  double mass() const { return m_params.restDensity * m_rest.volume; }  // kg per particle
+  glm::vec3 gravity() const;                                                          // current, turned with the domain
+  double h() const { return m_params.h(); }                                           // smoothing radius, m
+  double mass() const { return m_params.restDensity * m_rest.volume; }                // kg per particle
+  double loadScale() const { return -mass() / (double(m_params.dt) * m_params.dt); }  // ΣΔ to N: −m / dt²
   const RestLattice& rest() const { return m_rest; }
   std::size_t obstacleCount() const { return m_obstacles.particles(); }
   std::size_t cells() const { return m_grid ? m_grid->cells() : 0; }                // of the neighbour grid (cell h)
@@ -163,8 +164,9 @@ class Fluid final : public sim::Model, public water::ParticleWater {
   water::Walls m_walls;
   DensityProbe m_probe;
   BoundaryLoads m_loads;
-  // A force probe or a dynamic obstacle is listed: the step measures the loads, the walls' only for a probe on a wall
-  // (theirs cost the most: most work groups touch a wall); after it, m_loads holds its sums.
+  // A force probe or a dynamic obstacle is listed: the step measures the loads, the walls' only
+  // for a probe on a wall (theirs cost the most: most work groups touch a wall); after it,
+  // m_loads holds its sums.
   bool m_loadsOn = false, m_wallLoadsOn = false;
   double m_time = 0;
   std::uint64_t m_steps = 0;

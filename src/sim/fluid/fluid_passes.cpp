@@ -82,7 +82,7 @@ void Fluid::requestBodyLoads() {
 void Fluid::receiveBodyLoads() {
   if (!m_bodyLoadsPending) return;
   m_bodyLoadsPending = false;
-  m_bodies.setLoads(m_loads.received(-mass() / (double(m_params.dt) * m_params.dt)), m_obstacles);
+  m_bodies.setLoads(m_loads.received(loadScale()), m_obstacles);
 }
 
 void Fluid::settleBodies() {

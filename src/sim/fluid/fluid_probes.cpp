@@ -60,7 +60,7 @@ std::vector<double> Fluid::pressures(const std::vector<glm::vec3>& points) {
 water::Loads Fluid::loads() {
   // No step since reset, or none that measured.
   if (!m_loadsOn || !m_densitiesValid) return water::Loads::unmeasured(m_obstacles.size());
-  water::Loads out = m_loads.read(-mass() / (double(m_params.dt) * m_params.dt));
+  water::Loads out = m_loads.read(loadScale());
   if (!m_wallLoadsOn) out.unmeasuredWalls();
   return out;
 }

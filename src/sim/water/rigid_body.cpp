@@ -38,10 +38,6 @@ glm::dmat3 RigidBody::inverseInertiaWorld() const {
 
 glm::dvec3 RigidBody::omega() const { return inverseInertiaWorld() * m_state.angularMomentum; }
 
-glm::dvec3 RigidBody::place(glm::vec3 own) const {
-  return m_state.position + rotation() * (glm::dvec3(own) - m_mass.centre);
-}
-
 ObstaclePose RigidBody::pose() const {
   const glm::dmat3 r = rotation();
   ObstaclePose p;

@@ -54,8 +54,7 @@ class RigidBody {
   glm::dvec3 omega() const;                                               // world, rad/s
   glm::dmat3 inverseInertiaWorld() const;                                 // R I⁻¹ Rᵀ
   glm::dvec3 velocityAt(glm::dvec3 world) const { return velocity() + glm::cross(omega(), world - m_state.position); }
-  glm::dvec3 place(glm::vec3 own) const;  // a point of the own frame (as built), in the world
-  ObstaclePose pose() const;              // for placing its particles: the own frame's origin
+  ObstaclePose pose() const;  // for placing its particles: the own frame's origin
 
   void applyImpulse(glm::dvec3 impulse, glm::dvec3 at);  // at a world point
   // Gravity and the water's last load, over dt.

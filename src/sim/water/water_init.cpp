@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <random>
 
@@ -217,7 +218,7 @@ bool Obstacle::inside(glm::vec3 q) const {
 
 double Obstacle::volume(std::size_t particles) const {
   const glm::dvec3 s(m_params.size);
-  const double pi = 3.141592653589793;
+  const double pi = glm::pi<double>();
   if (!m_params.shell) {
     if (m_mesh) {  // the divergence theorem over the closed surface's triangles
       const io::TriangleMesh& m = m_mesh->mesh();

@@ -43,7 +43,8 @@ struct Body {
   ContactBody contact() { return {&*body, &particles, reach}; }
   double lowest() const {  // the lowest particle's centre, world z
     double z = 1e30;
-    for (const glm::vec4& q : particles) z = std::min(z, body->place(glm::vec3(q)).z);
+    const water::ObstaclePose pose = body->pose();
+    for (const glm::vec4& q : particles) z = std::min(z, double(pose.place(glm::vec3(q)).z));
     return z;
   }
 };
@@ -143,9 +144,10 @@ TEST(RigidBody, ABoxDroppedOnAnotherRestsOnIt) {
   steps({&lower, &upper}, 2000, tank({0.6f, 0.6f, 0.4f}));
   EXPECT_NEAR(lower.lowest(), kRadius, 0.05 * kRadius);
   double closest = 1e30;
+  const water::ObstaclePose a = lower.body->pose(), b = upper.body->pose();
   for (const glm::vec4& p : lower.particles)
     for (const glm::vec4& q : upper.particles)
-      closest = std::min(closest, glm::distance(lower.body->place(glm::vec3(p)), upper.body->place(glm::vec3(q))));
+      closest = std::min(closest, double(glm::distance(a.place(glm::vec3(p)), b.place(glm::vec3(q)))));
   EXPECT_NEAR(closest, 2 * kRadius, 0.05 * kRadius);
   EXPECT_GT(upper.lowest(), lower.lowest() + 0.04) << "it rests on top, not beside";
   EXPECT_LT(glm::length(upper.body->velocity()), 1e-3);
