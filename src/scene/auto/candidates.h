@@ -5,7 +5,7 @@
 //   candidates: {rk4 fp32 dt 0.063: cost 0.30, error 3.7e-5}, {verlet fp32 dt 0.016: cost 0.95, error 5.0e-4} ...
 //   selectCheapest(candidates, {{"energyDrift", 1e-3}}, "scene.accuracy")  ->  rk4 fp32 dt 0.063
 //
-// Two margins, both documented in docs/ACCURACY.md ("Picking the method"):
+// Two margins, both documented in docs/AUTO.md:
 //  - the engine may take smaller steps than the pick (whole substeps per frame), and smaller is not
 //    always better (RK4 in fp32 gains round-off; the 2D leapfrog's phase error grows as C falls),
 //    so a row counts with the worst error measured in its family at its step or any smaller one;
