@@ -25,21 +25,13 @@ void Bodies::sync(const std::vector<ObstacleParams>& params, const Obstacles& ob
       continue;
     }
     Tracked& made = m_made[k];
-    const bool moved = made.centre != o.centre || made.orientation != o.orientation;
-    if (!m_bodies[k] || moved) {
+    const bool moved = made.centre != o.centre || made.orientation != o.orientation || made.hingeAxis != o.hingeAxis ||
+                       made.hingeAt != o.hingeAt;
+    if (!m_bodies[k] || moved)
       m_bodies[k].emplace(massOf(b), o);
-    } else if (made.id != b.id || made.density != o.density) {
-      // The same motion about the new centre of mass.
-      const MassProperties mass = massOf(b);
-      BodyState& s = m_bodies[k]->state();
-      const glm::dvec3 velocity = m_bodies[k]->velocity(), omega = m_bodies[k]->omega();
-      const glm::dmat3 r = m_bodies[k]->rotation();
-      s.position += r * (mass.centre - m_bodies[k]->mass().centre);
-      m_bodies[k]->setMass(mass);
-      s.momentum = mass.mass * velocity;
-      s.angularMomentum = r * mass.inertia * glm::transpose(r) * omega;
-    }
-    made = {b.id, o.centre, o.orientation, o.density};
+    else if (made.id != b.id || made.density != o.density)
+      m_bodies[k]->setMass(massOf(b));
+    made = {b.id, o.centre, o.orientation, o.hingeAxis, o.hingeAt, o.density};
   }
 }
 

@@ -22,8 +22,8 @@ class Bodies {
  public:
   // After the obstacles were built or updated: a body for each dynamic obstacle. A new one starts
   // at rest at its centre and orientation; one kept keeps its motion, unless its centre or
-  // orientation was edited (then it starts again there, at rest) or its shape or density (its
-  // mass properties are made anew).
+  // orientation or hinge was edited (then it starts again there, at rest) or its shape or density
+  // (its mass properties are made anew).
   void sync(const std::vector<ObstacleParams>& params, const Obstacles& obstacles);
   bool any() const;
   bool dynamic(std::size_t k) const { return k < m_bodies.size() && m_bodies[k].has_value(); }
@@ -42,7 +42,7 @@ class Bodies {
  private:
   struct Tracked {  // what a body was made from, to see edits
     unsigned id = 0;
-    glm::vec3 centre{0.0f}, orientation{0.0f};
+    glm::vec3 centre{0.0f}, orientation{0.0f}, hingeAxis{0.0f}, hingeAt{0.0f};
     float density = 0;
   };
   std::vector<std::optional<RigidBody>> m_bodies;

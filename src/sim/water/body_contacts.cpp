@@ -97,12 +97,6 @@ void pairContacts(const std::vector<ContactBody>& bodies, const ContactSettings&
     }
 }
 
-// 1 / (the impulse along n that changes the relative velocity at the contact by one unit).
-double inverseMass(const RigidBody& body, glm::dvec3 r, glm::dvec3 n) {
-  const glm::dvec3 rn = glm::cross(r, n);
-  return 1.0 / body.mass().mass + glm::dot(rn, body.inverseInertiaWorld() * rn);
-}
-
 struct Row {
   BodyContact contact;
   double normalImpulse = 0;
@@ -135,21 +129,21 @@ void resolveContacts(const std::vector<ContactBody>& bodies, const std::vector<B
         if (b) b->applyImpulse(-impulse, c.point);
       };
       auto inverse = [&](glm::dvec3 dir) {
-        double k = inverseMass(a, c.point - a.state().position, dir);
-        if (b) k += inverseMass(*b, c.point - b->state().position, dir);
-        return k;
+        return a.inverseMassAt(c.point, dir) + (b ? b->inverseMassAt(c.point, dir) : 0.0);
       };
       // Normal: the closing speed the gap allows, or the push out of an overlap.
       const double target = c.gap > 0.0 ? -c.gap / dt : -s.baumgarte * c.gap / dt;
-      const double vn = glm::dot(relative(), c.normal);
-      const double next = std::max(0.0, row.normalImpulse + (target - vn) / inverse(c.normal));
+      const double vn = glm::dot(relative(), c.normal), k = inverse(c.normal);
+      if (!(k > 0.0)) continue;  // a hinged body pushed along its axis or through it: nothing moves
+      const double next = std::max(0.0, row.normalImpulse + (target - vn) / k);
       apply((next - row.normalImpulse) * c.normal);
       row.normalImpulse = next;
       // Friction: stop the sliding, up to μ times the normal impulse.
       const glm::dvec3 v = relative(), slide = v - glm::dot(v, c.normal) * c.normal;
       const double speed = glm::length(slide);
       glm::dvec3 friction = row.frictionImpulse;
-      if (speed > 0.0) friction -= slide / (speed * inverse(slide / speed)) * speed;
+      const double ks = speed > 0.0 ? inverse(slide / speed) : 0.0;
+      if (ks > 0.0) friction -= slide / (speed * ks) * speed;
       const double most = s.friction * row.normalImpulse, size = glm::length(friction);
       if (size > most) friction *= most / size;
       apply(friction - row.frictionImpulse);

@@ -29,6 +29,22 @@ RigidBody::RigidBody(const MassProperties& mass, const ObstacleParams& o) : m_ma
   const glm::dmat3 r(orientationMatrix(o.orientation));
   m_state.orientation = glm::normalize(glm::quat_cast(r));
   m_state.position = glm::dvec3(o.centre) + r * mass.centre;
+  const glm::dvec3 axis(o.hingeAxis);
+  if (glm::length(axis) > 0.0) m_hinge = Hinge{glm::dvec3(o.centre) + glm::dvec3(o.hingeAt), glm::normalize(axis)};
+}
+
+void RigidBody::setMass(const MassProperties& mass) {
+  const glm::dvec3 velocity = velocityAt(m_state.position + rotation() * (mass.centre - m_mass.centre));
+  const glm::dvec3 omega = this->omega();
+  const glm::dmat3 r = rotation();
+  m_state.position += r * (mass.centre - m_mass.centre);
+  m_mass = mass;
+  if (m_hinge) {
+    setSpin(glm::dot(m_hinge->axis, omega));
+    return;
+  }
+  m_state.momentum = mass.mass * velocity;
+  m_state.angularMomentum = r * mass.inertia * glm::transpose(r) * omega;
 }
 
 glm::dmat3 RigidBody::inverseInertiaWorld() const {
@@ -48,17 +64,60 @@ ObstaclePose RigidBody::pose() const {
   return p;
 }
 
+double RigidBody::hingeInertia() const {
+  const glm::dvec3 a = m_hinge->axis, r = m_state.position - m_hinge->pivot;
+  const glm::dvec3 across = r - glm::dot(r, a) * a;
+  const glm::dmat3 rot = rotation();
+  return glm::dot(a, rot * m_mass.inertia * glm::transpose(rot) * a) + m_mass.mass * glm::dot(across, across);
+}
+
+void RigidBody::setSpin(double w) {
+  const glm::dvec3 omega = w * m_hinge->axis;
+  const glm::dmat3 rot = rotation();
+  m_state.momentum = m_mass.mass * glm::cross(omega, m_state.position - m_hinge->pivot);
+  m_state.angularMomentum = rot * m_mass.inertia * glm::transpose(rot) * omega;
+}
+
 void RigidBody::applyImpulse(glm::dvec3 impulse, glm::dvec3 at) {
+  if (m_hinge) {
+    const glm::dvec3 a = m_hinge->axis;
+    setSpin(glm::dot(a, omega()) + glm::dot(a, glm::cross(at - m_hinge->pivot, impulse)) / hingeInertia());
+    return;
+  }
   m_state.momentum += impulse;
   m_state.angularMomentum += glm::cross(at - m_state.position, impulse);
 }
 
+double RigidBody::inverseMassAt(glm::dvec3 at, glm::dvec3 n) const {
+  if (m_hinge) {
+    const double arm = glm::dot(m_hinge->axis, glm::cross(at - m_hinge->pivot, n));
+    return arm * arm / hingeInertia();
+  }
+  const glm::dvec3 rn = glm::cross(at - m_state.position, n);
+  return 1.0 / m_mass.mass + glm::dot(rn, inverseInertiaWorld() * rn);
+}
+
 void RigidBody::accelerate(double dt, glm::dvec3 gravity) {
-  m_state.momentum += dt * (m_state.force + m_mass.mass * gravity);
+  const glm::dvec3 force = m_state.force + m_mass.mass * gravity;
+  if (m_hinge) {
+    const glm::dvec3 a = m_hinge->axis;
+    const glm::dvec3 torque = m_state.torque + glm::cross(m_state.position - m_hinge->pivot, force);
+    setSpin(glm::dot(a, omega()) + dt * glm::dot(a, torque) / hingeInertia());
+    return;
+  }
+  m_state.momentum += dt * force;
   m_state.angularMomentum += dt * m_state.torque;
 }
 
 void RigidBody::move(double dt) {
+  if (m_hinge) {
+    const double w = glm::dot(m_hinge->axis, omega());
+    const glm::dquat turn = glm::angleAxis(w * dt, m_hinge->axis);
+    m_state.position = m_hinge->pivot + turn * (m_state.position - m_hinge->pivot);
+    m_state.orientation = glm::normalize(turn * m_state.orientation);
+    setSpin(w);
+    return;
+  }
   m_state.position += dt * velocity();
   const glm::dvec3 w = omega();
   const glm::dquat spin(0.0, w.x, w.y, w.z);

@@ -5,12 +5,16 @@
 //   P += dt (F + m g),  L += dt τ         the water's load of the last step, and gravity
 //   contacts (body_contacts.h)           impulses that stop it entering a wall or another body
 //   x += dt P / m,  q += dt/2 (0, ω) q   ω = R I⁻¹ Rᵀ L, then q normalised
+// A hinged body keeps one degree of freedom, its spin w about the hinge's axis a through the
+// pivot p: w += dt a·τ_p / I_p, with τ_p the torque about p (gravity's too) and I_p the inertia
+// about the axis; then it turns by w dt about the axis, exactly. P and L stay those of that spin.
 // The water's force and torque come from the step before (explicit coupling, as in Akinci et al.
 // 2012, "Versatile rigid-fluid coupling for incompressible SPH").
 #pragma once
 
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
+#include <optional>
 #include <vector>
 
 #include "sim/water/obstacle_pose.h"
@@ -39,13 +43,19 @@ struct BodyState {
 constexpr std::size_t kBodyDoubles = sizeof(BodyState) / sizeof(double);
 static_assert(sizeof(BodyState) == 20 * sizeof(double), "BodyState is a plain record of doubles");
 
+// An axis fixed in the world that a body only turns about.
+struct Hinge {
+  glm::dvec3 pivot{0.0};  // a point of the axis, world, m
+  glm::dvec3 axis{0.0};   // unit
+};
+
 class RigidBody {
  public:
-  // At rest, where the obstacle's centre and orientation put it.
+  // At rest, where the obstacle's centre and orientation put it, on its hinge if it has one.
   RigidBody(const MassProperties& mass, const ObstacleParams& o);
 
   const MassProperties& mass() const { return m_mass; }
-  void setMass(const MassProperties& mass) { m_mass = mass; }
+  void setMass(const MassProperties& mass);  // new mass properties, the same motion about the new centre
   BodyState& state() { return m_state; }
   const BodyState& state() const { return m_state; }
 
@@ -55,15 +65,22 @@ class RigidBody {
   glm::dmat3 inverseInertiaWorld() const;                                 // R I⁻¹ Rᵀ
   glm::dvec3 velocityAt(glm::dvec3 world) const { return velocity() + glm::cross(omega(), world - m_state.position); }
   ObstaclePose pose() const;  // for placing its particles: the own frame's origin
+  const std::optional<Hinge>& hinge() const { return m_hinge; }
 
   void applyImpulse(glm::dvec3 impulse, glm::dvec3 at);  // at a world point
+  // 1 / (the impulse along the unit n at a world point that changes the velocity there along n by one unit).
+  double inverseMassAt(glm::dvec3 at, glm::dvec3 n) const;
   // Gravity and the water's last load, over dt.
   void accelerate(double dt, glm::dvec3 gravity);
   void move(double dt);  // the pose, with the momenta as they now are
 
  private:
+  double hingeInertia() const;  // about the hinge's axis, kg·m²
+  void setSpin(double w);       // P and L of a hinged body turning at w rad/s
+
   MassProperties m_mass;
   BodyState m_state;
+  std::optional<Hinge> m_hinge;
 };
 
 }  // namespace tidepool::water

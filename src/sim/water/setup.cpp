@@ -117,6 +117,11 @@ void visit(ParamVisitor& v, ObstacleParams& o) {
           "unused"},
          o.dynamic);
   v.real({"density", "Density", "kg/m^3 of a dynamic obstacle (water: 1000)"}, o.density, 1.0f, 100000.0f);
+  if (v.beginGroup({"hinge", "Hinge", "a dynamic obstacle that only turns about an axis fixed in the world"})) {
+    v.vector({"axis", "Axis", "direction (any length; zero: no hinge, it moves freely)"}, o.hingeAxis, -1.0f, 1.0f);
+    v.vector({"at", "At", "the axis passes through the centre plus this, m"}, o.hingeAt, -100.0f, 100.0f);
+    v.endGroup();
+  }
 }
 
 bool sameBody(const ObstacleParams& a, const ObstacleParams& b) {

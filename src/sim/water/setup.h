@@ -49,6 +49,10 @@ struct ObstacleParams {
   // from its centre and orientation at rest; spin and path are then unused.
   bool dynamic = false;
   float density = 500.0f;  // kg/m³ of a dynamic obstacle
+  // A hinge: a dynamic obstacle that only turns about this axis (world; zero: none, it moves freely)
+  // through the point centre + hingeAt, both fixed in the world.
+  glm::vec3 hingeAxis{0.0f};
+  glm::vec3 hingeAt{0.0f};  // m
 };
 void visit(ParamVisitor& v, ObstacleParams& o);
 // The parameters its particles are built from (a change rebuilds them; pose changes do not).

@@ -95,3 +95,98 @@ TEST_F(FloatingBodiesTest, ABoxDenserThanWaterSinksAndRestsOnTheFloor) {
   EXPECT_LT(lowest, 1.5 * kSpacing) << "not on the floor";
   EXPECT_LT(s.speed, 0.005);
 }
+
+namespace {
+
+// A plank's cross-section (length along x, thickness along z) turned down θ about its hinge at
+// the middle of its left end: the part under the level z = h, as a polygon clipped from the
+// rectangle, its area and centroid.
+struct Wet {
+  double area = 0;
+  glm::dvec2 centroid{0.0};
+};
+Wet under(const std::vector<glm::dvec2>& shape, double h) {
+  std::vector<glm::dvec2> poly;
+  for (std::size_t i = 0; i < shape.size(); ++i) {
+    const glm::dvec2 a = shape[i], b = shape[(i + 1) % shape.size()];
+    if (a.y <= h) poly.push_back(a);
+    if ((a.y <= h) != (b.y <= h)) poly.push_back(a + (b - a) * ((h - a.y) / (b.y - a.y)));
+  }
+  Wet w;
+  glm::dvec2 moment(0.0);
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    const glm::dvec2 a = poly[i], b = poly[(i + 1) % poly.size()];
+    const double cross = a.x * b.y - b.x * a.y;
+    w.area += 0.5 * cross;
+    moment += (a + b) * cross / 6.0;
+  }
+  if (w.area > 0.0) w.centroid = moment / w.area;
+  return w;
+}
+
+// The angle θ (degrees below level) at which the buoyancy's moment about the hinge equals the
+// weight's, the water level rising with the wet part: ρ A_wet (x_wet − x_p) = ρ_b L t (x_mid − x_p).
+double flapAngle(glm::dvec2 pivot, double length, double thick, double width, double density, double water,
+                 double floor) {
+  auto turning = [&](double theta) {  // the moment turning it up, per ρ g
+    const double c = std::cos(theta), s = std::sin(theta);
+    auto at = [&](double along, double across) {
+      return pivot + glm::dvec2(along * c + across * s, -along * s + across * c);
+    };
+    const std::vector<glm::dvec2> shape = {at(0, -thick / 2), at(length, -thick / 2), at(length, thick / 2),
+                                           at(0, thick / 2)};
+    double level = water / floor;
+    Wet wet;
+    for (int i = 0; i < 50; ++i) {
+      wet = under(shape, level);
+      level = (water + wet.area * width) / floor;
+    }
+    return wet.area * (wet.centroid.x - pivot.x) - density / kRho * length * thick * (at(length / 2, 0).x - pivot.x);
+  };
+  double lo = 0, hi = glm::half_pi<double>();
+  for (int i = 0; i < 60; ++i) (turning(0.5 * (lo + hi)) < 0 ? lo : hi) = 0.5 * (lo + hi);
+  return glm::degrees(lo);
+}
+
+}  // namespace
+
+// A plank of 500 kg/m³ hinged at one end above the water swings down into it and settles where
+// the buoyancy's moment about the hinge balances the weight's (the wet part of its cross-section
+// found exactly, with the water level it raises): within 1° of that angle.
+TEST_F(FloatingBodiesTest, APlankHingedAboveTheWaterSettlesWhereTheMomentsBalance) {
+  const glm::vec3 tank(0.4f, 0.1f, 0.25f), half(0.12f, 0.04f, 0.015f);
+  const glm::vec3 pivot(0.04f, 0.05f, 0.16f);
+  fluid::Params p;
+  p.setSpacing(kSpacing);
+  p.domainMax = tank;
+  p.fill = water::Fill::Slab;
+  p.slabHeight = 0.1f;
+  p.dt = 0.002f;
+  water::ObstacleParams plank;
+  plank.shape = water::Shape::Box;
+  plank.size = half;
+  plank.centre = pivot + glm::vec3(half.x, 0.0f, 0.0f);
+  plank.dynamic = true;
+  plank.density = 500.0f;
+  plank.hingeAxis = {0.0f, 1.0f, 0.0f};
+  plank.hingeAt = {-half.x, 0.0f, 0.0f};
+  p.obstacles = {plank};
+  fluid::Fluid fluid(shaders(), p);
+  double angle = 0, fastest = 0;
+  int n = 0;
+  while (fluid.time() < 3.0) {
+    fluid.stepOnce();
+    if (fluid.time() < 2.5) continue;
+    const glm::dmat3 r = fluid.bodies().body(0).rotation();
+    angle += glm::degrees(std::asin(-r[0].z));  // +θ about y takes x down
+    fastest = std::max(fastest, glm::length(fluid.bodies().body(0).omega()));
+    ++n;
+  }
+  angle /= n;
+  const double water = double(fluid.count()) * fluid.mass() / kRho;
+  const double want = flapAngle({pivot.x, pivot.z}, 2.0 * half.x, 2.0 * half.z, 2.0 * half.y, plank.density, water,
+                                double(tank.x) * tank.y);
+  std::printf("settled at %.2f degrees, the moments balance at %.2f; fastest %.3g rad/s\n", angle, want, fastest);
+  EXPECT_NEAR(angle, want, 1.0);
+  EXPECT_LT(fastest, 0.05) << "still swinging";
+}
