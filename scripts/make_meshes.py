@@ -6,6 +6,8 @@
   blob.obj   a bunny-like blob: a smooth union of a body, a head, two ears and a tail (signed
              distances), surfaced by marching tetrahedra on a Kuhn-split grid, which gives a
              closed mesh (every edge shared by two triangles) with outward winding
+  paddle-wheel.obj  a wheel of six paddles about y: a 12-sided hub, a paddle standing out of
+             every other side, the profile extruded along y (a closed prism)
 
 Run: python3 scripts/make_meshes.py [assets/meshes]
 """
@@ -43,6 +45,47 @@ def torus(major=1.0, minor=0.4, nu=48, nv=24):
             a, b = i * nv + j, ((i + 1) % nu) * nv + j
             c, d = ((i + 1) % nu) * nv + (j + 1) % nv, i * nv + (j + 1) % nv
             faces.append((a, b, c, d))
+    return vertices, faces
+
+
+def paddle_wheel(paddles=6, hub=0.3, tip=1.0, half_width=0.8):
+    # The profile in the x-z plane, counter-clockwise seen from -y: the hub's 2N corners, with a
+    # paddle's two outer corners between the corners of every other side.
+    profile = []
+    for i in range(2 * paddles):
+        a, b = math.pi * i / paddles, math.pi * (i + 1) / paddles
+        pa, pb = (hub * math.cos(a), hub * math.sin(a)), (hub * math.cos(b), hub * math.sin(b))
+        profile.append(pa)
+        if i % 2 == 0:
+            mid = (a + b) / 2
+            out = (math.cos(mid) * (tip - hub * math.cos(math.pi / (2 * paddles))),
+                   math.sin(mid) * (tip - hub * math.cos(math.pi / (2 * paddles))))
+            profile.append((pa[0] + out[0], pa[1] + out[1]))
+            profile.append((pb[0] + out[0], pb[1] + out[1]))
+    n = len(profile)
+    vertices = [(x, y, z) for y in (-half_width, half_width) for (x, z) in profile]
+    vertices += [(0.0, -half_width, 0.0), (0.0, half_width, 0.0)]
+    front, back = 2 * n, 2 * n + 1
+    faces = []
+    # Caps: the hub as a fan about the axis, each paddle as a quad on its hub side.
+    hub_corners = [k for k in range(n) if math.isclose(math.hypot(*profile[k]), hub)]
+    for j in range(len(hub_corners)):
+        a, b = hub_corners[j], hub_corners[(j + 1) % len(hub_corners)]
+        faces.append((front, a, b))  # y = -w: counter-clockwise seen from -y
+        faces.append((back, n + b, n + a))
+    for k in range(n):
+        if k not in hub_corners:
+            continue
+        if (k + 1) % n not in hub_corners:  # a paddle: corners k, k+1, k+2, k+3
+            q = [k, (k + 1) % n, (k + 2) % n, (k + 3) % n]
+            faces.append(tuple(q))
+            faces.append(tuple(n + i for i in reversed(q)))
+    # Sides: a quad along y on every edge of the profile but the hub's sides under a paddle.
+    for k in range(n):
+        a, b = k, (k + 1) % n
+        if a in hub_corners and b in hub_corners and (hub_corners.index(a) % 2 == 0):
+            continue
+        faces.append((a, n + a, n + b, b))
     return vertices, faces
 
 
@@ -126,6 +169,8 @@ def main(folder):
     os.makedirs(folder, exist_ok=True)
     write_obj(os.path.join(folder, "cube.obj"), "cube [-1, 1]^3, 6 quads", *cube())
     write_obj(os.path.join(folder, "torus.obj"), "torus: major radius 1, tube radius 0.4, about z", *torus())
+    write_obj(os.path.join(folder, "paddle-wheel.obj"), "paddle wheel: six paddles about y, a 12-sided hub",
+              *paddle_wheel())
     vertices, faces = marching_tetrahedra(blob_distance, (-1.35, -0.85, -0.85), (1.45, 0.85, 1.65), 18)
     write_obj(os.path.join(folder, "blob.obj"), "bunny-like blob: smooth union of ellipsoids, marching tetrahedra",
               vertices, faces)

@@ -53,7 +53,7 @@ TEST(BadInput, ObstacleMeshMissingMalformedOrOpen) {
                      (dir / "missing.json").string() +
                          ": params: obstacles[0]: mesh 'nosuchmesh' not found: neither a file nor a name in "
                          "assets/meshes (known: "
-                         "blob, cube, torus)",
+                         "blob, cube, paddle-wheel, torus)",
                      1);
   dir.write("bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 zero\nf 1 2 3\n");
   expectOneLineError(scene("bad.json", (dir / "bad.obj").string()),

@@ -128,7 +128,7 @@ TEST(Obj, ClosedMeshesShareEveryEdgeBetweenTwoTriangles) {
 }
 
 TEST(Obj, ShippedMeshesAreClosedAndFoundByName) {
-  for (const char* name : {"cube", "torus", "blob"}) {
+  for (const char* name : {"cube", "torus", "blob", "paddle-wheel"}) {
     SCOPED_TRACE(name);
     const std::filesystem::path path = io::findMesh(name);
     EXPECT_EQ(path, io::findAssetDir() / "meshes" / (std::string(name) + ".obj"));
@@ -146,6 +146,6 @@ TEST(Obj, ShippedMeshesAreClosedAndFoundByName) {
         std::string(e.what()).rfind("mesh 'teapot' not found: neither a file nor a name in assets/meshes (known: ", 0),
         0u)
         << e.what();
-    EXPECT_NE(std::string(e.what()).find("blob, cube, torus"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("blob, cube, paddle-wheel, torus"), std::string::npos) << e.what();
   }
 }
