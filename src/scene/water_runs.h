@@ -19,6 +19,7 @@
 #include "sim/fluid/fluid_params.h"
 #include "sim/model.h"
 #include "sim/model_state.h"
+#include "sim/water/bodies.h"
 #include "sim/water/particle_water.h"
 
 namespace tidepool {
@@ -52,6 +53,7 @@ class WaterRun {
   virtual void visitStats(sim::StateVisitor& v) = 0;
   virtual std::string statsLine() const = 0;                      // "; KE ..., ..."
   virtual std::pair<std::string, double> liveMetric() const = 0;  // name and value
+  virtual water::Bodies* bodies() = 0;  // the running model's dynamic obstacles (fluid), else null
 };
 
 // Both runs, indexed by WaterModel, from one scene's parameters (the other model's follow by asFluid

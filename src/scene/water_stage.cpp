@@ -65,8 +65,29 @@ class WaterStage final : public Stage {
   }
   void input(const Input& in) override {
     m_renderer.camera().params() = m_view.camera;
-    m_renderer.camera().handle(in);
+    if (!grabBody(in)) m_renderer.camera().handle(in);
     m_view.camera = m_renderer.camera().params();
+  }
+  // A left drag that starts on a dynamic body pulls the point picked toward the mouse, at the
+  // depth along the ray where it was picked (water::Bodies::grab); elsewhere it turns the camera.
+  bool grabBody(const Input& in) {
+    const bool pressed = in.left && !m_leftHeld;
+    m_leftHeld = in.left;
+    water::Bodies* bodies = run().bodies();
+    if (!in.left || !bodies) {
+      if (bodies) bodies->grab(std::nullopt);
+      m_grab.reset();
+      return false;
+    }
+    const OrbitCamera& camera = m_renderer.camera();
+    const glm::dvec3 origin(camera.rayOrigin(in.cursor, in.viewport));
+    const glm::dvec3 direction(camera.rayDirection(in.cursor, in.viewport));
+    if (pressed)
+      if (const auto hit = bodies->pick(water().obstacles(), origin, direction))
+        m_grab = Grab{hit->first, bodies->anchorAt(hit->first, origin + hit->second * direction), hit->second};
+    if (!m_grab || !bodies->dynamic(m_grab->obstacle)) return false;
+    bodies->grab(water::Bodies::Grab{m_grab->obstacle, m_grab->anchor, origin + m_grab->depth * direction});
+    return true;
   }
   void key(int c) override {
     if (c == 'M') m_choice = m_choice == WaterModel::Balls ? WaterModel::Fluid : WaterModel::Balls;
@@ -160,6 +181,13 @@ class WaterStage final : public Stage {
   }
 
  private:
+  struct Grab {  // the body the left button holds
+    std::size_t obstacle = 0;
+    glm::dvec3 anchor{0.0};
+    double depth = 0;  // along the mouse's ray, m
+  };
+  std::optional<Grab> m_grab;
+  bool m_leftHeld = false;
   static std::size_t index(WaterModel m) { return std::size_t(m); }
   WaterRun& run() { return *m_runs[index(m_active)]; }
   const water::ParticleWater& water() { return *run().water(); }

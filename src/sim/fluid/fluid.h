@@ -75,6 +75,7 @@ class Fluid final : public sim::Model, public water::ParticleWater {
   water::Packing packing() const override { return Params::kPacking; }
   const water::Obstacles& obstacles() const override { return m_obstacles; }
   const water::Bodies& bodies() const { return m_bodies; }  // the dynamic obstacles
+  water::Bodies& bodies() { return m_bodies; }              // the window's mouse pulls them (Bodies::grab)
   const water::Setup& water() const override { return m_params; }
   glm::vec3 wallMin() const override { return m_walls.min; }
   glm::vec3 wallMax() const override { return m_walls.max; }

@@ -63,7 +63,56 @@ void Bodies::advance(double dt, glm::dvec3 gravity, const Walls& walls, const Ob
   std::vector<ContactBody> bodies;
   for (std::size_t k = 0; k < m_bodies.size(); ++k)
     if (m_bodies[k]) bodies.push_back({&*m_bodies[k], &obstacles.body(k).particles, obstacles.body(k).reach});
+  pull(dt, gravity);
   stepBodies(bodies, dt, gravity, walls, obstacles.radius());
+}
+
+void Bodies::pull(double dt, glm::dvec3 gravity) {
+  if (!m_grab || !dynamic(m_grab->obstacle)) return;
+  RigidBody& b = *m_bodies[m_grab->obstacle];
+  const glm::dvec3 at = b.state().position + b.rotation() * m_grab->anchor;
+  const glm::dvec3 change = (m_grab->target - at) / kPullTime - b.velocityAt(at);
+  const glm::dmat3 k = b.inverseMassMatrixAt(at);
+  glm::dvec3 impulse(0.0);
+  if (b.hinge()) {  // K is u uᵀ / I: only along u can the point move
+    const glm::dvec3 u = k * change;
+    if (glm::length(u) > 0.0) {
+      const glm::dvec3 along = glm::normalize(u);
+      impulse = along * (glm::dot(along, change) / glm::dot(along, k * along));
+    }
+  } else {
+    impulse = glm::inverse(k) * change;
+  }
+  const double most = kPullMost * b.mass().mass * std::max(glm::length(gravity), 9.81) * dt,
+               size = glm::length(impulse);
+  if (size > most) impulse *= most / size;
+  if (size > 0.0) b.applyImpulse(impulse, at);
+}
+
+std::optional<std::pair<std::size_t, double>> Bodies::pick(const Obstacles& obstacles, glm::dvec3 origin,
+                                                           glm::dvec3 direction) const {
+  std::optional<std::pair<std::size_t, double>> best;
+  const double r = obstacles.radius();
+  for (std::size_t k = 0; k < m_bodies.size() && k < obstacles.size(); ++k) {
+    if (!m_bodies[k]) continue;
+    const ObstaclePose pose = m_bodies[k]->pose();
+    const glm::dvec3 centre(pose.centre);
+    const double along = glm::dot(centre - origin, direction), reach = obstacles.body(k).reach + r;
+    if (glm::length(centre - origin - along * direction) > reach) continue;
+    for (const glm::vec4& q : obstacles.body(k).particles) {
+      const glm::dvec3 p(pose.place(glm::vec3(q)));
+      const double t = glm::dot(p - origin, direction), miss2 = glm::dot(p - origin, p - origin) - t * t;
+      if (miss2 > r * r) continue;
+      const double hit = t - std::sqrt(r * r - miss2);
+      if (hit > 0.0 && (!best || hit < best->second)) best = std::make_pair(k, hit);
+    }
+  }
+  return best;
+}
+
+glm::dvec3 Bodies::anchorAt(std::size_t k, glm::dvec3 world) const {
+  const RigidBody& b = *m_bodies[k];
+  return glm::transpose(b.rotation()) * (world - b.state().position);
 }
 
 std::vector<BodyState> Bodies::states() const {

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "sim/water/body_contacts.h"
@@ -39,7 +40,26 @@ class Bodies {
   std::vector<BodyState> states() const;  // one per obstacle (zero for a kinematic one)
   void setStates(const std::vector<BodyState>& states);
 
+  // The window's mouse: a point fixed in one body pulled toward a target. Each step, before the
+  // loads and contacts, an impulse at the point (solved with the body's 3 × 3 inverse mass there)
+  // gives it the velocity that would close the gap in kPullTime; at most kPullMost times the
+  // impulse of its weight (or of 9.81 m/s² without gravity).
+  static constexpr double kPullTime = 0.1, kPullMost = 20.0;
+  struct Grab {
+    std::size_t obstacle = 0;
+    glm::dvec3 anchor{0.0};  // own frame, from the centre of mass, m
+    glm::dvec3 target{0.0};  // world, m
+  };
+  void grab(std::optional<Grab> g) { m_grab = g; }
+  // The dynamic obstacle whose particles (spheres of radius r) a ray from `origin` along the unit
+  // `direction` meets first: its index and the distance along the ray.
+  std::optional<std::pair<std::size_t, double>> pick(const Obstacles& obstacles, glm::dvec3 origin,
+                                                     glm::dvec3 direction) const;
+  glm::dvec3 anchorAt(std::size_t k, glm::dvec3 world) const;  // a world point in body k's frame, as Grab::anchor
+
  private:
+  void pull(double dt, glm::dvec3 gravity);
+
   struct Tracked {  // what a body was made from, to see edits
     unsigned id = 0;
     glm::vec3 centre{0.0f}, orientation{0.0f}, hingeAxis{0.0f}, hingeAt{0.0f};
@@ -47,6 +67,7 @@ class Bodies {
   };
   std::vector<std::optional<RigidBody>> m_bodies;
   std::vector<Tracked> m_made;
+  std::optional<Grab> m_grab;
 };
 
 }  // namespace tidepool::water

@@ -97,6 +97,16 @@ double RigidBody::inverseMassAt(glm::dvec3 at, glm::dvec3 n) const {
   return 1.0 / m_mass.mass + glm::dot(rn, inverseInertiaWorld() * rn);
 }
 
+glm::dmat3 RigidBody::inverseMassMatrixAt(glm::dvec3 at) const {
+  if (m_hinge) {
+    const glm::dvec3 u = glm::cross(m_hinge->axis, at - m_hinge->pivot);  // the point's velocity per rad/s
+    return glm::outerProduct(u, u) / hingeInertia();
+  }
+  const glm::dvec3 r = at - m_state.position;
+  const glm::dmat3 cross(0.0, r.z, -r.y, -r.z, 0.0, r.x, r.y, -r.x, 0.0);  // cross * v = r × v
+  return glm::dmat3(1.0 / m_mass.mass) - cross * inverseInertiaWorld() * cross;
+}
+
 void RigidBody::accelerate(double dt, glm::dvec3 gravity) {
   const glm::dvec3 force = m_state.force + m_mass.mass * gravity;
   if (m_hinge) {

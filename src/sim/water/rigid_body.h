@@ -70,6 +70,8 @@ class RigidBody {
   void applyImpulse(glm::dvec3 impulse, glm::dvec3 at);  // at a world point
   // 1 / (the impulse along the unit n at a world point that changes the velocity there along n by one unit).
   double inverseMassAt(glm::dvec3 at, glm::dvec3 n) const;
+  // The same for any impulse J: the velocity there changes by K J (K singular for a hinged body).
+  glm::dmat3 inverseMassMatrixAt(glm::dvec3 at) const;
   // Gravity and the water's last load, over dt.
   void accelerate(double dt, glm::dvec3 gravity);
   void move(double dt);  // the pose, with the momenta as they now are
