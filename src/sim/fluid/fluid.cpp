@@ -125,7 +125,8 @@ void Fluid::reset() {
   m_grid = std::make_unique<grid::UniformGrid>(m_shaders, gp, m_capacity);
   m_obstacleError.clear();
   m_walls = water::wallsAt(w, 0.0);
-  m_bodiesRestored = m_bodyLoadsPending = false;
+  m_bodiesRestored = false;
+  m_loads.dropInFlight();
   settleBodies();
 }
 
@@ -198,7 +199,7 @@ void Fluid::resume(const sim::StateStamp& good) {
   m_steps = good.steps;
   m_densitiesValid = false;
   m_bodiesRestored = true;  // the watch's copy of m_bodyState
-  m_bodyLoadsPending = false;
+  m_loads.dropInFlight();
   m_params.dt *= 0.5f;
   m_params.substeps = std::min(m_params.substeps * 2, 1000);  // same simulated time per frame
 }
@@ -208,7 +209,7 @@ void Fluid::visitOwnState(sim::StateVisitor& v) {
   if (v.loading()) {
     m_densitiesValid = false;  // λ is not saved: the next step makes it anew
     m_bodiesRestored = true;   // the bodies' states come with the state buffers
-    m_bodyLoadsPending = false;
+    m_loads.dropInFlight();
   }
   sim::capacityEntry(v, m_capacity, [&](std::size_t capacity) { allocate(0, capacity); });
   v.count("model.count", m_count, m_capacity);
