@@ -44,39 +44,25 @@ void BoundaryLoads::sum() {
 
 water::Loads BoundaryLoads::read(double scale) const {
   const std::vector<glm::vec4> sums = m_sums.read<glm::vec4>(2 * m_chunks * m_slots);
-  return fromSums(sums.data(), m_chunks, m_slots, scale);
+  return fromSums(sums.data(), scale);
 }
 
-void BoundaryLoads::request() {
-  if (m_inFlight == kInFlight) {
-    m_oldest = (m_oldest + 1) % kInFlight;
-    --m_inFlight;
-  }
-  Copy& c = m_copies[(m_oldest + m_inFlight) % kInFlight];
-  c.readback.request(m_sums, 2 * m_chunks * m_slots * sizeof(glm::vec4));
-  c.chunks = m_chunks;
-  c.slots = m_slots;
-  ++m_inFlight;
-}
+void BoundaryLoads::request() { m_copy.request(m_sums, 2 * m_chunks * m_slots * sizeof(glm::vec4)); }
 
 water::Loads BoundaryLoads::received(double scale) {
-  if (m_inFlight == 0) return water::Loads::unmeasured(m_slots - water::kWalls);
-  Copy& c = m_copies[m_oldest];
-  m_oldest = (m_oldest + 1) % kInFlight;
-  --m_inFlight;
   std::vector<std::byte> bytes;
-  c.readback.wait(bytes);
-  if (bytes.size() != 2 * c.chunks * c.slots * sizeof(glm::vec4))
-    return water::Loads::unmeasured(c.slots - water::kWalls);
-  return fromSums(reinterpret_cast<const glm::vec4*>(bytes.data()), c.chunks, c.slots, scale);
+  m_copy.wait(bytes);
+  if (bytes.size() != 2 * m_chunks * m_slots * sizeof(glm::vec4))
+    return water::Loads::unmeasured(m_slots - water::kWalls);
+  return fromSums(reinterpret_cast<const glm::vec4*>(bytes.data()), scale);
 }
 
-water::Loads BoundaryLoads::fromSums(const glm::vec4* sums, std::size_t chunks, GLuint slots, double scale) const {
+water::Loads BoundaryLoads::fromSums(const glm::vec4* sums, double scale) const {
   water::Loads out;
-  for (GLuint s = 0; s < slots; ++s) {
+  for (GLuint s = 0; s < m_slots; ++s) {
     water::Load load;
-    for (std::size_t c = 0; c < chunks; ++c) {
-      const std::size_t at = 2 * (c * slots + s);
+    for (std::size_t c = 0; c < m_chunks; ++c) {
+      const std::size_t at = 2 * (c * m_slots + s);
       load.force += scale * glm::dvec3(glm::vec3(sums[at]));
       load.torque += scale * glm::dvec3(glm::vec3(sums[at + 1]));
     }

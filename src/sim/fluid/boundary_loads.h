@@ -7,7 +7,6 @@
 // wherever the state does.
 #pragma once
 
-#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -32,26 +31,16 @@ class BoundaryLoads {
   // The sums as forces and torques: `scale` = −m / dt² (kg/s²); walls about nothing (zero torque).
   water::Loads read(double scale) const;
   // The same in two halves, so that the GPU goes on with other work in between: request() copies
-  // the step's sums aside, behind those still on their way (kInFlight at most: a request beyond
-  // drops the oldest); received() waits for the oldest copy and reads it.
-  static constexpr std::size_t kInFlight = 2;
+  // the step's sums aside, received() waits for that copy and reads it.
   void request();
-  std::size_t inFlight() const { return m_inFlight; }
   water::Loads received(double scale);
-  void dropInFlight() { m_inFlight = 0; }
 
  private:
-  water::Loads fromSums(const glm::vec4* sums, std::size_t chunks, GLuint slots, double scale) const;
+  water::Loads fromSums(const glm::vec4* sums, double scale) const;
 
   gl::ShaderLibrary& m_shaders;
   gl::Buffer m_partials, m_sums;
-  struct Copy {
-    gl::AsyncReadback readback;
-    std::size_t chunks = 0;  // the step's, to read it after a later begin()
-    GLuint slots = 0;
-  };
-  std::array<Copy, kInFlight> m_copies;
-  std::size_t m_oldest = 0, m_inFlight = 0;
+  gl::AsyncReadback m_copy;
   std::size_t m_groups = 0, m_chunks = 0;
   GLuint m_slots = 0;
 };

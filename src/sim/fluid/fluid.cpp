@@ -125,8 +125,7 @@ void Fluid::reset() {
   m_grid = std::make_unique<grid::UniformGrid>(m_shaders, gp, m_capacity);
   m_obstacleError.clear();
   m_walls = water::wallsAt(w, 0.0);
-  m_bodiesRestored = false;
-  m_loads.dropInFlight();
+  m_bodiesRestored = m_bodyLoadsPending = false;
   settleBodies();
 }
 
@@ -199,7 +198,7 @@ void Fluid::resume(const sim::StateStamp& good) {
   m_steps = good.steps;
   m_densitiesValid = false;
   m_bodiesRestored = true;  // the watch's copy of m_bodyState
-  m_loads.dropInFlight();
+  m_bodyLoadsPending = false;
   m_params.dt *= 0.5f;
   m_params.substeps = std::min(m_params.substeps * 2, 1000);  // same simulated time per frame
 }
@@ -209,7 +208,7 @@ void Fluid::visitOwnState(sim::StateVisitor& v) {
   if (v.loading()) {
     m_densitiesValid = false;  // λ is not saved: the next step makes it anew
     m_bodiesRestored = true;   // the bodies' states come with the state buffers
-    m_loads.dropInFlight();
+    m_bodyLoadsPending = false;
   }
   sim::capacityEntry(v, m_capacity, [&](std::size_t capacity) { allocate(0, capacity); });
   v.count("model.count", m_count, m_capacity);

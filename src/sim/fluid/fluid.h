@@ -129,14 +129,12 @@ class Fluid final : public sim::Model, public water::ParticleWater {
   void solve(gl::GpuProfiler* profiler);  // the iterations
   void updateVelocities(gl::GpuProfiler* profiler);
   // The dynamic obstacles. A step asks for the water's loads on them at its end
-  // (requestBodyLoads) and the step after next applies them: by then their copy has long
-  // arrived, so the CPU never waits for the GPU to drain. Two are on their way at most; those
-  // that have landed wait in the bodies' states (BodyState: force, nextForce). moveBodies() moves
-  // the bodies to the step's end (from m_bodyState after a restore); settleBodies() lands every
-  // load on its way and writes the states into m_bodyState (for checkpoints and the watch), so
-  // that a resume applies the same loads at the same steps.
+  // (requestBodyLoads) and the next one reads them (receiveBodyLoads) after it has queued its
+  // predict and sort, so that the GPU has work while the CPU waits; moveBodies() then moves them
+  // to the step's end (from m_bodyState after a restore). settleBodies() writes their states,
+  // with any loads still on the way, into m_bodyState (for checkpoints and the watch).
   void requestBodyLoads();
-  void landBodyLoads(const water::Loads* latest);  // all on their way, then `latest`, into the states
+  void receiveBodyLoads();
   void moveBodies();
   void settleBodies();
   // With m_loadsOn: binds the loads' partials and returns BOUNDARY_LOADS (and LOADS_WALLS with
@@ -160,8 +158,9 @@ class Fluid final : public sim::Model, public water::ParticleWater {
   std::unique_ptr<grid::UniformGrid> m_grid;
   water::Obstacles m_obstacles;
   water::Bodies m_bodies;
-  gl::Buffer m_bodyState;         // water::BodyState per obstacle: in the state buffers (checkpoints, the watch)
-  bool m_bodiesRestored = false;  // m_bodyState was loaded or restored: m_bodies reads it at the next step
+  gl::Buffer m_bodyState;           // water::BodyState per obstacle: in the state buffers (checkpoints, the watch)
+  bool m_bodiesRestored = false;    // m_bodyState was loaded or restored: m_bodies reads it at the next step
+  bool m_bodyLoadsPending = false;  // the last step's loads are on their way back (requestBodyLoads)
   std::string m_obstacleError;
   water::Walls m_walls;
   DensityProbe m_probe;

@@ -41,7 +41,8 @@ void Fluid::stepOnce(gl::GpuProfiler* profiler) {
       m_wallLoadsOn = m_wallLoadsOn || p.wall != water::ProbeWall::None;
     }
   if (m_loadsOn) m_loads.begin(m_count, m_obstacles.size());
-  // Neither predict nor the sort reads the obstacles.
+  // Neither predict nor the sort reads the obstacles: the GPU runs them while the bodies wait
+  // for the last step's loads.
   if (m_count > 0) {
     predict(profiler);
     sortByCell(profiler);
@@ -53,7 +54,7 @@ void Fluid::stepOnce(gl::GpuProfiler* profiler) {
   if (m_count > 0) solve(profiler);
   if (m_loadsOn) m_loads.sum();
   m_densitiesValid = m_count > 0 && m_params.iterations > 0;
-  requestBodyLoads();  // the loads are complete: on their way back, for the step after next
+  requestBodyLoads();  // the loads are complete: on their way back while the velocities follow
   if (m_count > 0) updateVelocities(profiler);
   m_time += m_params.dt;
   ++m_steps;
@@ -66,35 +67,27 @@ void Fluid::moveBodies() {
     if (n == m_obstacles.size()) m_bodies.setStates(m_bodyState.read<water::BodyState>(n));
   }
   m_bodiesRestored = false;
-  // The loads of two steps ago: the older of two on their way, else already in the states.
-  if (m_loads.inFlight() == BoundaryLoads::kInFlight)
-    m_bodies.setLoads(m_loads.received(loadScale()), water::Bodies::LoadSlot::Next);
-  const bool landed = m_loads.inFlight() == 0;  // the last step's are in the states too
+  receiveBodyLoads();
   m_bodies.advance(m_params.dt, glm::dvec3(gravity()), m_walls, m_obstacles);
-  if (landed) m_bodies.shiftLoads();
 }
 
 void Fluid::requestBodyLoads() {
-  if (!m_bodies.any()) return;
-  if (m_densitiesValid) {
+  m_bodyLoadsPending = m_bodies.any() && m_densitiesValid;
+  if (m_bodyLoadsPending)
     m_loads.request();
-  } else {  // no water measured them: no load
-    const water::Loads none = water::Loads::unmeasured(m_obstacles.size());
-    landBodyLoads(&none);
-  }
+  else if (m_bodies.any())  // no water measured them: no load
+    m_bodies.setLoads(water::Loads::unmeasured(m_obstacles.size()), m_obstacles);
 }
 
-void Fluid::landBodyLoads(const water::Loads* latest) {
-  std::vector<water::Loads> line;  // oldest first: they fill the last slots
-  while (m_loads.inFlight() > 0) line.push_back(m_loads.received(loadScale()));
-  if (latest) line.push_back(*latest);
-  if (line.size() == 2) m_bodies.setLoads(line[0], water::Bodies::LoadSlot::Next);
-  if (!line.empty()) m_bodies.setLoads(line.back(), water::Bodies::LoadSlot::AfterNext);
+void Fluid::receiveBodyLoads() {
+  if (!m_bodyLoadsPending) return;
+  m_bodyLoadsPending = false;
+  m_bodies.setLoads(m_loads.received(loadScale()), m_obstacles);
 }
 
 void Fluid::settleBodies() {
   if (!m_bodies.any() || m_bodiesRestored) return;  // restored: m_bodyState holds them
-  landBodyLoads(nullptr);
+  receiveBodyLoads();
   const std::vector<water::BodyState> states = m_bodies.states();
   const std::size_t bytes = states.size() * sizeof(water::BodyState);
   if (m_bodyState.size() != bytes) m_bodyState = gl::Buffer(bytes);

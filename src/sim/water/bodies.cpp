@@ -46,24 +46,17 @@ std::vector<ObstaclePose> Bodies::poses(const std::vector<ObstacleParams>& param
   return out;
 }
 
-void Bodies::setLoads(const Loads& loads, LoadSlot slot) {
+void Bodies::setLoads(const Loads& loads, const Obstacles& obstacles) {
   for (std::size_t k = 0; k < m_bodies.size() && k < loads.obstacles.size(); ++k) {
     if (!m_bodies[k]) continue;
     BodyState& s = m_bodies[k]->state();
     const Load& l = loads.obstacles[k];
+    // About the centre of mass: τ_c = τ_o − (c − o) × F.
+    const glm::dvec3 origin(obstacles.pose(k).centre);
     const bool measured = finite(l.force) && finite(l.torque);  // no water: NaN
-    (slot == LoadSlot::Next ? s.force : s.nextForce) = measured ? l.force : glm::dvec3(0.0);
-    (slot == LoadSlot::Next ? s.torque : s.nextTorque) = measured ? l.torque : glm::dvec3(0.0);
+    s.force = measured ? l.force : glm::dvec3(0.0);
+    s.torque = measured ? l.torque - glm::cross(s.position - origin, l.force) : glm::dvec3(0.0);
   }
-}
-
-void Bodies::shiftLoads() {
-  for (std::optional<RigidBody>& b : m_bodies)
-    if (b) {
-      BodyState& s = b->state();
-      s.force = s.nextForce;
-      s.torque = s.nextTorque;
-    }
 }
 
 void Bodies::advance(double dt, glm::dvec3 gravity, const Walls& walls, const Obstacles& obstacles) {

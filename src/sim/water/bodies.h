@@ -1,7 +1,7 @@
 // The dynamic obstacles of the water (`"dynamic": true`) as rigid bodies (rigid_body.h). Each step:
 //   poses()     where every obstacle is: a body from its state, the others from the time
 //   ...         the model's step, which measures the water's loads on them (particle_water.h)
-//   setLoads()  those loads, for a later step (the fluid applies them two steps late)
+//   setLoads()  those loads, the torque taken about each body's centre of mass
 //   advance()   gravity and the loads, then contacts with the walls and between bodies
 //               (body_contacts.h), then the move to the next step's pose
 // The states are plain records of doubles (BodyState), one per obstacle, that the model keeps in
@@ -32,11 +32,8 @@ class Bodies {
 
   // Every obstacle's pose for a step ending at `time`.
   std::vector<ObstaclePose> poses(const std::vector<ObstacleParams>& params, double time) const;
-  // The water's loads (forces; torques about each obstacle's own origin) for the next step or the
-  // one after it (BodyState's force and nextForce); shiftLoads() moves the second to the first.
-  enum class LoadSlot { Next, AfterNext };
-  void setLoads(const Loads& loads, LoadSlot slot);
-  void shiftLoads();
+  // The water's loads of the step just taken (forces; torques about each obstacle's own origin).
+  void setLoads(const Loads& loads, const Obstacles& obstacles);
   // One step of dt: momenta from gravity and the last loads, contact impulses, then the poses.
   void advance(double dt, glm::dvec3 gravity, const Walls& walls, const Obstacles& obstacles);
 

@@ -109,16 +109,14 @@ glm::dmat3 RigidBody::inverseMassMatrixAt(glm::dvec3 at) const {
 
 void RigidBody::accelerate(double dt, glm::dvec3 gravity) {
   const glm::dvec3 force = m_state.force + m_mass.mass * gravity;
-  // The water's torque about the centre of mass c: τ_c = τ_o − (c − o) × F, c − o = R c_own.
-  const glm::dvec3 torque = m_state.torque - glm::cross(rotation() * m_mass.centre, m_state.force);
   if (m_hinge) {
     const glm::dvec3 a = m_hinge->axis;
-    const glm::dvec3 aboutPivot = torque + glm::cross(m_state.position - m_hinge->pivot, force);
-    setSpin(glm::dot(a, omega()) + dt * glm::dot(a, aboutPivot) / hingeInertia());
+    const glm::dvec3 torque = m_state.torque + glm::cross(m_state.position - m_hinge->pivot, force);
+    setSpin(glm::dot(a, omega()) + dt * glm::dot(a, torque) / hingeInertia());
     return;
   }
   m_state.momentum += dt * force;
-  m_state.angularMomentum += dt * torque;
+  m_state.angularMomentum += dt * m_state.torque;
 }
 
 void RigidBody::move(double dt) {

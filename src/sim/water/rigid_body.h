@@ -8,9 +8,8 @@
 // A hinged body keeps one degree of freedom, its spin w about the hinge's axis a through the
 // pivot p: w += dt a·τ_p / I_p, with τ_p the torque about p (gravity's too) and I_p the inertia
 // about the axis; then it turns by w dt about the axis, exactly. P and L stay those of that spin.
-// The water's force and torque come from two steps before (explicit coupling, as in Akinci et
-// al. 2012, "Versatile rigid-fluid coupling for incompressible SPH"; two steps, so that the GPU
-// never waits for them: sim/fluid/fluid.h, "The dynamic obstacles").
+// The water's force and torque come from the step before (explicit coupling, as in Akinci et al.
+// 2012, "Versatile rigid-fluid coupling for incompressible SPH").
 #pragma once
 
 #include <glm/glm.hpp>
@@ -38,14 +37,11 @@ struct BodyState {
   glm::dquat orientation{1.0, 0.0, 0.0, 0.0};  // own frame -> world
   glm::dvec3 momentum{0.0};                    // kg·m/s
   glm::dvec3 angularMomentum{0.0};             // about the centre of mass, world, kg·m²/s
-  // The water's loads the next step applies and the one after it: N, and N·m about the own frame's
-  // origin (the force probe's), taken about the centre of mass when they are applied.
-  glm::dvec3 force{0.0}, torque{0.0};
-  glm::dvec3 nextForce{0.0}, nextTorque{0.0};
+  glm::dvec3 force{0.0}, torque{0.0};          // the water's in the last step, N and N·m about the centre of mass
   double pad = 0;
 };
 constexpr std::size_t kBodyDoubles = sizeof(BodyState) / sizeof(double);
-static_assert(sizeof(BodyState) == 26 * sizeof(double), "BodyState is a plain record of doubles");
+static_assert(sizeof(BodyState) == 20 * sizeof(double), "BodyState is a plain record of doubles");
 
 // An axis fixed in the world that a body only turns about.
 struct Hinge {
@@ -76,7 +72,7 @@ class RigidBody {
   double inverseMassAt(glm::dvec3 at, glm::dvec3 n) const;
   // The same for any impulse J: the velocity there changes by K J (K singular for a hinged body).
   glm::dmat3 inverseMassMatrixAt(glm::dvec3 at) const;
-  // Gravity and the water's load (state().force, torque), over dt.
+  // Gravity and the water's last load, over dt.
   void accelerate(double dt, glm::dvec3 gravity);
   void move(double dt);  // the pose, with the momenta as they now are
 
