@@ -44,25 +44,29 @@ void BoundaryLoads::sum() {
 
 water::Loads BoundaryLoads::read(double scale) const {
   const std::vector<glm::vec4> sums = m_sums.read<glm::vec4>(2 * m_chunks * m_slots);
-  return fromSums(sums.data(), scale);
+  return fromSums(sums.data(), m_chunks, m_slots, scale);
 }
 
-void BoundaryLoads::request() { m_copy.request(m_sums, 2 * m_chunks * m_slots * sizeof(glm::vec4)); }
+void BoundaryLoads::request() {
+  m_copy.request(m_sums, 2 * m_chunks * m_slots * sizeof(glm::vec4));
+  m_copyChunks = m_chunks;
+  m_copySlots = m_slots;
+}
 
 water::Loads BoundaryLoads::received(double scale) {
   std::vector<std::byte> bytes;
   m_copy.wait(bytes);
-  if (bytes.size() != 2 * m_chunks * m_slots * sizeof(glm::vec4))
-    return water::Loads::unmeasured(m_slots - water::kWalls);
-  return fromSums(reinterpret_cast<const glm::vec4*>(bytes.data()), scale);
+  if (bytes.size() != 2 * m_copyChunks * m_copySlots * sizeof(glm::vec4))
+    return water::Loads::unmeasured(m_copySlots - water::kWalls);
+  return fromSums(reinterpret_cast<const glm::vec4*>(bytes.data()), m_copyChunks, m_copySlots, scale);
 }
 
-water::Loads BoundaryLoads::fromSums(const glm::vec4* sums, double scale) const {
+water::Loads BoundaryLoads::fromSums(const glm::vec4* sums, std::size_t chunks, GLuint slots, double scale) const {
   water::Loads out;
-  for (GLuint s = 0; s < m_slots; ++s) {
+  for (GLuint s = 0; s < slots; ++s) {
     water::Load load;
-    for (std::size_t c = 0; c < m_chunks; ++c) {
-      const std::size_t at = 2 * (c * m_slots + s);
+    for (std::size_t c = 0; c < chunks; ++c) {
+      const std::size_t at = 2 * (c * slots + s);
       load.force += scale * glm::dvec3(glm::vec3(sums[at]));
       load.torque += scale * glm::dvec3(glm::vec3(sums[at + 1]));
     }

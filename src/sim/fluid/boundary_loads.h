@@ -36,11 +36,13 @@ class BoundaryLoads {
   water::Loads received(double scale);
 
  private:
-  water::Loads fromSums(const glm::vec4* sums, double scale) const;
+  water::Loads fromSums(const glm::vec4* sums, std::size_t chunks, GLuint slots, double scale) const;
 
   gl::ShaderLibrary& m_shaders;
   gl::Buffer m_partials, m_sums;
   gl::AsyncReadback m_copy;
+  std::size_t m_copyChunks = 0;  // the requesting step's, to read the copy after a later begin()
+  GLuint m_copySlots = 0;
   std::size_t m_groups = 0, m_chunks = 0;
   GLuint m_slots = 0;
 };

@@ -47,3 +47,27 @@ TEST_F(BoundaryLoadsTest, ChunkedSumsEqualTheDoubleSumOfEveryGroupsPartials) {
     }
   }
 }
+
+// The copy a step requested reads as that step's loads after the next step began with another
+// count of chunks (a tap added particles) and obstacles: what the bodies receive is what was summed.
+TEST_F(BoundaryLoadsTest, ACopyReadsAsItsStepsLoadsAfterTheNextBeganWithOtherSizes) {
+  constexpr std::size_t groups = 1500, obstacles = 1, slots = water::kWalls + obstacles;  // two chunks
+  fluid::BoundaryLoads loads(shaders());
+  loads.begin(groups * FLUID_GROUP_SIZE, obstacles);
+  std::vector<glm::vec4> partials(groups * slots * 2, glm::vec4(0.0f));
+  for (std::size_t g = 0; g < groups; ++g)
+    partials[2 * (g * slots + water::kWalls)] = glm::vec4(1e-3f, 0.0f, 0.0f, 0.0f);
+  loads.bind();
+  GLint buffer = 0;
+  glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, FLUID_LOADS, &buffer);
+  glBindBuffer(GL_COPY_WRITE_BUFFER, GLuint(buffer));
+  glBufferSubData(GL_COPY_WRITE_BUFFER, 0, GLsizeiptr(partials.size() * sizeof(glm::vec4)), partials.data());
+  loads.sum();
+  const water::Loads summed = loads.read(1.0);
+  loads.request();
+  loads.begin(3 * groups * FLUID_GROUP_SIZE, obstacles + 2);  // the next step: more chunks, more slots
+  const water::Loads got = loads.received(1.0);
+  ASSERT_EQ(got.obstacles.size(), obstacles);
+  EXPECT_NEAR(got.obstacles[0].force.x, 1.5, 1e-6);
+  EXPECT_EQ(got.obstacles[0].force, summed.obstacles[0].force);
+}
