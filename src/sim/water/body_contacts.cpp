@@ -33,7 +33,7 @@ void wallContacts(const std::vector<ContactBody>& bodies, const Walls& walls, co
   const glm::dvec3 lo = glm::dvec3(walls.min) + s.radius, hi = glm::dvec3(walls.max) - s.radius;
   for (std::size_t k = 0; k < bodies.size(); ++k) {
     const RigidBody& b = *bodies[k].body;
-    const glm::dvec3 origin(b.pose().centre);
+    const glm::dvec3 origin = b.origin();
     const double near = bodies[k].reach + s.margin;
     if (glm::all(glm::greaterThan(origin - near, glm::dvec3(walls.min))) &&
         glm::all(glm::lessThan(origin + near, glm::dvec3(walls.max))))
@@ -67,7 +67,7 @@ void pairContacts(const std::vector<ContactBody>& bodies, const ContactSettings&
   for (std::size_t i = 0; i < bodies.size(); ++i)
     for (std::size_t j = i + 1; j < bodies.size(); ++j) {
       const RigidBody &a = *bodies[i].body, &b = *bodies[j].body;
-      const glm::dvec3 ca(a.pose().centre), cb(b.pose().centre);
+      const glm::dvec3 ca = a.origin(), cb = b.origin();
       if (glm::distance(ca, cb) > bodies[i].reach + bodies[j].reach + s.margin) continue;
       // b's particles that a's could reach, hashed; then a's that b's could reach, against them.
       CellHash hash{.cell = reachPair, .cells = {}};

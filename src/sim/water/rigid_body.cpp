@@ -58,7 +58,7 @@ ObstaclePose RigidBody::pose() const {
   const glm::dmat3 r = rotation();
   ObstaclePose p;
   p.rotation = glm::mat3(r);
-  p.centre = glm::vec3(m_state.position - r * m_mass.centre);
+  p.centre = glm::vec3(origin());
   p.velocity = glm::vec3(velocityAt(glm::dvec3(p.centre)));  // of the own frame's origin, as the contacts read it
   p.omega = glm::vec3(omega());
   return p;

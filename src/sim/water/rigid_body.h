@@ -65,6 +65,7 @@ class RigidBody {
   glm::dmat3 inverseInertiaWorld() const;                                 // R I⁻¹ Rᵀ
   glm::dvec3 velocityAt(glm::dvec3 world) const { return velocity() + glm::cross(omega(), world - m_state.position); }
   ObstaclePose pose() const;  // for placing its particles: the own frame's origin
+  glm::dvec3 origin() const { return m_state.position - rotation() * m_mass.centre; }  // pose().centre, in double
   const std::optional<Hinge>& hinge() const { return m_hinge; }
 
   void applyImpulse(glm::dvec3 impulse, glm::dvec3 at);  // at a world point

@@ -13,7 +13,17 @@ using namespace tidepool;
 
 namespace {
 using BoundaryLoadsTest = test::GlTest;
+
+// Writes `partials` where predict and Δp leave them, and sums them.
+void sumPartials(fluid::BoundaryLoads& loads, const std::vector<glm::vec4>& partials) {
+  loads.bind();
+  GLint buffer = 0;
+  glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, FLUID_LOADS, &buffer);
+  glBindBuffer(GL_COPY_WRITE_BUFFER, GLuint(buffer));
+  glBufferSubData(GL_COPY_WRITE_BUFFER, 0, GLsizeiptr(partials.size() * sizeof(glm::vec4)), partials.data());
+  loads.sum();
 }
+}  // namespace
 
 TEST_F(BoundaryLoadsTest, ChunkedSumsEqualTheDoubleSumOfEveryGroupsPartials) {
   constexpr std::size_t groups = 2500, obstacles = 2, slots = water::kWalls + obstacles;  // three chunks
@@ -24,12 +34,7 @@ TEST_F(BoundaryLoadsTest, ChunkedSumsEqualTheDoubleSumOfEveryGroupsPartials) {
   std::uniform_real_distribution<float> value(-1e-4f, 1e-4f);
   std::vector<glm::vec4> partials(groups * slots * 2);
   for (glm::vec4& p : partials) p = glm::vec4(value(rng), value(rng), value(rng), 0.0f);
-  loads.bind();
-  GLint buffer = 0;
-  glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, FLUID_LOADS, &buffer);
-  glBindBuffer(GL_COPY_WRITE_BUFFER, GLuint(buffer));
-  glBufferSubData(GL_COPY_WRITE_BUFFER, 0, GLsizeiptr(partials.size() * sizeof(glm::vec4)), partials.data());
-  loads.sum();
+  sumPartials(loads, partials);
   const double scale = -2.5;
   const water::Loads got = loads.read(scale);
   ASSERT_EQ(got.obstacles.size(), obstacles);
@@ -57,12 +62,7 @@ TEST_F(BoundaryLoadsTest, ACopyReadsAsItsStepsLoadsAfterTheNextBeganWithOtherSiz
   std::vector<glm::vec4> partials(groups * slots * 2, glm::vec4(0.0f));
   for (std::size_t g = 0; g < groups; ++g)
     partials[2 * (g * slots + water::kWalls)] = glm::vec4(1e-3f, 0.0f, 0.0f, 0.0f);
-  loads.bind();
-  GLint buffer = 0;
-  glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, FLUID_LOADS, &buffer);
-  glBindBuffer(GL_COPY_WRITE_BUFFER, GLuint(buffer));
-  glBufferSubData(GL_COPY_WRITE_BUFFER, 0, GLsizeiptr(partials.size() * sizeof(glm::vec4)), partials.data());
-  loads.sum();
+  sumPartials(loads, partials);
   const water::Loads summed = loads.read(1.0);
   loads.request();
   loads.begin(3 * groups * FLUID_GROUP_SIZE, obstacles + 2);  // the next step: more chunks, more slots

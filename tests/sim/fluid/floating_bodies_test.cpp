@@ -19,24 +19,28 @@ constexpr double kRho = 1000.0;
 constexpr float kSpacing = 0.01f;
 const glm::vec3 kTank(0.16f, 0.16f, 0.2f), kHalf(0.05f, 0.05f, 0.025f);
 
-// A tank 0.16 × 0.16 m filled 0.06 m deep, and a box 0.1 × 0.1 × 0.05 m of `density` just above
+// A tank filled `depth` deep with one dynamic box (spacing kSpacing, dt 2 ms). tankWithABox: a
+// tank 0.16 × 0.16 m filled 0.06 m deep, and a box 0.1 × 0.1 × 0.05 m of `density` just above
 // the water. Its width is four times its height, so it floats upright at each density here
 // (a cube of 500 kg/m³ would turn onto an edge).
-fluid::Params tankWithABox(float density) {
+fluid::Params tankWith(glm::vec3 tank, float depth, glm::vec3 centre, glm::vec3 half, float density) {
   fluid::Params p;
   p.setSpacing(kSpacing);
-  p.domainMax = kTank;
+  p.domainMax = tank;
   p.fill = water::Fill::Slab;
-  p.slabHeight = 0.06f;
+  p.slabHeight = depth;
   p.dt = 0.002f;
   water::ObstacleParams box;
   box.shape = water::Shape::Box;
-  box.size = kHalf;
-  box.centre = glm::vec3(0.08f, 0.08f, 0.06f + kHalf.z + kSpacing);
+  box.size = half;
+  box.centre = centre;
   box.dynamic = true;
   box.density = density;
   p.obstacles = {box};
   return p;
+}
+fluid::Params tankWithABox(float density) {
+  return tankWith(kTank, 0.06f, glm::vec3(0.08f, 0.08f, 0.06f + kHalf.z + kSpacing), kHalf, density);
 }
 
 struct Settled {
@@ -156,21 +160,10 @@ double flapAngle(glm::dvec2 pivot, double length, double thick, double width, do
 TEST_F(FloatingBodiesTest, APlankHingedAboveTheWaterSettlesWhereTheMomentsBalance) {
   const glm::vec3 tank(0.4f, 0.1f, 0.25f), half(0.12f, 0.04f, 0.015f);
   const glm::vec3 pivot(0.04f, 0.05f, 0.16f);
-  fluid::Params p;
-  p.setSpacing(kSpacing);
-  p.domainMax = tank;
-  p.fill = water::Fill::Slab;
-  p.slabHeight = 0.1f;
-  p.dt = 0.002f;
-  water::ObstacleParams plank;
-  plank.shape = water::Shape::Box;
-  plank.size = half;
-  plank.centre = pivot + glm::vec3(half.x, 0.0f, 0.0f);
-  plank.dynamic = true;
-  plank.density = 500.0f;
+  fluid::Params p = tankWith(tank, 0.1f, pivot + glm::vec3(half.x, 0.0f, 0.0f), half, 500.0f);
+  water::ObstacleParams& plank = p.obstacles[0];
   plank.hingeAxis = {0.0f, 1.0f, 0.0f};
   plank.hingeAt = {-half.x, 0.0f, 0.0f};
-  p.obstacles = {plank};
   fluid::Fluid fluid(shaders(), p);
   double angle = 0, fastest = 0;
   int n = 0;
