@@ -68,7 +68,8 @@ void Fluid::moveBodies() {
   }
   m_bodiesRestored = false;
   receiveBodyLoads();
-  m_bodies.advance(m_params.dt, glm::dvec3(gravity()), m_walls, m_obstacles);
+  m_bodies.advance(m_params.dt, glm::dvec3(gravity()), m_walls, m_obstacles,
+                   water::posesAt(m_params.obstacles, m_time + m_params.dt));
 }
 
 void Fluid::requestBodyLoads() {

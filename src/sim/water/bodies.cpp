@@ -59,10 +59,16 @@ void Bodies::setLoads(const Loads& loads, const Obstacles& obstacles) {
   }
 }
 
-void Bodies::advance(double dt, glm::dvec3 gravity, const Walls& walls, const Obstacles& obstacles) {
+void Bodies::advance(double dt, glm::dvec3 gravity, const Walls& walls, const Obstacles& obstacles,
+                     const std::vector<ObstaclePose>& poses) {
   std::vector<ContactBody> bodies;
-  for (std::size_t k = 0; k < m_bodies.size(); ++k)
-    if (m_bodies[k]) bodies.push_back({&*m_bodies[k], &obstacles.body(k).particles, obstacles.body(k).reach});
+  for (std::size_t k = 0; k < m_bodies.size(); ++k) {
+    const ObstacleBody& o = obstacles.body(k);
+    if (m_bodies[k])
+      bodies.push_back({&*m_bodies[k], &o.particles, o.reach, {}});
+    else if (!o.particles.empty() && k < poses.size())
+      bodies.push_back({nullptr, &o.particles, o.reach, poses[k]});
+  }
   pull(dt, gravity);
   stepBodies(bodies, dt, gravity, walls, obstacles.radius());
 }

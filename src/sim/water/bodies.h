@@ -2,7 +2,8 @@
 //   poses()     where every obstacle is: a body from its state, the others from the time
 //   ...         the model's step, which measures the water's loads on them (particle_water.h)
 //   setLoads()  those loads, the torque taken about each body's centre of mass
-//   advance()   gravity and the loads, then contacts with the walls and between bodies
+//   advance()   gravity and the loads, then contacts with the walls, the other bodies and the
+//               kinematic obstacles
 //               (body_contacts.h), then the move to the next step's pose
 // The states are plain records of doubles (BodyState), one per obstacle, that the model keeps in
 // its state buffers, so checkpoints and the divergence watch keep them with the particles.
@@ -34,8 +35,10 @@ class Bodies {
   std::vector<ObstaclePose> poses(const std::vector<ObstacleParams>& params, double time) const;
   // The water's loads of the step just taken (forces; torques about each obstacle's own origin).
   void setLoads(const Loads& loads, const Obstacles& obstacles);
-  // One step of dt: momenta from gravity and the last loads, contact impulses, then the poses.
-  void advance(double dt, glm::dvec3 gravity, const Walls& walls, const Obstacles& obstacles);
+  // One step of dt: momenta from gravity and the last loads, contact impulses (with the walls, each
+  // other and the kinematic obstacles at `poses`, the step's end), then the poses.
+  void advance(double dt, glm::dvec3 gravity, const Walls& walls, const Obstacles& obstacles,
+               const std::vector<ObstaclePose>& poses);
 
   std::vector<BodyState> states() const;  // one per obstacle (zero for a kinematic one)
   void setStates(const std::vector<BodyState>& states);

@@ -20,25 +20,44 @@ struct CellHash {
   void add(glm::dvec3 p) { cells[key(at(p))].push_back(p); }
 };
 
-// A body's particles in the world at its present pose (the rotation made once, not per particle).
+// A body's or obstacle's particles in the world at its present pose (the rotation made once, not
+// per particle).
 struct Placer {
   glm::dmat3 rotation;
   glm::dvec3 position, centre;
-  explicit Placer(const RigidBody& b) : rotation(b.rotation()), position(b.state().position), centre(b.mass().centre) {}
+  explicit Placer(const ContactBody& c)
+      : rotation(c.body ? c.body->rotation() : glm::dmat3(c.pose.rotation)),
+        position(c.body ? c.body->state().position : glm::dvec3(c.pose.centre)),
+        centre(c.body ? c.body->mass().centre : glm::dvec3(0.0)) {}
   glm::dvec3 operator()(glm::vec4 own) const { return position + rotation * (glm::dvec3(own) - centre); }
 };
+
+glm::dvec3 originOf(const ContactBody& c) { return c.body ? c.body->origin() : glm::dvec3(c.pose.centre); }
+
+// A side of a contact: a body, a kinematic obstacle, or a wall (neither; it moves at `wall`).
+glm::dvec3 velocityAt(const ContactBody* c, glm::dvec3 at, glm::dvec3 wall) {
+  if (!c) return wall;
+  if (c->body) return c->body->velocityAt(at);
+  return glm::dvec3(c->pose.velocity) + glm::cross(glm::dvec3(c->pose.omega), at - glm::dvec3(c->pose.centre));
+}
+double inverseMassAt(const ContactBody* c, glm::dvec3 at, glm::dvec3 n) {
+  return c && c->body ? c->body->inverseMassAt(at, n) : 0.0;
+}
+void applyImpulse(const ContactBody* c, glm::dvec3 impulse, glm::dvec3 at) {
+  if (c && c->body) c->body->applyImpulse(impulse, at);
+}
 
 void wallContacts(const std::vector<ContactBody>& bodies, const Walls& walls, const ContactSettings& s,
                   std::vector<BodyContact>& out) {
   const glm::dvec3 lo = glm::dvec3(walls.min) + s.radius, hi = glm::dvec3(walls.max) - s.radius;
   for (std::size_t k = 0; k < bodies.size(); ++k) {
-    const RigidBody& b = *bodies[k].body;
-    const glm::dvec3 origin = b.origin();
+    if (!bodies[k].body) continue;  // a kinematic obstacle goes where its pose says
+    const glm::dvec3 origin = bodies[k].body->origin();
     const double near = bodies[k].reach + s.margin;
     if (glm::all(glm::greaterThan(origin - near, glm::dvec3(walls.min))) &&
         glm::all(glm::lessThan(origin + near, glm::dvec3(walls.max))))
       continue;
-    const Placer place(b);
+    const Placer place(bodies[k]);
     for (const glm::vec4& q : *bodies[k].particles) {
       const glm::dvec3 p = place(q);
       for (int axis = 0; axis < 3; ++axis) {
@@ -66,12 +85,12 @@ void pairContacts(const std::vector<ContactBody>& bodies, const ContactSettings&
   const double touch = 2.0 * s.radius, reachPair = touch + s.margin;
   for (std::size_t i = 0; i < bodies.size(); ++i)
     for (std::size_t j = i + 1; j < bodies.size(); ++j) {
-      const RigidBody &a = *bodies[i].body, &b = *bodies[j].body;
-      const glm::dvec3 ca = a.origin(), cb = b.origin();
+      if (!bodies[i].body && !bodies[j].body) continue;  // two kinematic obstacles
+      const glm::dvec3 ca = originOf(bodies[i]), cb = originOf(bodies[j]);
       if (glm::distance(ca, cb) > bodies[i].reach + bodies[j].reach + s.margin) continue;
       // b's particles that a's could reach, hashed; then a's that b's could reach, against them.
       CellHash hash{.cell = reachPair, .cells = {}};
-      const Placer placeA(a), placeB(b);
+      const Placer placeA(bodies[i]), placeB(bodies[j]);
       for (const glm::vec4& q : *bodies[j].particles) {
         const glm::dvec3 p = placeB(q);
         if (glm::distance(p, ca) <= bodies[i].reach + reachPair) hash.add(p);
@@ -121,16 +140,14 @@ void resolveContacts(const std::vector<ContactBody>& bodies, const std::vector<B
   for (int it = 0; it < s.iterations; ++it)
     for (Row& row : rows) {
       const BodyContact& c = row.contact;
-      RigidBody& a = *bodies[std::size_t(c.a)].body;
-      RigidBody* b = c.b >= 0 ? bodies[std::size_t(c.b)].body : nullptr;
-      auto relative = [&] { return a.velocityAt(c.point) - (b ? b->velocityAt(c.point) : c.wallVelocity); };
+      const ContactBody* a = &bodies[std::size_t(c.a)];
+      const ContactBody* b = c.b >= 0 ? &bodies[std::size_t(c.b)] : nullptr;  // null: a wall
+      auto relative = [&] { return velocityAt(a, c.point, glm::dvec3(0.0)) - velocityAt(b, c.point, c.wallVelocity); };
       auto apply = [&](glm::dvec3 impulse) {
-        a.applyImpulse(impulse, c.point);
-        if (b) b->applyImpulse(-impulse, c.point);
+        applyImpulse(a, impulse, c.point);
+        applyImpulse(b, -impulse, c.point);
       };
-      auto inverse = [&](glm::dvec3 dir) {
-        return a.inverseMassAt(c.point, dir) + (b ? b->inverseMassAt(c.point, dir) : 0.0);
-      };
+      auto inverse = [&](glm::dvec3 dir) { return inverseMassAt(a, c.point, dir) + inverseMassAt(b, c.point, dir); };
       // Normal: the closing speed the gap allows, or the push out of an overlap.
       const double target = c.gap > 0.0 ? -c.gap / dt : -s.baumgarte * c.gap / dt;
       const double vn = glm::dot(relative(), c.normal), k = inverse(c.normal);
@@ -155,12 +172,17 @@ void stepBodies(const std::vector<ContactBody>& bodies, double dt, glm::dvec3 gr
                 double radius) {
   double fastest = 0;
   for (const ContactBody& c : bodies) {
-    c.body->accelerate(dt, gravity);
-    fastest = std::max(fastest, glm::length(c.body->velocity()) + glm::length(c.body->omega()) * c.reach);
+    if (c.body) {
+      c.body->accelerate(dt, gravity);
+      fastest = std::max(fastest, glm::length(c.body->velocity()) + glm::length(c.body->omega()) * c.reach);
+    } else {
+      fastest = std::max(fastest, double(glm::length(c.pose.velocity) + glm::length(c.pose.omega) * float(c.reach)));
+    }
   }
   const ContactSettings settings{.radius = radius, .margin = std::max(0.5 * radius, 2.0 * fastest * dt)};
   resolveContacts(bodies, findContacts(bodies, walls, settings), dt, settings);
-  for (const ContactBody& c : bodies) c.body->move(dt);
+  for (const ContactBody& c : bodies)
+    if (c.body) c.body->move(dt);
 }
 
 }  // namespace tidepool::water

@@ -40,7 +40,7 @@ struct Body {
     reach += kRadius;
     body.emplace(water::massProperties(particles, shape.volume(particles.size()), o.density), o);
   }
-  ContactBody contact() { return {&*body, &particles, reach}; }
+  ContactBody contact() { return {&*body, &particles, reach, {}}; }
   double lowest() const {  // the lowest particle's centre, world z
     double z = 1e30;
     const water::ObstaclePose pose = body->pose();
@@ -230,4 +230,30 @@ TEST(RigidBody, AContactAlongAHingesAxisLeavesItStill) {
   steps({&b}, 100, tank({0.6f, 0.6f, 0.4f}));
   EXPECT_EQ(b.body->state().position, before.position);
   EXPECT_EQ(b.body->omega(), glm::dvec3(0.0));
+}
+
+// A box dropped onto a fixed (kinematic) obstacle rests on it instead of falling through: no
+// particle of one closer to one of the other than 2r (within 5% of r), the box above the
+// obstacle's top, no faster than 1 mm/s. The obstacle does not move.
+TEST(RigidBody, ABoxDroppedOnAFixedObstacleRestsOnIt) {
+  water::ObstacleParams shelf = box({0.06f, 0.06f, 0.02f}, {0.3f, 0.3f, 0.15f}, 1000.0f);
+  shelf.dynamic = false;
+  const water::Obstacle shape(shelf, kRadius);
+  const std::vector<glm::vec4> shelfParticles = shape.particles();
+  double shelfReach = 0;
+  for (const glm::vec4& q : shelfParticles) shelfReach = std::max(shelfReach, double(glm::length(glm::vec3(q))));
+  water::ObstaclePose shelfPose;
+  shelfPose.centre = shelf.centre;
+  Body upper(box({0.03f, 0.03f, 0.02f}, {0.3f, 0.3f, 0.22f}, 800.0f));
+  std::vector<ContactBody> list{upper.contact(), {nullptr, &shelfParticles, shelfReach + kRadius, shelfPose}};
+  for (int i = 0; i < 2000; ++i) water::stepBodies(list, kDt, kGravity, tank({0.6f, 0.6f, 0.4f}), kRadius);
+  double closest = 1e30;
+  const water::ObstaclePose b = upper.body->pose();
+  for (const glm::vec4& p : shelfParticles)
+    for (const glm::vec4& q : upper.particles)
+      closest = std::min(closest, double(glm::distance(shelfPose.place(glm::vec3(p)), b.place(glm::vec3(q)))));
+  std::printf("closest pair %.5f m (2r = %.5f), lowest particle %.4f m\n", closest, 2 * kRadius, upper.lowest());
+  EXPECT_NEAR(closest, 2 * kRadius, 0.05 * kRadius);
+  EXPECT_GT(upper.lowest(), 0.15 + 0.02 - kRadius) << "it sank into the shelf";
+  EXPECT_LT(glm::length(upper.body->velocity()), 1e-3);
 }
