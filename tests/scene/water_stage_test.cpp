@@ -46,6 +46,12 @@ std::unique_ptr<Stage> small(gl::ShaderLibrary& shaders, const char* model) {
   return createStage(s, shaders);
 }
 
+double probe(const ProbeReadings& r, const std::string& column) {
+  for (std::size_t i = 0; i < r.columns.size(); ++i)
+    if (r.columns[i] == column) return r.values[i];
+  return NAN;
+}
+
 }  // namespace
 
 TEST_F(WaterStage, SwitchingBetweenBallsAndFluidKeepsTheParticles) {
@@ -76,7 +82,8 @@ TEST_F(WaterStage, SwitchingBetweenBallsAndFluidKeepsTheParticles) {
 
 // A left drag that starts on a dynamic body pulls it with the mouse (fluid): from the side, the
 // cursor moved up 6 pixels lifts the point picked on the box off the floor to the mouse's point at
-// the depth where it was picked (within 5 mm), and the camera stays put. Released, a left drag turns the camera again.
+// the depth where it was picked (within 5 mm), and the camera stays put. Released, a left drag
+// turns the camera again.
 TEST_F(WaterStage, ALeftDragOnABodyPullsItAndElsewhereTurnsTheCamera) {
   const glm::vec3 box(0.28f, 0.1f, 0.045f);
   Scene s = parseScene(io::parseJson(R"({"model": "fluid", "params": {
@@ -95,13 +102,8 @@ TEST_F(WaterStage, ALeftDragOnABodyPullsItAndElsewhereTurnsTheCamera) {
   // The body's pose from its probe: where the point `own` (from the pose's origin) is in the world.
   auto placed = [&](glm::dvec3 own) {
     const ProbeReadings r = stage->probes();
-    auto at = [&](const std::string& column) {
-      for (std::size_t i = 0; i < r.columns.size(); ++i)
-        if (r.columns[i] == column) return r.values[i];
-      return double(NAN);
-    };
-    const glm::dquat q(at("body0_qw"), at("body0_qx"), at("body0_qy"), at("body0_qz"));
-    return glm::dvec3(at("body0_x_m"), at("body0_y_m"), at("body0_z_m")) + q * own;
+    const glm::dquat q(probe(r, "body0_qw"), probe(r, "body0_qx"), probe(r, "body0_qy"), probe(r, "body0_qz"));
+    return glm::dvec3(probe(r, "body0_x_m"), probe(r, "body0_y_m"), probe(r, "body0_z_m")) + q * own;
   };
   const glm::dvec3 origin = placed(glm::dvec3(0.0));
   const std::optional<glm::mat4> view = stage->indicators().view;
@@ -153,4 +155,52 @@ TEST_F(WaterStage, ALeftDragOnABodyPullsItAndElsewhereTurnsTheCamera) {
   in.cursorDelta = {10, 0};
   stage->input(in);
   EXPECT_NE(stage->indicators().view, view);
+}
+
+// A hinged body dragged turns about its hinge: a plank hinged about y through its centre, seen
+// along the axis, picked 4 pixels right of it and pulled 4 pixels up, turns until the point picked
+// points at the mouse's (45°, within 3°), its centre still on the axis (within 1 mm).
+TEST_F(WaterStage, ADraggedHingedBodyTurnsAboutItsHinge) {
+  Scene s = parseScene(io::parseJson(R"({"model": "fluid", "params": {
+      "particles": {"spacing": 0.02, "domain_max": [0.4, 0.2, 0.4], "fill": "block", "fill_max": [0.06, 0.2, 0.06]},
+      "engine": {"dt": 0.002, "substeps": 10},
+      "obstacles": [{"shape": "box", "size": [0.08, 0.03, 0.01], "centre": [0.2, 0.1, 0.2],
+                     "dynamic": true, "density": 800, "hinge": {"axis": [0, 1, 0]}}],
+      "probes": [{"kind": "body", "obstacle": 0}],
+      "view": {"camera": {"target": [0.2, 0.1, 0.2], "distance": 0.6, "yaw": -1.5707963, "pitch": 0}}}})",
+                                     "w.json"),
+                       "w.json");
+  std::unique_ptr<Stage> stage = createStage(s, shaders());
+  gl::GpuProfiler profiler;
+  RenderTarget target(64, 32);
+  stage->render(target, profiler);
+  OrbitCamera camera;
+  camera.params().target = {0.2f, 0.1f, 0.2f};
+  camera.params().distance = 0.6f;
+  camera.params().yaw = -1.5707963f;
+  camera.params().pitch = 0.0f;
+  Input in;
+  in.viewport = {64, 32};
+  in.cursor = {36, 16};
+  in.left = true;
+  // Where the rays meet the plane of the axis (y = 0.1): the pick and the target, about.
+  auto onPlane = [&] {
+    const glm::vec3 o = camera.rayOrigin(in.cursor, in.viewport), d = camera.rayDirection(in.cursor, in.viewport);
+    return o + d * ((0.1f - o.y) / d.y);
+  };
+  const glm::vec3 picked = onPlane();
+  stage->input(in);
+  in.cursor = {36, 12};
+  for (int i = 0; i < 40; ++i) {
+    stage->input(in);
+    stage->step(profiler);
+  }
+  const glm::vec3 pulled = onPlane();
+  const ProbeReadings r = stage->probes();
+  const double turned = glm::degrees(-2.0 * std::atan2(probe(r, "body0_qy"), probe(r, "body0_qw")));
+  const double want = glm::degrees(std::atan2(pulled.z - 0.2, picked.x - 0.2));
+  std::printf("turned %.2f degrees up, the mouse's point %.2f degrees above the axis\n", turned, want);
+  EXPECT_NEAR(turned, want, 3.0);
+  EXPECT_NEAR(probe(r, "body0_x_m"), 0.2, 1e-3);
+  EXPECT_NEAR(probe(r, "body0_z_m"), 0.2, 1e-3);
 }
