@@ -52,6 +52,34 @@ double probe(const ProbeReadings& r, const std::string& column) {
   return NAN;
 }
 
+// A fluid tank 0.4 × 0.2 × 0.4 m, water in the corner up to `fillMax`, one dynamic obstacle
+// (`obstacle`, JSON) with its body probe, seen from −y by a camera 0.6 m from `target`, rendered
+// once at 64 × 32; `camera` is that camera, to cast the same rays as the stage.
+struct SideView {
+  std::unique_ptr<Stage> stage;
+  OrbitCamera camera;
+};
+SideView sideView(gl::ShaderLibrary& shaders, const std::string& fillMax, const std::string& obstacle,
+                  glm::vec3 target) {
+  const std::string at =
+      "[" + std::to_string(target.x) + ", " + std::to_string(target.y) + ", " + std::to_string(target.z) + "]";
+  const std::string scene =
+      R"({"model": "fluid", "params": {"particles": {"spacing": 0.02, "domain_max": [0.4, 0.2, 0.4], "fill": "block",
+          "fill_max": )" +
+      fillMax + R"(}, "engine": {"dt": 0.002, "substeps": 10}, "obstacles": [)" + obstacle +
+      R"(], "probes": [{"kind": "body", "obstacle": 0}], "view": {"camera": {"target": )" + at +
+      R"(, "distance": 0.6, "yaw": -1.5707963, "pitch": 0}}}})";
+  SideView v{createStage(parseScene(io::parseJson(scene, "w.json"), "w.json"), shaders), {}};
+  gl::GpuProfiler profiler;
+  RenderTarget frame(64, 32);
+  v.stage->render(frame, profiler);
+  v.camera.params().target = target;
+  v.camera.params().distance = 0.6f;
+  v.camera.params().yaw = -1.5707963f;
+  v.camera.params().pitch = 0.0f;
+  return v;
+}
+
 }  // namespace
 
 TEST_F(WaterStage, SwitchingBetweenBallsAndFluidKeepsTheParticles) {
@@ -85,20 +113,13 @@ TEST_F(WaterStage, SwitchingBetweenBallsAndFluidKeepsTheParticles) {
 // the depth where it was picked (within 5 mm), and the camera stays put. Released, a left drag
 // turns the camera again.
 TEST_F(WaterStage, ALeftDragOnABodyPullsItAndElsewhereTurnsTheCamera) {
-  const glm::vec3 box(0.28f, 0.1f, 0.045f);
-  Scene s = parseScene(io::parseJson(R"({"model": "fluid", "params": {
-      "particles": {"spacing": 0.02, "domain_max": [0.4, 0.2, 0.4], "fill": "block", "fill_max": [0.1, 0.2, 0.1]},
-      "engine": {"dt": 0.002, "substeps": 10},
-      "obstacles": [{"shape": "box", "size": [0.04, 0.04, 0.03], "centre": [0.28, 0.1, 0.045],
-                     "dynamic": true, "density": 800}],
-      "probes": [{"kind": "body", "obstacle": 0}],
-      "view": {"camera": {"target": [0.28, 0.1, 0.045], "distance": 0.6, "yaw": -1.5707963, "pitch": 0}}}})",
-                                     "w.json"),
-                       "w.json");
-  std::unique_ptr<Stage> stage = createStage(s, shaders());
+  SideView side = sideView(shaders(), "[0.1, 0.2, 0.1]",
+                           R"({"shape": "box", "size": [0.04, 0.04, 0.03], "centre": [0.28, 0.1, 0.045],
+                               "dynamic": true, "density": 800})",
+                           {0.28f, 0.1f, 0.045f});
+  Stage* stage = side.stage.get();
+  const OrbitCamera& camera = side.camera;
   gl::GpuProfiler profiler;
-  RenderTarget target(64, 32);
-  stage->render(target, profiler);
   // The body's pose from its probe: where the point `own` (from the pose's origin) is in the world.
   auto placed = [&](glm::dvec3 own) {
     const ProbeReadings r = stage->probes();
@@ -113,11 +134,6 @@ TEST_F(WaterStage, ALeftDragOnABodyPullsItAndElsewhereTurnsTheCamera) {
   in.cursor = {32, 16};
   in.left = true;
   stage->input(in);  // picked: a point of the box's face, on this ray
-  OrbitCamera camera;
-  camera.params().target = box;
-  camera.params().distance = 0.6f;
-  camera.params().yaw = -1.5707963f;
-  camera.params().pitch = 0.0f;
   auto ray = [&](double depth) {
     return glm::dvec3(camera.rayOrigin(in.cursor, in.viewport)) +
            depth * glm::dvec3(camera.rayDirection(in.cursor, in.viewport));
@@ -161,24 +177,13 @@ TEST_F(WaterStage, ALeftDragOnABodyPullsItAndElsewhereTurnsTheCamera) {
 // along the axis, picked 4 pixels right of it and pulled 4 pixels up, turns until the point picked
 // points at the mouse's (45°, within 3°), its centre still on the axis (within 1 mm).
 TEST_F(WaterStage, ADraggedHingedBodyTurnsAboutItsHinge) {
-  Scene s = parseScene(io::parseJson(R"({"model": "fluid", "params": {
-      "particles": {"spacing": 0.02, "domain_max": [0.4, 0.2, 0.4], "fill": "block", "fill_max": [0.06, 0.2, 0.06]},
-      "engine": {"dt": 0.002, "substeps": 10},
-      "obstacles": [{"shape": "box", "size": [0.08, 0.03, 0.01], "centre": [0.2, 0.1, 0.2],
-                     "dynamic": true, "density": 800, "hinge": {"axis": [0, 1, 0]}}],
-      "probes": [{"kind": "body", "obstacle": 0}],
-      "view": {"camera": {"target": [0.2, 0.1, 0.2], "distance": 0.6, "yaw": -1.5707963, "pitch": 0}}}})",
-                                     "w.json"),
-                       "w.json");
-  std::unique_ptr<Stage> stage = createStage(s, shaders());
+  SideView side = sideView(shaders(), "[0.06, 0.2, 0.06]",
+                           R"({"shape": "box", "size": [0.08, 0.03, 0.01], "centre": [0.2, 0.1, 0.2],
+                               "dynamic": true, "density": 800, "hinge": {"axis": [0, 1, 0]}})",
+                           {0.2f, 0.1f, 0.2f});
+  Stage* stage = side.stage.get();
+  const OrbitCamera& camera = side.camera;
   gl::GpuProfiler profiler;
-  RenderTarget target(64, 32);
-  stage->render(target, profiler);
-  OrbitCamera camera;
-  camera.params().target = {0.2f, 0.1f, 0.2f};
-  camera.params().distance = 0.6f;
-  camera.params().yaw = -1.5707963f;
-  camera.params().pitch = 0.0f;
   Input in;
   in.viewport = {64, 32};
   in.cursor = {36, 16};
