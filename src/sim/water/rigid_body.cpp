@@ -34,10 +34,10 @@ RigidBody::RigidBody(const MassProperties& mass, const ObstacleParams& o) : m_ma
 }
 
 void RigidBody::setMass(const MassProperties& mass) {
-  const glm::dvec3 velocity = velocityAt(m_state.position + rotation() * (mass.centre - m_mass.centre));
-  const glm::dvec3 omega = this->omega();
   const glm::dmat3 r = rotation();
-  m_state.position += r * (mass.centre - m_mass.centre);
+  const glm::dvec3 shift = r * (mass.centre - m_mass.centre);  // the new centre of mass from the old
+  const glm::dvec3 velocity = velocityAt(m_state.position + shift), omega = this->omega();
+  m_state.position += shift;
   m_mass = mass;
   if (m_hinge) {
     setSpin(glm::dot(m_hinge->axis, omega));
