@@ -4,7 +4,8 @@
 // with F = −m ΣΔ / dt². Each kernel hands every invocation's shares to addLoads(); the work group
 // adds them in a fixed order and adds the sums to its own partials, so the result does not depend
 // on scheduling. The step's first kernel (predict, with LOADS_FIRST) zeroes its group's partials
-// before adding; the walls' shares count only with LOADS_WALLS (a force probe on a wall). Slots:
+// (clearLoads) before adding; the walls' shares count only with LOADS_WALLS (a force probe on a
+// wall), and without them predict has no share: it only clears. Slots:
 // the six walls (−x, +x, −y, +y, −z, +z: a wall's Δ is along its normal), then one per obstacle,
 // with the moment about its centre c_k (each pair's correction lies on the line through the two
 // particles, so (p − c_k) × Δ is its moment).
@@ -53,16 +54,19 @@ void addGroup(uint slot, vec3 a, vec3 b, bool walls) {
   barrier();  // sLoad is reused
 }
 
+// Zeroes the group's partials, an invocation per value: the step's first kernel, before it adds.
+void clearLoads() {
+  for (uint s = gl_LocalInvocationIndex; s < 2u * uLoadSlots; s += uint(FLUID_GROUP_SIZE))
+    loads[2u * groupIndex() * uLoadSlots + s] = vec4(0.0);
+}
+
 // `wall`: this invocation's correction by the walls, per axis; `side` per axis: −1 the wall at
 // the minimum, +1 at the maximum; `touched`: bit k for each obstacle k whose particles moved it.
 void addLoads(vec3 wall, vec3 side, uint touched) {
-  if (gl_LocalInvocationIndex == 0u) {
-    sTouched = 0u;
+  if (gl_LocalInvocationIndex == 0u) sTouched = 0u;
 #ifdef LOADS_FIRST
-    const uint base = 2u * groupIndex() * uLoadSlots;
-    for (uint s = 0u; s < 2u * uLoadSlots; ++s) loads[base + s] = vec4(0.0);
+  clearLoads();
 #endif
-  }
   barrier();
 #ifdef LOADS_WALLS
   if (wall != vec3(0.0)) touched |= 1u << LOADS_TOUCHED_WALLS;

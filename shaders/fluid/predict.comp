@@ -35,7 +35,9 @@ void main() {
     pred[i] = vec4(inside, v.w);
     wallShare = inside - p;
   }
-#ifdef BOUNDARY_LOADS
+#if defined(LOADS_WALLS)
   addLoads(wallShare, wallSides(p), 0u);  // by every invocation: the group adds them
+#elif defined(BOUNDARY_LOADS)
+  clearLoads();  // no share of its own: the clamp only touches the walls
 #endif
 }
