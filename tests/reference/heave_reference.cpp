@@ -76,7 +76,8 @@ HeaveReference::HeaveReference(const HeaveTank& tank, double cell) : m_tank(tank
           continue;
         }
         double diagonal = 0.0;
-        const int around[6][3] = {{i - 1, j, k}, {i + 1, j, k}, {i, j - 1, k}, {i, j + 1, k}, {i, j, k - 1}, {i, j, k + 1}};
+        const int around[6][3] = {{i - 1, j, k}, {i + 1, j, k}, {i, j - 1, k},
+                                  {i, j + 1, k}, {i, j, k - 1}, {i, j, k + 1}};
         for (const auto& n : around) {
           if (n[0] < 0 || n[0] >= nx || n[1] < 0 || n[1] >= ny || n[2] < 0) continue;  // a wall or a mirror
           if (n[2] >= nz) {

@@ -25,8 +25,8 @@
 namespace tidepool::test {
 
 struct HeaveTank {
-  double length = 0, width = 0;  // the tank's floor, along x and y, m
-  double depth = 0;              // of the still water, m
+  double length = 0, width = 0;        // the tank's floor, along x and y, m
+  double depth = 0;                    // of the still water, m
   double boxLength = 0, boxWidth = 0;  // the box's, along x and y, centred (0: no box), m
   double draft = 0;                    // the box's bottom under the still water, m
   double mass = 0;                     // the box's, kg
@@ -57,7 +57,7 @@ class HeaveReference {
  private:
   HeaveTank m_tank;
   double m_cell = 0;
-  std::vector<std::size_t> m_faces;      // per surface face, its cell column (i ny + j)
+  std::vector<std::size_t> m_faces;  // per surface face, its cell column (i ny + j)
   std::size_t m_ny = 0;
   std::vector<std::vector<double>> m_G;  // m_G[f][k]: the rise at face f for a unit φ_s at face k
   std::vector<double> m_s, m_b;

@@ -99,9 +99,10 @@ TEST_F(HeaveTest, AFloatingBoxLetGoComesBackAfterThePeriodOfPotentialFlow) {
   const std::vector<double> theoryTurns = test::turningPoints(theory, 5e-4, 1e-5);
   ASSERT_GE(theoryTurns.size(), 3u);
   ASSERT_GE(turns.size(), 3u) << "it did not come back down";
-  std::printf("box %.3f kg, added mass at infinite frequency %.3f kg; highest at %.3f s (theory %.3f), lowest again "
-              "at %.3f s (theory %.3f, %+.1f%%)\n",
-              mass, ref.addedMass(), turns[1], theoryTurns[1], turns[2], theoryTurns[2],
-              100 * (turns[2] - theoryTurns[2]) / theoryTurns[2]);
+  std::printf(
+      "box %.3f kg, added mass at infinite frequency %.3f kg; highest at %.3f s (theory %.3f), lowest again "
+      "at %.3f s (theory %.3f, %+.1f%%)\n",
+      mass, ref.addedMass(), turns[1], theoryTurns[1], turns[2], theoryTurns[2],
+      100 * (turns[2] - theoryTurns[2]) / theoryTurns[2]);
   EXPECT_NEAR(turns[2], theoryTurns[2], 0.1 * theoryTurns[2]);
 }
