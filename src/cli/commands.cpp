@@ -10,6 +10,7 @@
 #include "app/headless.h"
 #include "app/window_app.h"
 #include "base/log.h"
+#include "base/number_text.h"
 #include "cli/scene_options.h"
 #include "gl/context.h"
 #include "gl/context_window.h"
@@ -62,12 +63,6 @@ void parseSize(const std::string& text, int& width, int& height) {
 
 namespace {
 
-std::string compact(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", v);
-  return text;
-}
-
 // The number CLI11 will read, or a message why it is not one that fits.
 std::string finiteNumber(const std::string& text, double& v) {
   char* end = nullptr;
@@ -80,12 +75,12 @@ std::string finiteNumber(const std::string& text, double& v) {
 }  // namespace
 
 CLI::Validator finiteRange(double min, double max) {
-  const std::string range = "[" + compact(min) + ", " + compact(max) + "]";
+  const std::string range = "[" + numberText(min) + ", " + numberText(max) + "]";
   return CLI::Validator(
       [min, max, range](std::string& text) {
         double v = 0;
         std::string why = finiteNumber(text, v);
-        if (why.empty() && !(v >= min && v <= max)) why = compact(v) + " is out of range " + range;
+        if (why.empty() && !(v >= min && v <= max)) why = numberText(v) + " is out of range " + range;
         return why;
       },
       "in " + range);
@@ -96,7 +91,7 @@ CLI::Validator finitePositive() {
       [](std::string& text) {
         double v = 0;
         std::string why = finiteNumber(text, v);
-        if (why.empty() && !(v > 0)) why = compact(v) + " is not above 0";
+        if (why.empty() && !(v > 0)) why = numberText(v) + " is not above 0";
         return why;
       },
       "above 0");

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "base/error.h"
+#include "base/number_text.h"
 #include "gl/window.h"
 #include "render/marching_cubes.h"
 #include "surface/bindings.glsl"
@@ -51,14 +52,11 @@ SurfaceGrid surfaceGrid(const SurfaceInput& in, const SurfaceParams& p, std::siz
   if (p.resolution < 4 || p.resolution > 4096)
     throw Error("--surface-resolution " + std::to_string(p.resolution) +
                 " is out of range: 4 to 4096 cells along the longest axis");
-  char value[32];
-  std::snprintf(value, sizeof value, "%g", double(p.smoothing));
   if (!(p.smoothing >= 1.0f && p.smoothing <= 16.0f))
-    throw Error("--surface-smoothing " + std::string(value) +
+    throw Error("--surface-smoothing " + numberText(p.smoothing) +
                 " is out of range: the kernel reaches 1 to 16 particle radii");
-  std::snprintf(value, sizeof value, "%g", double(p.iso));
   if (!(p.iso > 0.0f && p.iso < 1.0f))
-    throw Error("--surface-iso " + std::string(value) + " is out of range: a level between 0 and 1 (water at rest)");
+    throw Error("--surface-iso " + numberText(p.iso) + " is out of range: a level between 0 and 1 (water at rest)");
   if (!(in.radius > 0.0f) || !(in.particleVolume > 0.0f) || !glm::all(glm::lessThanEqual(in.boxMin, in.boxMax)))
     throw Error("surface: the particles' radius, volume and box must be positive");
   const SurfaceGrid g = layout(in, p, p.resolution);

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "base/error.h"
+#include "base/number_text.h"
 #include "gl/kernel.h"
 #include "gl/window.h"
 #include "water/probe_bindings.glsl"
@@ -27,12 +28,6 @@ struct GaugeUniforms {
 };
 
 std::string item(std::size_t i) { return "probes[" + std::to_string(i) + "]"; }
-
-std::string number(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", x);
-  return buf;
-}
 
 // W(s)·2πs / (disc integral) at s = u·R, per unit u: the radial weight of the kernel's mass.
 double ringWeight(double u) { return 8.0 * u * std::pow(1.0 - u * u, 3.0); }  // ∫₀¹ = 1
@@ -79,12 +74,12 @@ void checkProbes(const Setup& s) {
       throw Error(item(i) + ": obstacle " + std::to_string(p.obstacle) + " does not exist: the scene has " +
                   std::to_string(s.obstacles.size()) + " obstacle" + (s.obstacles.size() == 1 ? "" : "s"));
     if (p.kind == ProbeKind::Gauge && !inside(p.at, 2))
-      throw Error(item(i) + ": the gauge at (" + number(p.at.x) + ", " + number(p.at.y) +
-                  ") is not inside the domain's x (" + number(s.domainMin.x) + ", " + number(s.domainMax.x) +
-                  ") and y (" + number(s.domainMin.y) + ", " + number(s.domainMax.y) + ")");
+      throw Error(item(i) + ": the gauge at (" + numberText(p.at.x) + ", " + numberText(p.at.y) +
+                  ") is not inside the domain's x (" + numberText(s.domainMin.x) + ", " + numberText(s.domainMax.x) +
+                  ") and y (" + numberText(s.domainMin.y) + ", " + numberText(s.domainMax.y) + ")");
     if (p.kind == ProbeKind::Pressure && !inside(p.at, 3))
-      throw Error(item(i) + ": the pressure probe at (" + number(p.at.x) + ", " + number(p.at.y) + ", " +
-                  number(p.at.z) + ") is not inside the domain");
+      throw Error(item(i) + ": the pressure probe at (" + numberText(p.at.x) + ", " + numberText(p.at.y) + ", " +
+                  numberText(p.at.z) + ") is not inside the domain");
   }
 }
 

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 #include "base/error.h"
+#include "base/number_text.h"
 
 namespace tidepool::water {
 
@@ -128,17 +128,11 @@ bool sameBody(const ObstacleParams& a, const ObstacleParams& b) {
   return a.shape == b.shape && a.shell == b.shell && a.size == b.size && (a.shape != Shape::Mesh || a.mesh == b.mesh);
 }
 
-namespace {
-std::string number(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", x);
-  return buf;
-}
-}  // namespace
+namespace {}  // namespace
 
 void refine(Setup& s, double factor) {
   if (!(factor > 0.0) || !std::isfinite(factor))
-    throw Error("resolution: the factor must be positive, not " + number(factor));
+    throw Error("resolution: the factor must be positive, not " + numberText(factor));
   Setup q = s;
   const double resolution = double(s.resolution) * factor;
   // A count the scene uses past 2^30 is refused; one it does not use (random_count with a block
@@ -146,7 +140,7 @@ void refine(Setup& s, double factor) {
   auto scaleCount = [&](int& n, bool used, const char* key) {
     const double scaled = std::round(double(n) * factor * factor * factor);
     if (used && scaled > double(1 << 30))
-      throw Error("resolution " + number(resolution) + " asks for " + number(scaled) + " particles in " + key +
+      throw Error("resolution " + numberText(resolution) + " asks for " + numberText(scaled) + " particles in " + key +
                   " (at most 2^30 = 1073741824): lower the resolution");
     n = n > 0 ? int(std::clamp(scaled, 1.0, double(1 << 30))) : 0;
   };
@@ -156,7 +150,7 @@ void refine(Setup& s, double factor) {
   const double frame = double(s.dt) * s.substeps;
   const long substeps = std::max(1L, std::lround(double(s.substeps) * factor));
   if (substeps > 1000)
-    throw Error("resolution " + number(resolution) + " needs " + std::to_string(substeps) +
+    throw Error("resolution " + numberText(resolution) + " needs " + std::to_string(substeps) +
                 " substeps per frame (engine.substeps allows 1000): lower the resolution or raise engine.dt");
   q.substeps = int(substeps);
   q.dt = float(frame / double(substeps));
