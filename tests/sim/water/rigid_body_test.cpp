@@ -28,6 +28,13 @@ water::ObstacleParams box(glm::vec3 half, glm::vec3 centre, float density, glm::
   return o;
 }
 
+// The largest |particle| + r about the own frame's origin: ContactBody::reach.
+double reachOf(const std::vector<glm::vec4>& particles) {
+  double reach = 0;
+  for (const glm::vec4& q : particles) reach = std::max(reach, double(glm::length(glm::vec3(q))));
+  return reach + kRadius;
+}
+
 // A body with its particles, as sim/water/bodies.h makes one.
 struct Body {
   std::vector<glm::vec4> particles;
@@ -36,8 +43,7 @@ struct Body {
   explicit Body(const water::ObstacleParams& o) {
     const water::Obstacle shape(o, kRadius);
     particles = shape.particles();
-    for (const glm::vec4& q : particles) reach = std::max(reach, double(glm::length(glm::vec3(q))));
-    reach += kRadius;
+    reach = reachOf(particles);
     body.emplace(water::massProperties(particles, shape.volume(particles.size()), o.density), o);
   }
   ContactBody contact() { return {&*body, &particles, reach, {}}; }
@@ -240,12 +246,10 @@ TEST(RigidBody, ABoxDroppedOnAFixedObstacleRestsOnIt) {
   shelf.dynamic = false;
   const water::Obstacle shape(shelf, kRadius);
   const std::vector<glm::vec4> shelfParticles = shape.particles();
-  double shelfReach = 0;
-  for (const glm::vec4& q : shelfParticles) shelfReach = std::max(shelfReach, double(glm::length(glm::vec3(q))));
   water::ObstaclePose shelfPose;
   shelfPose.centre = shelf.centre;
   Body upper(box({0.03f, 0.03f, 0.02f}, {0.3f, 0.3f, 0.22f}, 800.0f));
-  std::vector<ContactBody> list{upper.contact(), {nullptr, &shelfParticles, shelfReach + kRadius, shelfPose}};
+  std::vector<ContactBody> list{upper.contact(), {nullptr, &shelfParticles, reachOf(shelfParticles), shelfPose}};
   for (int i = 0; i < 2000; ++i) water::stepBodies(list, kDt, kGravity, tank({0.6f, 0.6f, 0.4f}), kRadius);
   double closest = 1e30;
   const water::ObstaclePose b = upper.body->pose();
