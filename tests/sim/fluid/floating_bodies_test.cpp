@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "sim/fluid/fluid.h"
+#include "support/fluid_fixtures.h"
 #include "support/gl_test.h"
 
 using namespace tidepool;
@@ -19,25 +20,11 @@ constexpr double kRho = 1000.0;
 constexpr float kSpacing = 0.01f;
 const glm::vec3 kTank(0.16f, 0.16f, 0.2f), kHalf(0.05f, 0.05f, 0.025f);
 
-// A tank filled `depth` deep with one dynamic box (spacing kSpacing, dt 2 ms). tankWithABox: a
-// tank 0.16 × 0.16 m filled 0.06 m deep, and a box 0.1 × 0.1 × 0.05 m of `density` just above
-// the water. Its width is four times its height, so it floats upright at each density here
-// (a cube of 500 kg/m³ would turn onto an edge).
+// tankWith: test::tankWithABox at kSpacing. tankWithABox: a tank 0.16 × 0.16 m filled 0.06 m
+// deep, and a box 0.1 × 0.1 × 0.05 m of `density` just above the water. Its width is four times its height, so it
+// floats upright at each density here (a cube of 500 kg/m³ would turn onto an edge).
 fluid::Params tankWith(glm::vec3 tank, float depth, glm::vec3 centre, glm::vec3 half, float density) {
-  fluid::Params p;
-  p.setSpacing(kSpacing);
-  p.domainMax = tank;
-  p.fill = water::Fill::Slab;
-  p.slabHeight = depth;
-  p.dt = 0.002f;
-  water::ObstacleParams box;
-  box.shape = water::Shape::Box;
-  box.size = half;
-  box.centre = centre;
-  box.dynamic = true;
-  box.density = density;
-  p.obstacles = {box};
-  return p;
+  return test::tankWithABox(kSpacing, tank, depth, centre, half, density);
 }
 fluid::Params tankWithABox(float density) {
   return tankWith(kTank, 0.06f, glm::vec3(0.08f, 0.08f, 0.06f + kHalf.z + kSpacing), kHalf, density);

@@ -7,6 +7,7 @@
 
 #include "reference/heave_reference.h"
 #include "sim/fluid/fluid.h"
+#include "support/fluid_fixtures.h"
 #include "support/gl_test.h"
 
 using namespace tidepool;
@@ -45,20 +46,8 @@ const glm::vec3 kTank(0.3f, 0.12f, 0.25f), kBoxHalf(0.06f, 0.04f, 0.025f);
 constexpr float kDepth = 0.12f, kBoxDensity = 600.0f;
 
 fluid::Params tankWithAFloatingBox(float spacing) {
-  fluid::Params p;
-  p.setSpacing(spacing);
-  p.domainMax = kTank;
-  p.fill = water::Fill::Slab;
-  p.slabHeight = kDepth;
-  p.dt = 0.002f;
-  water::ObstacleParams box;
-  box.shape = water::Shape::Box;
-  box.size = kBoxHalf;
-  box.centre = glm::vec3(0.5f * kTank.x, 0.5f * kTank.y, kDepth + kBoxHalf.z + spacing);
-  box.dynamic = true;
-  box.density = kBoxDensity;
-  p.obstacles = {box};
-  return p;
+  const glm::vec3 centre(0.5f * kTank.x, 0.5f * kTank.y, kDepth + kBoxHalf.z + spacing);
+  return test::tankWithABox(spacing, kTank, kDepth, centre, kBoxHalf, kBoxDensity);
 }
 
 }  // namespace
