@@ -4,6 +4,7 @@
 #include <glm/glm.hpp>
 
 #include "sim/fluid/fluid_params.h"
+#include "support/body_fixtures.h"
 
 namespace tidepool::test {
 
@@ -17,13 +18,7 @@ inline fluid::Params tankWithABox(float spacing, glm::vec3 tank, float depth, gl
   p.fill = water::Fill::Slab;
   p.slabHeight = depth;
   p.dt = 0.002f;
-  water::ObstacleParams box;
-  box.shape = water::Shape::Box;
-  box.size = half;
-  box.centre = centre;
-  box.dynamic = true;
-  box.density = density;
-  p.obstacles = {box};
+  p.obstacles = {dynamicBox(half, centre, density)};
   return p;
 }
 

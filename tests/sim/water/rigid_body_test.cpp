@@ -7,6 +7,7 @@
 
 #include "sim/water/body_contacts.h"
 #include "sim/water/water_init.h"
+#include "support/body_fixtures.h"
 
 using namespace tidepool;
 using water::BodyState, water::ContactBody, water::RigidBody;
@@ -17,16 +18,7 @@ constexpr float kRadius = 0.005f;
 constexpr double kDt = 1e-3;
 const glm::dvec3 kGravity(0.0, 0.0, -9.81);
 
-water::ObstacleParams box(glm::vec3 half, glm::vec3 centre, float density, glm::vec3 degrees = glm::vec3(0.0f)) {
-  water::ObstacleParams o;
-  o.shape = water::Shape::Box;
-  o.size = half;
-  o.centre = centre;
-  o.orientation = degrees;
-  o.dynamic = true;
-  o.density = density;
-  return o;
-}
+using test::dynamicBox;
 
 // The largest |particle| + r about the own frame's origin: ContactBody::reach.
 double reachOf(const std::vector<glm::vec4>& particles) {
@@ -76,7 +68,7 @@ void steps(std::vector<Body*> bodies, int n, const water::Walls& walls) {
 // the faces and its particles are cubes of its volume per particle.
 TEST(RigidBody, ABoxsMassIsItsDensityTimesItsVolumeAndItsInertiaNearlyTheSolidBoxs) {
   const glm::vec3 half(0.05f, 0.04f, 0.03f);
-  const Body b(box(half, glm::vec3(0.0f), 600.0f));
+  const Body b(dynamicBox(half, glm::vec3(0.0f), 600.0f));
   const water::MassProperties& m = b.body->mass();
   const double a = half.x, bb = half.y, c = half.z;
   EXPECT_DOUBLE_EQ(m.mass, 600.0 * 8 * a * bb * c);
@@ -92,7 +84,7 @@ TEST(RigidBody, ABoxsMassIsItsDensityTimesItsVolumeAndItsInertiaNearlyTheSolidBo
 
 // Falling freely, semi-implicit Euler: v_n = n g dt, z_n = z_0 + g dt² n(n+1)/2, to rounding.
 TEST(RigidBody, AFreeFallIsSemiImplicitEuler) {
-  Body b(box({0.02f, 0.02f, 0.02f}, {0.5f, 0.5f, 0.8f}, 500.0f));
+  Body b(dynamicBox({0.02f, 0.02f, 0.02f}, {0.5f, 0.5f, 0.8f}, 500.0f));
   const double z0 = b.body->state().position.z;
   const int n = 200;
   steps({&b}, n, tank(glm::vec3(1.0f)));
@@ -106,7 +98,7 @@ TEST(RigidBody, AFreeFallIsSemiImplicitEuler) {
 // and the kinetic energy ½ ω·L, which the first-order orientation update does not keep exactly,
 // stays within 0.1% over 2000 steps of a tumbling spin (about no principal axis).
 TEST(RigidBody, ATorqueFreeTumbleKeepsItsAngularMomentumAndEnergy) {
-  Body b(box({0.05f, 0.03f, 0.02f}, {0.5f, 0.5f, 0.5f}, 500.0f));
+  Body b(dynamicBox({0.05f, 0.03f, 0.02f}, {0.5f, 0.5f, 0.5f}, 500.0f));
   BodyState& s = b.body->state();
   const glm::dvec3 L = b.body->mass().inertia * glm::dvec3(0.5, 1.0, 3.0);
   s.angularMomentum = L;
@@ -121,7 +113,7 @@ TEST(RigidBody, ATorqueFreeTumbleKeepsItsAngularMomentumAndEnergy) {
 // Dropped 2 cm onto the floor, a box stops there: its lowest particles a radius above the floor
 // (within 2% of r), no speed or spin left to speak of, still level.
 TEST(RigidBody, ABoxDroppedOnTheFloorComesToRestOnIt) {
-  Body b(box({0.04f, 0.03f, 0.02f}, {0.3f, 0.3f, 0.06f}, 800.0f));
+  Body b(dynamicBox({0.04f, 0.03f, 0.02f}, {0.3f, 0.3f, 0.06f}, 800.0f));
   steps({&b}, 1000, tank({0.6f, 0.6f, 0.4f}));
   EXPECT_NEAR(b.lowest(), kRadius, 0.02 * kRadius);
   EXPECT_LT(glm::length(b.body->velocity()), 1e-3);
@@ -132,7 +124,7 @@ TEST(RigidBody, ABoxDroppedOnTheFloorComesToRestOnIt) {
 // Dropped on one edge (turned 30° about x), a box falls over onto a face: its friction and the
 // contacts' torque turn it; at rest its lowest particles lie a radius above the floor.
 TEST(RigidBody, ABoxDroppedOnAnEdgeFallsFlat) {
-  Body b(box({0.04f, 0.04f, 0.02f}, {0.3f, 0.3f, 0.08f}, 800.0f, {30.0f, 0.0f, 0.0f}));
+  Body b(dynamicBox({0.04f, 0.04f, 0.02f}, {0.3f, 0.3f, 0.08f}, 800.0f, {30.0f, 0.0f, 0.0f}));
   steps({&b}, 3000, tank({0.6f, 0.6f, 0.4f}));
   const glm::dmat3 r = b.body->rotation();
   const double up = std::abs(r[2].z);  // the box's z axis against the world's
@@ -145,8 +137,8 @@ TEST(RigidBody, ABoxDroppedOnAnEdgeFallsFlat) {
 // one closer to one of the other than 2r (within 5% of r; the layers nest where their lattices
 // are offset), no faster than 1 mm/s, and the lower one does not sink into the floor.
 TEST(RigidBody, ABoxDroppedOnAnotherRestsOnIt) {
-  Body lower(box({0.05f, 0.05f, 0.02f}, {0.3f, 0.3f, 0.03f}, 1500.0f));
-  Body upper(box({0.03f, 0.03f, 0.02f}, {0.3f, 0.3f, 0.1f}, 1500.0f));
+  Body lower(dynamicBox({0.05f, 0.05f, 0.02f}, {0.3f, 0.3f, 0.03f}, 1500.0f));
+  Body upper(dynamicBox({0.03f, 0.03f, 0.02f}, {0.3f, 0.3f, 0.1f}, 1500.0f));
   steps({&lower, &upper}, 2000, tank({0.6f, 0.6f, 0.4f}));
   EXPECT_NEAR(lower.lowest(), kRadius, 0.05 * kRadius);
   double closest = 1e30;
@@ -164,7 +156,7 @@ TEST(RigidBody, ABoxDroppedOnAnotherRestsOnIt) {
 // is 0.05% shorter than at 5°). The pivot's distance from the centre of mass is kept to 1e-9 m.
 TEST(RigidBody, AHingedBoxSwingsWithTheCompoundPendulumsPeriod) {
   const double d = 0.04;
-  water::ObstacleParams o = box({0.03f, 0.02f, 0.01f}, {0.5f, 0.5f, 0.5f}, 700.0f);
+  water::ObstacleParams o = dynamicBox({0.03f, 0.02f, 0.01f}, {0.5f, 0.5f, 0.5f}, 700.0f);
   o.hingeAxis = {0.0f, 1.0f, 0.0f};
   o.hingeAt = {0.0f, 0.0f, float(d)};
   Body b(o);
@@ -202,7 +194,7 @@ TEST(RigidBody, AHingedBoxSwingsWithTheCompoundPendulumsPeriod) {
 // lowest particles a radius above the floor (within 2% of r), still, at the angle at which its
 // particles, turned about the hinge, first touch the floor (within 0.2°).
 TEST(RigidBody, APlankHingedAtOneEndFallsOntoTheFloorAndRests) {
-  water::ObstacleParams o = box({0.08f, 0.03f, 0.01f}, {0.3f, 0.3f, 0.06f}, 600.0f);
+  water::ObstacleParams o = dynamicBox({0.08f, 0.03f, 0.01f}, {0.3f, 0.3f, 0.06f}, 600.0f);
   o.hingeAxis = {0.0f, 1.0f, 0.0f};
   o.hingeAt = {-0.08f, 0.0f, 0.0f};
   Body b(o);
@@ -229,7 +221,7 @@ TEST(RigidBody, APlankHingedAtOneEndFallsOntoTheFloorAndRests) {
 // Pushed along its axis or through it, a hinged body cannot move, and the contacts do not ask it
 // to: a box hinged about the vertical, resting on the floor, stays finite and still.
 TEST(RigidBody, AContactAlongAHingesAxisLeavesItStill) {
-  water::ObstacleParams o = box({0.04f, 0.03f, 0.02f}, {0.3f, 0.3f, 0.0249f}, 800.0f);
+  water::ObstacleParams o = dynamicBox({0.04f, 0.03f, 0.02f}, {0.3f, 0.3f, 0.0249f}, 800.0f);
   o.hingeAxis = {0.0f, 0.0f, 1.0f};
   Body b(o);
   const BodyState before = b.body->state();
@@ -242,13 +234,13 @@ TEST(RigidBody, AContactAlongAHingesAxisLeavesItStill) {
 // particle of one closer to one of the other than 2r (within 5% of r), the box above the
 // obstacle's top, no faster than 1 mm/s. The obstacle does not move.
 TEST(RigidBody, ABoxDroppedOnAFixedObstacleRestsOnIt) {
-  water::ObstacleParams shelf = box({0.06f, 0.06f, 0.02f}, {0.3f, 0.3f, 0.15f}, 1000.0f);
+  water::ObstacleParams shelf = dynamicBox({0.06f, 0.06f, 0.02f}, {0.3f, 0.3f, 0.15f}, 1000.0f);
   shelf.dynamic = false;
   const water::Obstacle shape(shelf, kRadius);
   const std::vector<glm::vec4> shelfParticles = shape.particles();
   water::ObstaclePose shelfPose;
   shelfPose.centre = shelf.centre;
-  Body upper(box({0.03f, 0.03f, 0.02f}, {0.3f, 0.3f, 0.22f}, 800.0f));
+  Body upper(dynamicBox({0.03f, 0.03f, 0.02f}, {0.3f, 0.3f, 0.22f}, 800.0f));
   std::vector<ContactBody> list{upper.contact(), {nullptr, &shelfParticles, reachOf(shelfParticles), shelfPose}};
   for (int i = 0; i < 2000; ++i) water::stepBodies(list, kDt, kGravity, tank({0.6f, 0.6f, 0.4f}), kRadius);
   double closest = 1e30;
