@@ -18,7 +18,9 @@
 #define LOAD_WALL_SLOTS 6u
 #define LOADS_TOUCHED_WALLS 31u  // the touched mask's bit for the walls (obstacles: bits 0-15)
 
-layout(std430, binding = FLUID_LOADS) buffer Loads { vec4 loads[]; };  // per group and slot: ΣΔ, Σ moment
+// Coherent: predict clears a group's partials and, with LOADS_WALLS, adds to them in the same
+// dispatch from other invocations (memoryBarrierBuffer() and barrier() between).
+layout(std430, binding = FLUID_LOADS) coherent buffer Loads { vec4 loads[]; };  // per group and slot: ΣΔ, Σ moment
 uniform uint uLoadSlots;  // 6 + the obstacles
 
 shared float sLoad[6][FLUID_GROUP_SIZE];
@@ -66,6 +68,7 @@ void addLoads(vec3 wall, vec3 side, uint touched) {
   if (gl_LocalInvocationIndex == 0u) sTouched = 0u;
 #ifdef LOADS_FIRST
   clearLoads();
+  memoryBarrierBuffer();  // the clear seen by the invocations that add below
 #endif
   barrier();
 #ifdef LOADS_WALLS
