@@ -2,7 +2,8 @@
 // PBF step 1 (Macklin & Müller 2013, algorithm 1, lines 1-4): v += dt·g (with damping), the
 // predicted position p = x + dt·v, kept inside the walls (half a spacing off them). Particle order; w carries the foam to
 // the velocity pass (the velocities are recomputed from the positions there). With BOUNDARY_LOADS
-// the walls' share (the clamp) goes to fluid/loads.glsl.
+// it clears the step's partials (fluid/loads.glsl), and with LOADS_WALLS adds the walls' share (the
+// clamp) to them.
 #include "fluid/bindings.glsl"
 
 layout(local_size_x = FLUID_GROUP_SIZE) in;

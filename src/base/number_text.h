@@ -1,5 +1,5 @@
-// A number as the user wrote it, for messages: printf's %g (six significant digits, no trailing
-// zeros, an exponent only when it is shorter).
+// A number for a message: printf's %g (six significant digits, no trailing zeros, an exponent
+// only where it is shorter).
 #pragma once
 
 #include <cstdio>
