@@ -13,7 +13,8 @@
 using namespace tidepool;
 
 // The reference's free surface alone: the tank's first mode symmetric about its middle, started
-// as η = A cos(2πx/L), swings with ω² = g k tanh(k h), k = 2π/L (Lamb, "Hydrodynamics", §257).
+// as η = A cos(2πx/L), swings with ω² = g k tanh(k h), k = 2π/L (Lamb, "Hydrodynamics", 1932:
+// standing waves in a rectangular tank).
 TEST(HeaveReference, AnEmptyTanksSloshingHasLambsPeriod) {
   test::HeaveTank tank;
   tank.length = 0.3;
