@@ -134,9 +134,9 @@ HeaveReference::State HeaveReference::rest() const {
 
 HeaveReference::State HeaveReference::pushed(double z) const {
   State s = rest();
-  const double free = double(m_faces.size()) * m_cell * m_cell, waterplane = 0.25 * m_tank.boxLength * m_tank.boxWidth;
+  const double free = double(m_faces.size()) * m_cell * m_cell;
   s.z = z;
-  s.eta.assign(m_faces.size(), -z * waterplane / free);
+  s.eta.assign(m_faces.size(), -z * waterplane() / free);
   return s;
 }
 
@@ -147,7 +147,7 @@ void HeaveReference::advance(State& s, double dt, int steps) const {
   std::vector<double> rise(faces);
   for (int n = 0; n < steps; ++n) {
     if (hasBox) {  // the quarter's share of the box
-      double lift = -t.rho * t.g * 0.25 * t.boxLength * t.boxWidth * s.z;
+      double lift = -t.rho * t.g * waterplane() * s.z;
       for (std::size_t k = 0; k < faces; ++k) lift += t.rho * t.g * m_b[k] * s.eta[k];
       s.w += dt * lift / (0.25 * t.mass + t.rho * m_a);
     }

@@ -55,6 +55,8 @@ class HeaveReference {
   void advance(State& s, double dt, int steps) const;
 
  private:
+  double waterplane() const { return 0.25 * m_tank.boxLength * m_tank.boxWidth; }  // the quarter's A_w, m²
+
   HeaveTank m_tank;
   double m_cell = 0;
   std::vector<std::size_t> m_faces;  // per surface face, its cell column (i ny + j)
