@@ -8,7 +8,7 @@
 #define FLUID_LAMBDA 4         // vec2 (lambda, rho/rho0) per particle; vec4 vorticity in the vorticity passes
 #define FLUID_CELL_START 5     // uint per grid cell + 1 (grid/bindings.glsl's layout), cell = h / 2
 #define FLUID_PRESSURE 6       // float per particle: Σ λ over the step's iterations (the pressure, fluid/pressure.comp)
-#define FLUID_LOADS 7          // vec4 pairs per work group and slot: the boundaries' shares of the corrections (fluid/loads.glsl)
+#define FLUID_LOADS 7          // vec4 pairs per work group and slot: the boundaries' shares of the corrections (water/loads.glsl)
 #ifndef FLUID_GROUP_SIZE
 #define FLUID_GROUP_SIZE 128   // local size of every fluid kernel (one particle per invocation)
 #endif

@@ -4,7 +4,7 @@
 // the walls' gradient), s_corr = −k (W(r)/W(Δq))^n, then the collisions: no closer than
 // uContact to an obstacle particle (no layer of them can be passed) and inside
 // the walls. Jacobi: reads p and λ of all, writes the corrected p to the other buffer. With
-// BOUNDARY_LOADS, the walls' and each obstacle's shares of the correction go to fluid/loads.glsl.
+// BOUNDARY_LOADS, the walls' and each obstacle's shares of the correction go to water/loads.glsl.
 #include "fluid/bindings.glsl"
 
 layout(local_size_x = FLUID_GROUP_SIZE) in;
@@ -104,7 +104,9 @@ void obstacleShare(uint k, out vec3 delta, out vec3 moment) {
   delta = moment = vec3(0.0);
 #endif
 }
-#include "fluid/loads.glsl"
+#define LOADS_BINDING FLUID_LOADS
+#define LOADS_GROUP_SIZE FLUID_GROUP_SIZE
+#include "water/loads.glsl"
 #endif
 
 // Particle i's corrected position; `wallShare`: the walls' part of its correction (λ_i times

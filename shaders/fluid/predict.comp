@@ -2,7 +2,7 @@
 // PBF step 1 (Macklin & Müller 2013, algorithm 1, lines 1-4): v += dt·g (with damping), the
 // predicted position p = x + dt·v, kept inside the walls (half a spacing off them). Particle order; w carries the foam to
 // the velocity pass (the velocities are recomputed from the positions there). With BOUNDARY_LOADS
-// it clears the step's partials (fluid/loads.glsl), and with LOADS_WALLS adds the walls' share (the
+// it clears the step's partials (water/loads.glsl), and with LOADS_WALLS adds the walls' share (the
 // clamp) to them.
 #include "fluid/bindings.glsl"
 
@@ -22,7 +22,9 @@ uniform float uDecay;   // exp(−damping·dt)
 
 #ifdef BOUNDARY_LOADS
 void obstacleShare(uint k, out vec3 delta, out vec3 moment) { delta = moment = vec3(0.0); }
-#include "fluid/loads.glsl"
+#define LOADS_BINDING FLUID_LOADS
+#define LOADS_GROUP_SIZE FLUID_GROUP_SIZE
+#include "water/loads.glsl"
 #endif
 
 void main() {

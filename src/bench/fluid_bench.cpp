@@ -3,7 +3,7 @@
 // over the iterations), with steps per second and GPU bytes per particle. --n sets the particle
 // count of a block-filled scene (bench-fluid) by choosing the spacing that fills the block with
 // that many particles on the cubic lattice; other scenes run as they are. --loads on adds force
-// probes on the floor and on every obstacle (sim/fluid/boundary_loads.h: what measuring costs);
+// probes on the floor and on every obstacle (sim/water/boundary_loads.h: what measuring costs);
 // --bodies N adds N boxes afloat at the block's surface, dynamic (sim/water/bodies.h) or, with
 // --dynamic off, held where they are: what moving them costs beyond their boundary particles.
 #include <cmath>

@@ -2,7 +2,7 @@
 // GPU step is compared against: plain loops over all pairs, double precision, the same order of
 // operations as src/sim/fluid/fluid_passes.cpp (predict, iterations of λ then Δp with s_corr,
 // obstacle contact and walls, velocity, XSPH, vorticity confinement), densities as ρ/ρ0; and the
-// boundaries' shares of the corrections, the loads (src/sim/fluid/boundary_loads.h).
+// boundaries' shares of the corrections, the loads (src/sim/water/boundary_loads.h).
 #pragma once
 
 #include <array>

@@ -50,7 +50,7 @@ Fluid::Fluid(gl::ShaderLibrary& shaders, const Params& params)
       m_params(params),
       m_obstacles(shaders),
       m_probe(shaders),
-      m_loads(shaders) {
+      m_loads(shaders, FLUID_GROUP_SIZE) {
   // Obstacle particles weigh in the density sum with their rest volumes (rest_lattice.h).
   m_obstacles.setVolumes([this](const water::ObstacleBody& b) {
     return boundaryVolumes(b.particles, b.built.shell, m_params.h(), m_solidVolume);

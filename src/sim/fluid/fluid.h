@@ -24,7 +24,7 @@
 #include "gl/gpu_profiler.h"
 #include "gl/shader_library.h"
 #include "grid/grid.h"
-#include "sim/fluid/boundary_loads.h"
+#include "sim/water/boundary_loads.h"
 #include "sim/fluid/density_probe.h"
 #include "sim/fluid/fluid_params.h"
 #include "sim/fluid/rest_lattice.h"
@@ -164,7 +164,7 @@ class Fluid final : public sim::Model, public water::ParticleWater {
   std::string m_obstacleError;
   water::Walls m_walls;
   DensityProbe m_probe;
-  BoundaryLoads m_loads;
+  water::BoundaryLoads m_loads;
   // A force probe or a dynamic obstacle is listed: the step measures the loads, the walls' only
   // for a probe on a wall (theirs cost the most: most work groups touch a wall); after it,
   // m_loads holds its sums.

@@ -67,7 +67,7 @@ struct PredictUniforms {  // fluid/predict.comp
   float dt = 0;
   glm::vec3 gravity{0.0f};  // m/s², turned with the domain
   float decay = 1;          // exp(−damping·dt)
-  GLuint loadSlots = 0;     // fluid/loads.glsl, with BOUNDARY_LOADS
+  GLuint loadSlots = 0;     // water/loads.glsl, with BOUNDARY_LOADS
   SphUniforms sph;
   WallUniforms walls;
   static constexpr auto fields() {
@@ -107,7 +107,7 @@ struct DeltaUniforms {  // fluid/delta.comp
   float scorrK = 0, scorrN = 0;
   float scorrInvQ = 0;   // 1 / (1 − Δq²/h²)
   float contact = 0;     // m: the closest a fluid particle comes to an obstacle particle
-  GLuint loadSlots = 0;  // fluid/loads.glsl, with BOUNDARY_LOADS
+  GLuint loadSlots = 0;  // water/loads.glsl, with BOUNDARY_LOADS
   SphUniforms sph;
   WallUniforms walls;
   NeighbourUniforms neighbours;

@@ -113,7 +113,7 @@ NeighbourUniforms Fluid::bindNeighbours() const {
 
 std::vector<gl::ShaderDefine> Fluid::bindLoads() const {
   if (!m_loadsOn) return {};
-  m_loads.bind();
+  m_loads.bind(FLUID_LOADS);
   if (m_wallLoadsOn) return {{"BOUNDARY_LOADS", ""}, {"LOADS_WALLS", ""}};
   return {{"BOUNDARY_LOADS", ""}};
 }

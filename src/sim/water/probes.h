@@ -17,7 +17,7 @@
 //   force  {"kind": "force", "obstacle": k} or {"kind": "force", "wall": "-z"}  what the water
 //          exerted on obstacle k (force, N, and torque about its centre, N·m) or on a wall (its
 //          force along the wall's outward normal, N) during the last step: the fluid's, from the momentum its boundary
-//          corrections gave the water (sim/fluid/boundary_loads.h), F = −m ΣΔx / dt². The model measures loads only
+//          corrections gave the water (sim/water/boundary_loads.h), F = −m ΣΔx / dt². The model measures loads only
 //          while a force probe is listed. The balls: an Error (not measured yet).
 //   body   {"kind": "body", "obstacle": k}  obstacle k's pose and velocity as placed at the last
 //          step: centre (m), orientation (unit quaternion w, x, y, z), velocity (m/s), angular

@@ -1,36 +1,36 @@
-// The loads on the walls and the obstacles (src/sim/fluid/boundary_loads.h), for the kernels that
-// move particles off a boundary (predict and delta, with BOUNDARY_LOADS). A boundary's share Δ of
-// a particle's correction is momentum it gave the water: over a step the water pushes back on it
-// with F = −m ΣΔ / dt². Each kernel hands every invocation's shares to addLoads(); the work group
-// adds them in a fixed order and adds the sums to its own partials, so the result does not depend
-// on scheduling. The step's first kernel (predict, with LOADS_FIRST) zeroes its group's partials
+// The loads on the walls and the obstacles (src/sim/water/boundary_loads.h), for the kernels that
+// measure what each particle's boundaries did to it: the fluid's predict and Δp (with
+// BOUNDARY_LOADS), whose shares Δ of a particle's correction are momentum a boundary gave the
+// water (F = −m ΣΔ / dt²), and the balls' loads.comp, whose shares are the accelerations a
+// boundary gave a ball (F = −m Σa). Each kernel hands every invocation's shares to addLoads(); the
+// work group adds them in a fixed order and adds the sums to its own partials, so the result does
+// not depend on scheduling. The step's first kernel (with LOADS_FIRST) zeroes its group's partials
 // (clearLoads) before adding; the walls' shares count only with LOADS_WALLS (a force probe on a
-// wall), and without them predict has no share: it only clears. Slots:
-// the six walls (−x, +x, −y, +y, −z, +z: a wall's Δ is along its normal), then one per obstacle,
-// with the moment about its centre c_k (each pair's correction lies on the line through the two
-// particles, so (p − c_k) × Δ is its moment).
-// The including kernel defines, before including this file,
+// wall). Slots: the six walls (−x, +x, −y, +y, −z, +z: a wall's share is along its normal), then
+// one per obstacle, with the moment about its centre c_k.
+// The including kernel defines LOADS_BINDING (the partials' storage block) and LOADS_GROUP_SIZE
+// (its local size), and, before including this file,
 //   void obstacleShare(uint k, out vec3 delta, out vec3 moment);  // this invocation's, for k
 // and calls addLoads() from every invocation of the group (none may return before it).
-#ifndef FLUID_LOADS_GLSL
-#define FLUID_LOADS_GLSL
+#ifndef WATER_LOADS_GLSL
+#define WATER_LOADS_GLSL
 
 #define LOAD_WALL_SLOTS 6u
 #define LOADS_TOUCHED_WALLS 31u  // the touched mask's bit for the walls (obstacles: bits 0-15)
 
-// Coherent: predict clears a group's partials and, with LOADS_WALLS, adds to them in the same
+// Coherent: the first kernel clears a group's partials and, with LOADS_WALLS, adds to them in the same
 // dispatch from other invocations (memoryBarrierBuffer() and barrier() between).
-layout(std430, binding = FLUID_LOADS) coherent buffer Loads { vec4 loads[]; };  // per group and slot: ΣΔ, Σ moment
+layout(std430, binding = LOADS_BINDING) coherent buffer Loads { vec4 loads[]; };  // per group and slot: ΣΔ, Σ moment
 uniform uint uLoadSlots;  // 6 + the obstacles
 
-shared float sLoad[6][FLUID_GROUP_SIZE];
+shared float sLoad[6][LOADS_GROUP_SIZE];
 shared uint sTouched;
 
 // Sums the group's six values per invocation into slot `slot` (walls: one value per wall), in a
 // fixed order: 6 × LOAD_LANES invocations each add LOAD_RUN consecutive values of one, then six
 // add those partial sums and add them to the group's partials.
 #define LOAD_RUN 8u
-#define LOAD_LANES (uint(FLUID_GROUP_SIZE) / LOAD_RUN)
+#define LOAD_LANES (uint(LOADS_GROUP_SIZE) / LOAD_RUN)
 shared float sLoadRun[6][LOAD_LANES];
 void addGroup(uint slot, vec3 a, vec3 b, bool walls) {
   const uint t = gl_LocalInvocationIndex;
@@ -58,7 +58,7 @@ void addGroup(uint slot, vec3 a, vec3 b, bool walls) {
 
 // Zeroes the group's partials, an invocation per value: the step's first kernel, before it adds.
 void clearLoads() {
-  for (uint s = gl_LocalInvocationIndex; s < 2u * uLoadSlots; s += uint(FLUID_GROUP_SIZE))
+  for (uint s = gl_LocalInvocationIndex; s < 2u * uLoadSlots; s += uint(LOADS_GROUP_SIZE))
     loads[2u * groupIndex() * uLoadSlots + s] = vec4(0.0);
 }
 
