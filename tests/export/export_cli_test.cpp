@@ -80,7 +80,7 @@ TEST(ExportCli, BenchExportTimesBothFormats) {
 }
 
 // The scene's probes go beside the exported frames, one row per exported frame in probes.csv with
-// validate's columns; a probe the model cannot measure (a force on the balls) is one line before
+// validate's columns; a probe the model cannot measure (a pressure on the balls) is one line before
 // any frame.
 TEST(ExportCli, ProbesAreWrittenBesideTheFramesOrRefusedInOneLine) {
   test::TempDir dir;
@@ -100,9 +100,9 @@ TEST(ExportCli, ProbesAreWrittenBesideTheFramesOrRefusedInOneLine) {
 
   dir.write("balls.json", R"({"model": "balls", "params": {"particles": {"radius": 0.01,
       "domain_max": [0.2, 0.1, 0.2], "fill": "slab", "slab_height": 0.05},
-      "probes": [{"kind": "force", "wall": "-z"}]}})");
+      "probes": [{"kind": "pressure", "at": [0.1, 0.05, 0.02]}]}})");
   test::expectOneLineError({"render", (dir / "balls.json").string(), "--frames", "2", "--size", "32x18", "--export",
                             "vtk", "--out", (dir / "balls").string(), "--quiet"},
-                           "balls: force probes are measured on the fluid only");
+                           "balls: a pressure probe reads the fluid solver's pressure");
   EXPECT_FALSE(std::filesystem::exists(dir / "balls" / "frame_00000.vtp"));
 }

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <glm/glm.hpp>
 #include <vector>
@@ -22,8 +23,9 @@ struct State {
   std::vector<dvec3> a;  // Verlet: the acceleration at (x, v) of the last step; empty before the first
 };
 
-struct Fixed {  // an obstacle particle: where it is and how fast it moves
+struct Fixed {  // an obstacle particle: where it is, how fast it moves, and whose it is
   dvec3 x, v;
+  std::size_t obstacle = 0;
 };
 
 inline dvec3 contactAccel(const Params& p, dvec3 n, double overlap, dvec3 relVel, double massRatio, double share) {
@@ -115,6 +117,41 @@ inline std::vector<dvec3> accelerations(const State& s, const Params& p, const s
   return a;
 }
 
+// What the balls at the state push the walls and the obstacles with (balls/loads.comp): each wall's
+// force along its axis and each obstacle's force and torque about centres[k], −m times the
+// accelerations their contacts give the balls, the torque's lever from the centre to the contact's
+// midpoint. Walls −x, +x, −y, +y, −z, +z.
+struct Loads {
+  std::array<double, 6> walls{};
+  std::vector<dvec3> force, torque;
+};
+inline Loads loads(const State& s, const Params& p, const std::vector<Fixed>& fixed, const std::vector<dvec3>& centres,
+                   double mass) {
+  const double r = p.radius, reach = 2 * r;
+  Loads out;
+  out.force.assign(centres.size(), dvec3(0.0));
+  out.torque.assign(centres.size(), dvec3(0.0));
+  for (std::size_t i = 0; i < s.x.size(); ++i) {
+    for (const Fixed& f : fixed) {
+      const dvec3 d = s.x[i] - f.x;
+      const double dist = glm::length(d);
+      if (dist >= reach || dist == 0.0) continue;
+      const dvec3 f_on_obstacle = -mass * contactAccel(p, d / dist, reach - dist, s.v[i] - f.v, 1.0, 1.0);
+      out.force[f.obstacle] += f_on_obstacle;
+      out.torque[f.obstacle] += glm::cross(0.5 * (s.x[i] + f.x) - centres[f.obstacle], f_on_obstacle);
+    }
+    for (int k = 0; k < 3; ++k) {
+      dvec3 axis(0.0);
+      axis[k] = 1.0;
+      const double below = p.domainMin[k] + r - s.x[i][k];
+      if (below > 0) out.walls[2 * k] -= mass * wallAccel(p, axis, below, s.v[i])[k];
+      const double above = s.x[i][k] - (p.domainMax[k] - r);
+      if (above > 0) out.walls[2 * k + 1] -= mass * wallAccel(p, -axis, above, s.v[i])[k];
+    }
+  }
+  return out;
+}
+
 // walls.glsl's confineToDomain: the CUDA sample's clamp-and-bounce, then the clamp to the domain.
 inline void confine(const Params& p, dvec3& x, dvec3& v) {
   const double r = p.radius;
@@ -132,11 +169,9 @@ inline void confine(const Params& p, dvec3& x, dvec3& v) {
   x = glm::clamp(x, dvec3(p.domainMin), dvec3(p.domainMax));
 }
 
-// One velocity Verlet step as the model runs it. Its first step (a empty) evaluates a(x0, v0)
-// without a kick; then drift.comp: v½ = v + dt/2·a, x += dt·v½, confined; then collide.comp on
-// the drifted positions and half-step velocities: a = a(x, v½), v = (v½ + dt/2·a)·exp(−damping·dt).
-// The fixed particles are where they are when the forces act (here they do not move).
-inline void stepVerlet(State& s, const Params& p, const std::vector<Fixed>& fixed = {}) {
+// The first half of a velocity Verlet step as the model runs it. Its first step (a empty)
+// evaluates a(x0, v0) without a kick; then drift.comp: v½ = v + dt/2·a, x += dt·v½, confined.
+inline void drift(State& s, const Params& p, const std::vector<Fixed>& fixed = {}) {
   const double dt = p.dt;
   if (s.a.size() != s.x.size()) s.a = accelerations(s, p, fixed);
   for (std::size_t i = 0; i < s.x.size(); ++i) {
@@ -144,6 +179,14 @@ inline void stepVerlet(State& s, const Params& p, const std::vector<Fixed>& fixe
     s.x[i] += dt * s.v[i];
     confine(p, s.x[i], s.v[i]);
   }
+}
+
+// One velocity Verlet step: the drift, then collide.comp on the drifted positions and half-step
+// velocities: a = a(x, v½), v = (v½ + dt/2·a)·exp(−damping·dt). The fixed particles are where
+// they are when the forces act (here they do not move).
+inline void stepVerlet(State& s, const Params& p, const std::vector<Fixed>& fixed = {}) {
+  const double dt = p.dt;
+  drift(s, p, fixed);
   s.a = accelerations(s, p, fixed);
   const double decay = std::exp(-double(p.damping) * dt);
   for (std::size_t i = 0; i < s.x.size(); ++i) s.v[i] = (s.v[i] + 0.5 * dt * s.a[i]) * decay;

@@ -19,7 +19,11 @@ constexpr std::size_t kMaxCheckpointBalls = std::size_t(4) << 20;  // larger run
 }  // namespace
 
 Balls::Balls(gl::ShaderLibrary& shaders, const Params& params)
-    : Model(shaders, "balls", kMaxCheckpointBalls), m_shaders(shaders), m_params(params), m_obstacles(shaders) {
+    : Model(shaders, "balls", kMaxCheckpointBalls),
+      m_shaders(shaders),
+      m_params(params),
+      m_obstacles(shaders),
+      m_loads(shaders, BALLS_GROUP_SIZE) {
   reset();
 }
 
@@ -80,7 +84,7 @@ void Balls::reset() {
   if (m_acc.size()) m_acc.fillZero();
   m_posIndex = m_velIndex = 0;
   m_time = 0;
-  m_accValid = false;
+  m_accValid = m_loadsValid = false;
   m_grid.reset();
   ensureGrid();
   m_obstacleError.clear();
@@ -157,7 +161,7 @@ std::string Balls::method() const {
 void Balls::resume(const sim::StateStamp& good) {
   m_count = good.count;
   m_time = good.time;
-  m_accValid = false;  // Verlet re-evaluates a(x) for the restored state
+  m_accValid = m_loadsValid = false;  // Verlet re-evaluates a(x) for the restored state
   m_params.dt *= 0.5f;
   m_params.substeps = std::min(m_params.substeps * 2, 1000);  // same simulated time per frame
 }
@@ -172,6 +176,7 @@ void Balls::visitOwnState(sim::StateVisitor& v) {
   v.flag("model.acc_valid", m_accValid);
   if (m_accValid) v.buffer("model.accelerations", accelerations(), m_count * sizeof(glm::vec4));
   if (v.loading()) {
+    m_loadsValid = false;
     ensureGrid();
     updateWalls();
   }
@@ -189,7 +194,7 @@ void Balls::upload(const std::vector<glm::vec4>& pos, const std::vector<glm::vec
   m_posIndex = m_velIndex = 0;
   m_pos[0].upload(pos.data(), pos.size() * sizeof(glm::vec4));
   m_vel[0].upload(vel.data(), vel.size() * sizeof(glm::vec4));
-  m_accValid = false;
+  m_accValid = m_loadsValid = false;
   ensureGrid();
   restartWatch();  // a new state: nothing judged yet
 }
@@ -231,8 +236,25 @@ std::vector<double> Balls::pressures(const std::vector<glm::vec3>&) {
       "as fluid (\"model\": \"fluid\")");
 }
 
+void Balls::beginLoads() {
+  m_loadsOn = m_wallLoadsOn = false;
+  for (const water::ProbeParams& p : m_params.probes)
+    if (p.kind == water::ProbeKind::Force) {
+      m_loadsOn = true;
+      m_wallLoadsOn = m_wallLoadsOn || p.wall != water::ProbeWall::None;
+    }
+  if (m_loadsOn) m_loads.begin(m_count, m_obstacles.size());
+}
+
+double Balls::mass() const {
+  return double(m_params.restDensity) * water::volumePerParticle(m_radius, Params::kPacking);
+}
+
 water::Loads Balls::loads() {
-  throw Error("balls: force probes are measured on the fluid only; run the scene as fluid (\"model\": \"fluid\")");
+  if (!m_loadsValid) return water::Loads::unmeasured(m_obstacles.size());  // no step since reset, or none that measured
+  water::Loads out = m_loads.read(-mass());
+  if (!m_wallLoadsOn || m_params.contact == Contact::CudaSample) out.unmeasuredWalls();
+  return out;
 }
 
 }  // namespace tidepool::balls

@@ -9,7 +9,8 @@
 //   symplectic / explicit Euler:  placeObstacles(t)      -> sortByCell -> collide (forces, integrate)
 //   velocity Verlet:              placeObstacles(t + dt) -> drift -> sortByCell -> collide (forces, kick)
 // Euler's collide also counts each ball into the next step's grid as it writes it, so the next
-// sortByCell starts at the scan.
+// sortByCell starts at the scan. While a force probe is listed, measureLoads follows the collide
+// (the loads of the balls on the walls and the obstacles, from the same inputs).
 #pragma once
 
 #include <memory>
@@ -26,6 +27,7 @@
 #include "sim/balls/balls_params.h"
 #include "sim/model.h"
 #include "sim/particle_memory.h"
+#include "sim/water/boundary_loads.h"
 #include "sim/water/obstacles.h"
 #include "sim/water/particle_water.h"
 
@@ -72,7 +74,10 @@ class Balls final : public sim::Model, public water::ParticleWater {
   float domainRotation() const override;  // radians about x
   // Pressure probes: the balls have no pressure field (throws Error saying so).
   std::vector<double> pressures(const std::vector<glm::vec3>& points) override;
-  water::Loads loads() override;  // Error: not measured
+  // The loads of the last step (water/boundary_loads.h), while the setup lists a force probe; the
+  // cuda-sample law's walls clamp rather than push: theirs read NaN.
+  water::Loads loads() override;
+  double mass() const;  // kg per ball: ρ0 times volumePerParticle
   water::Packing packing() const override { return Params::kPacking; }
   const water::Setup& water() const override { return m_params; }
   std::size_t bytesPerBall() const;                                   // GPU memory per ball, grid included
@@ -92,7 +97,7 @@ class Balls final : public sim::Model, public water::ParticleWater {
   std::vector<glm::vec4> downloadVelocities() const { return velocities().read<glm::vec4>(m_count); }
   void trackOrder(bool on) { m_trackOrder = on; }
   // Windows the last collide ran in: 1 while the vec4 arrays fit one storage block (gl/window.h).
-  std::size_t collideWindows() const { return m_collideWindows; }
+  std::size_t collideWindows() const { return m_windows.size(); }
   std::vector<GLuint> lastOrder() const;  // lastOrder()[k] = index before the step of ball k after it
 
  private:
@@ -119,10 +124,12 @@ class Balls final : public sim::Model, public water::ParticleWater {
   void updateWalls();       // the piston's wall positions and velocities at t
   void rebuildObstacles();  // obstacles added, removed or reshaped since the last step
   void emitFromTap();       // appends a layer of balls when the jet has advanced one spacing
+  void beginLoads();        // whether this step measures the loads (a force probe is listed)
   void placeObstacles(double time, gl::GpuProfiler* profiler);  // their fixed particles, at `time`
   void drift(gl::GpuProfiler* profiler);                        // Verlet: v½ = v + dt/2·a, x += dt·v½
   void sortByCell(gl::GpuProfiler* profiler);             // grid count + scan, positions and velocities to cell order
   void collide(gl::GpuProfiler* profiler, Collide what);  // contacts, walls, gravity on the sorted balls
+  void measureLoads(gl::GpuProfiler* profiler);           // the collide's inputs, its windows: the loads
   // Balls whose vec4 arrays pass one storage block are stepped a window at a time (gl/window.h):
   // each window of the cell-ordered balls with the window of balls in reach of its cells, which a
   // kernel finds from the grid's cellStart right after the scan (planReachWindows) and the collide
@@ -137,6 +144,7 @@ class Balls final : public sim::Model, public water::ParticleWater {
   // What the kernels share (balls_kernels.h); bindNeighbours() binds the grids' buffers for a
   // window of inputs starting at sources.first.
   WallUniforms wallUniforms() const;
+  ContactUniforms contactUniforms() const;
   float foamDecayPerStep() const;
   NeighbourUniforms bindNeighbours(const gl::Window& sources) const;
   // The grid's counts taken by the last Euler collide hold for the positions it wrote: the next
@@ -170,7 +178,11 @@ class Balls final : public sim::Model, public water::ParticleWater {
   glm::vec3 m_wallMin{0.0f}, m_wallMax{1.0f}, m_wallMinVel{0.0f}, m_wallMaxVel{0.0f};
   double m_time = 0;
   bool m_trackOrder = false, m_accValid = false;
-  std::size_t m_collideWindows = 0;
+  std::vector<ReachWindow> m_windows;  // the last collide's
+  // A force probe is listed: the step measures the loads (the walls' only for a probe on a wall);
+  // after it, m_loads holds its sums.
+  water::BoundaryLoads m_loads;
+  bool m_loadsOn = false, m_wallLoadsOn = false, m_loadsValid = false;
   gl::Buffer m_reachBounds;      // uvec2 per window (balls/reach_windows.comp)
   std::size_t m_reachSize = 0;   // balls per window of the plan in m_reachBounds; 0: none planned
   std::size_t m_reachCount = 0;  // balls when it was planned

@@ -93,6 +93,27 @@ struct CollideUniforms {        // balls/collide.comp
   }
 };
 
+struct LoadsUniforms {          // balls/loads.comp
+  GLuint first = 0, count = 0;  // balls [first, count)
+  float radius = 0;             // m
+  GLuint sourceFirst = 0;       // the first ball of the inputs' window
+  GLuint loadSlots = 0;         // water/loads.glsl
+  ContactUniforms contact;
+  WallUniforms walls;
+  water::ObstacleUniforms obstacles;
+  static constexpr auto fields() {
+    using U = LoadsUniforms;
+    return std::tuple{gl::field("uFirst", &U::first),
+                      gl::field("uCount", &U::count),
+                      gl::field("uRadius", &U::radius),
+                      gl::field("uSourceFirst", &U::sourceFirst),
+                      gl::field("uLoadSlots", &U::loadSlots),
+                      gl::field(&U::contact),
+                      gl::field(&U::walls),
+                      gl::field(&U::obstacles)};
+  }
+};
+
 struct StatsUniforms {  // balls/stats.comp
   GLuint first = 0, count = 0;
   glm::vec3 gravity{0.0f}, domainMin{0.0f}, wallMin{0.0f}, wallMax{0.0f};

@@ -30,6 +30,8 @@ void visit(ParamVisitor& v, Params& p) {
     v.real({"cuda_shear", "CUDA shear", "per step"}, p.cudaShear, 0.0f, 1.0f);
     v.real({"cuda_boundary_damping", "CUDA wall factor", "velocity factor at walls"}, p.cudaBoundaryDamping, -1.0f,
            1.0f);
+    v.real({"rest_density", "Rest density", "rho0, kg/m^3: a ball weighs rho0 times the water it stands for at rest"},
+           p.restDensity, 1.0f, 1e5f);
     water::visitFoam(v, p);
     v.endGroup();
   }

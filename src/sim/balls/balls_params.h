@@ -30,6 +30,9 @@ struct Params : water::Setup {
   float penaltyFactor = 0.96f;
   // cuda-sample: per-step velocity changes (NVIDIA CUDA "particles" sample)
   float cudaSpring = 0.5f, cudaDamping = 0.02f, cudaShear = 0.1f, cudaBoundaryDamping = -0.5f;
+  // A ball's mass is ρ0 times the volume of water it stands for at rest (volumePerParticle): what
+  // the loads on the walls, the obstacles and the bodies are measured with.
+  float restDensity = 1000.0f;  // ρ0, kg/m³
 
   static constexpr water::Packing kPacking = water::Packing::Hcp;  // balls at rest (sim/water/setup.h)
 };

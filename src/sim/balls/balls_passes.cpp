@@ -48,6 +48,7 @@ void Balls::stepOnce(gl::GpuProfiler* profiler) {
   updateWalls();
   rebuildObstacles();
   emitFromTap();
+  beginLoads();
   // Obstacles are placed where they are when the forces act: at t, or at t + dt for Verlet's
   // forces on the drifted positions.
   const bool verlet = m_params.integrator == Integrator::VelocityVerlet;
@@ -63,7 +64,10 @@ void Balls::stepOnce(gl::GpuProfiler* profiler) {
     sortByCell(profiler);
     collide(profiler, verlet ? Collide::VerletKick : Collide::Integrate);
     m_accValid = verlet;
+    if (m_loadsOn) measureLoads(profiler);
   }
+  if (m_loadsOn) m_loads.sum();
+  m_loadsValid = m_loadsOn && m_count > 0;
   m_time += m_params.dt;
 }
 
@@ -94,6 +98,12 @@ std::vector<gl::ShaderDefine> Balls::defines(bool verlet) const {
     d.push_back({"INTEGRATOR_EXPLICIT", ""});
   if (m_obstacles.active()) d.push_back({"HAS_OBSTACLE", ""});
   return d;
+}
+
+ContactUniforms Balls::contactUniforms() const {
+  const Params& q = m_params;
+  return {q.dt,       q.penaltyFactor, springPerMass(q), dashpotPerMass(q),
+          q.friction, q.cudaSpring,    q.cudaDamping,    q.cudaShear};
 }
 
 WallUniforms Balls::wallUniforms() const {
@@ -158,8 +168,7 @@ void Balls::collide(gl::GpuProfiler* profiler, Collide what) {
   m_countedAhead = {};                            // set again below when this pass counts
   if (countCells) m_grid->prepareCount(m_count);  // its fill binds and runs a kernel of its own: first
   // Read back before the kernel's bindings: one window of all balls when they fit one block.
-  const std::vector<ReachWindow> windows = reachWindows();
-  m_collideWindows = windows.size();
+  m_windows = reachWindows();
   const gl::Kernel<CollideUniforms> collide(
       m_shaders, "balls/collide.comp",
       {BALLS_POS_IN, BALLS_VEL_IN, BALLS_VEL_OUT, BALLS_STEP_OUT, BALLS_NEXT_CELL_COUNT, BALLS_NEXT_INDEX_IN_CELL,
@@ -171,8 +180,7 @@ void Balls::collide(gl::GpuProfiler* profiler, Collide what) {
                     .foamGain = q.foamGain,
                     .foamDecay = foamDecayPerStep(),
                     .kick = what == Collide::VerletKick ? 0.5f : 0.0f,
-                    .contact = {q.dt, q.penaltyFactor, springPerMass(q), dashpotPerMass(q), q.friction, q.cudaSpring,
-                                q.cudaDamping, q.cudaShear},
+                    .contact = contactUniforms(),
                     .walls = wallUniforms(),
                     .neighbours = {}};  // per window, below
   // The cell-ordered copies in, the others out; a window at a time when they pass one storage block.
@@ -184,7 +192,7 @@ void Balls::collide(gl::GpuProfiler* profiler, Collide what) {
     m_grid->indexInCell().bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_NEXT_INDEX_IN_CELL);
     m_grid->particleCell().bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_NEXT_PARTICLE_CELL);
   }
-  for (const ReachWindow& w : windows) {
+  for (const ReachWindow& w : m_windows) {
     gl::bindWindow(posIn, BALLS_POS_IN, w.sources, kVec4);
     gl::bindWindow(velIn, BALLS_VEL_IN, w.sources, kVec4);
     gl::bindWindow(velOut, BALLS_VEL_OUT, w.balls, kVec4);
@@ -196,6 +204,37 @@ void Balls::collide(gl::GpuProfiler* profiler, Collide what) {
   }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   if (countCells) m_countedAhead = countKey();
+}
+
+// The collide's inputs are still the cell-ordered copies (Verlet's positions are the state now,
+// its velocities the half step's): the loads are what the collide's accelerations were.
+void Balls::measureLoads(gl::GpuProfiler* profiler) {
+  auto scope = timed(profiler, "balls.loads");
+  std::vector<gl::ShaderDefine> defines = this->defines(false);
+  if (m_wallLoadsOn) defines.push_back({"LOADS_WALLS", ""});
+  const gl::Kernel<LoadsUniforms> loads(m_shaders, "balls/loads.comp", {BALLS_POS_IN, BALLS_VEL_IN, BALLS_LOADS},
+                                        defines);
+  const bool verlet = m_params.integrator == Integrator::VelocityVerlet;
+  const gl::Buffer &posIn = verlet ? m_pos[m_posIndex] : m_pos[1 - m_posIndex], &velIn = m_vel[1 - m_velIndex];
+  m_obstacles.bind();
+  for (const ReachWindow& w : m_windows) {
+    gl::bindWindow(posIn, BALLS_POS_IN, w.sources, kVec4);
+    gl::bindWindow(velIn, BALLS_VEL_IN, w.sources, kVec4);
+    if (m_windows.size() == 1)
+      m_loads.bind(BALLS_LOADS);
+    else
+      m_loads.bindGroups(BALLS_LOADS, w.balls.first / BALLS_GROUP_SIZE,
+                         (w.balls.count + BALLS_GROUP_SIZE - 1) / BALLS_GROUP_SIZE);
+    loads.dispatchThreads(w.balls.count, {.first = GLuint(w.balls.first),
+                                          .count = GLuint(w.balls.end()),
+                                          .radius = m_radius,
+                                          .sourceFirst = GLuint(w.sources.first),
+                                          .loadSlots = m_loads.slots(),
+                                          .contact = contactUniforms(),
+                                          .walls = wallUniforms(),
+                                          .obstacles = m_obstacles.uniforms()});
+  }
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
 Balls::CountKey Balls::countKey() const { return {m_pos[m_posIndex].version(), m_count, m_grid.get()}; }

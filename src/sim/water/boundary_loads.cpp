@@ -78,7 +78,8 @@ void BoundaryLoads::request() {
 Loads BoundaryLoads::received(double scale) {
   std::vector<std::byte> bytes;
   m_copy.wait(bytes);
-  if (bytes.size() != 2 * m_copyChunks * m_copySlots * sizeof(glm::vec4)) return Loads::unmeasured(m_copySlots - kWalls);
+  if (bytes.size() != 2 * m_copyChunks * m_copySlots * sizeof(glm::vec4))
+    return Loads::unmeasured(m_copySlots - kWalls);
   return fromSums(reinterpret_cast<const glm::vec4*>(bytes.data()), m_copyChunks, m_copySlots, scale);
 }
 

@@ -16,9 +16,11 @@
 //          an Error (a contact stress is not the fluid's pressure at rest).
 //   force  {"kind": "force", "obstacle": k} or {"kind": "force", "wall": "-z"}  what the water
 //          exerted on obstacle k (force, N, and torque about its centre, N·m) or on a wall (its
-//          force along the wall's outward normal, N) during the last step: the fluid's, from the momentum its boundary
-//          corrections gave the water (sim/water/boundary_loads.h), F = −m ΣΔx / dt². The model measures loads only
-//          while a force probe is listed. The balls: an Error (not measured yet).
+//          force along the wall's outward normal, N) during the last step (sim/water/boundary_loads.h).
+//          The fluid's: from the momentum its boundary corrections gave the water, F = −m ΣΔx / dt².
+//          The balls': from the accelerations the boundary's contacts gave the balls, F = −m Σa
+//          with m = ρ0 times a ball's rest volume (the cuda-sample law's walls clamp rather than
+//          push: NaN). A model measures loads only while a force probe is listed.
 //   body   {"kind": "body", "obstacle": k}  obstacle k's pose and velocity as placed at the last
 //          step: centre (m), orientation (unit quaternion w, x, y, z), velocity (m/s), angular
 //          velocity (rad/s).

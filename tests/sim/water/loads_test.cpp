@@ -133,14 +133,14 @@ TEST_F(LoadsTest, ProbesOfAnObstacleAddedWhileRunningReadNaNUntilTheNextStep) {
   for (std::size_t c = 0; c < got.size(); ++c) EXPECT_FALSE(std::isnan(got[c])) << "column " << c;
 }
 
-// On the balls a force probe is an Error; asked to measure what it can (the window's plots), the
-// gauge beside it still reads and the force reads NaN, with the reason.
-TEST_F(LoadsTest, TheBallsRefuseAForceProbeInOneLineOrMeasureTheRest) {
+// On the balls a pressure probe is an Error; asked to measure what it can (the window's plots),
+// the gauge beside it still reads and the pressure reads NaN, with the reason.
+TEST_F(LoadsTest, TheBallsRefuseAPressureProbeInOneLineOrMeasureTheRest) {
   balls::Params p;
   p.domainMax = glm::vec3(0.2f);
   p.fill = water::Fill::Slab;
   p.slabHeight = 0.05f;
-  p.probes = {{.at = {0.1f, 0.1f, 0.0f}}, {.kind = water::ProbeKind::Force, .wall = water::ProbeWall::MinZ}};
+  p.probes = {{.at = {0.1f, 0.1f, 0.0f}}, {.kind = water::ProbeKind::Pressure, .at = {0.1f, 0.1f, 0.02f}}};
   balls::Balls balls(shaders(), p);
   water::Probes probes(shaders());
   EXPECT_THROW(probes.measure(balls), Error);
@@ -149,7 +149,7 @@ TEST_F(LoadsTest, TheBallsRefuseAForceProbeInOneLineOrMeasureTheRest) {
   ASSERT_EQ(got.size(), 2u);
   EXPECT_GT(got[0], 0.03) << "the gauge reads the slab";
   EXPECT_TRUE(std::isnan(got[1]));
-  EXPECT_EQ(why.rfind("balls: force probes are measured on the fluid only", 0), 0u) << why;
+  EXPECT_EQ(why.rfind("balls: a pressure probe reads the fluid solver's pressure", 0), 0u) << why;
 }
 
 // The fluid-tank scene, 0.4 × 0.2 m filled 0.2 m deep on the cubic lattice: the floor's mean force
