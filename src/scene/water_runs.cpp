@@ -86,11 +86,9 @@ class Run final : public WaterRun {
   void visitStats(sim::StateVisitor& v) override { v.value(m_statsEntry, m_stats); }
   std::string statsLine() const override { return tidepool::statsLine(m_stats); }
   std::pair<std::string, double> liveMetric() const override { return metric(m_stats); }
-  water::Bodies* bodies() override { return m_model ? bodiesOf(*m_model) : nullptr; }
+  water::Bodies* bodies() override { return m_model ? &m_model->bodies() : nullptr; }
 
  private:
-  static water::Bodies* bodiesOf(balls::Balls&) { return nullptr; }
-  static water::Bodies* bodiesOf(fluid::Fluid& f) { return &f.bodies(); }
   Params& params() { return m_model ? m_model->params() : m_params; }
   static void refineParams(balls::Params& p, double factor) { balls::refine(p, factor); }
   static void refineParams(fluid::Params& p, double factor) { water::refine(p, factor); }

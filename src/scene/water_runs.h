@@ -53,7 +53,7 @@ class WaterRun {
   virtual void visitStats(sim::StateVisitor& v) = 0;
   virtual std::string statsLine() const = 0;                      // "; KE ..., ..."
   virtual std::pair<std::string, double> liveMetric() const = 0;  // name and value
-  virtual water::Bodies* bodies() = 0;  // the running model's dynamic obstacles (fluid), else null
+  virtual water::Bodies* bodies() = 0;  // the running model's dynamic obstacles, or null before it runs
 };
 
 // Both runs, indexed by WaterModel, from one scene's parameters (the other model's follow by asFluid

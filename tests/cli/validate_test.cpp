@@ -118,17 +118,6 @@ TEST(Validate, ProbesTheSceneCannotMeasureAreOneLineErrors) {
   }
 }
 
-// Bodies move with the fluid only: a balls scene with a dynamic obstacle is refused, naming it.
-TEST(Validate, ADynamicObstacleOnBallsIsOneLineBeforeAnyOutput) {
-  test::TempDir dir;
-  dir.write("balls.json", R"({"model": "balls", "params": {"particles": {"radius": 0.01,
-      "domain_max": [0.4, 0.2, 0.3], "fill": "slab", "slab_height": 0.1},
-      "obstacles": [{"shape": "sphere"}, {"shape": "box", "centre": [0.2, 0.1, 0.2], "dynamic": true}]}})");
-  test::expectOneLineError({"validate", (dir / "balls.json").string(), "--csv", (dir / "p.csv").string()},
-                           "balls: obstacles[1] is dynamic, and bodies move with the fluid only");
-  EXPECT_FALSE(std::filesystem::exists(dir / "p.csv"));
-}
-
 TEST(Validate, APressureProbeOnBallsIsOneLineBeforeAnyOutput) {
   test::TempDir dir;
   dir.write("balls.json", R"({"model": "balls", "params": {"particles": {"radius": 0.01,

@@ -137,9 +137,20 @@ const char* kFluidBodies = R"({"model": "fluid", "params": {
                 {"shape": "box", "centre": [0.24, 0.1, 0.3], "size": [0.04, 0.04, 0.04], "dynamic": true,
                  "density": 900, "orientation": [0, 20, 10]}]}})";
 
+// The same bodies on balls, with velocity Verlet (its stored accelerations and the bodies' states
+// both restored).
+const char* kBallsBodies = R"({"model": "balls", "params": {
+  "particles": {"radius": 0.015, "domain_max": [0.4, 0.2, 0.4], "fill": "block", "fill_max": [0.4, 0.2, 0.12]},
+  "engine": {"integrator": "verlet", "substeps": 4, "dt": 0.0008},
+  "obstacles": [{"shape": "box", "centre": [0.2, 0.1, 0.2], "size": [0.06, 0.06, 0.03], "dynamic": true, "density": 400},
+                {"shape": "box", "centre": [0.24, 0.1, 0.3], "size": [0.04, 0.04, 0.04], "dynamic": true,
+                 "density": 900, "orientation": [0, 20, 10]}]}})";
+
 }  // namespace
 
 TEST_F(Checkpoints, FluidWithBodiesRestoresExactly) { expectExactRestore(shaders(), kFluidBodies); }
+
+TEST_F(Checkpoints, BallsWithBodiesRestoreExactly) { expectExactRestore(shaders(), kBallsBodies); }
 
 TEST_F(Checkpoints, BallsRestoreExactly) { expectExactRestore(shaders(), kBalls); }
 

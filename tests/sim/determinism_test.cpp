@@ -100,6 +100,23 @@ TEST_F(Determinism, Fluid) {
 
 // Bodies dropped into the water, onto each other and the walls: their loads are group sums added
 // in a fixed order, their contacts solved in a fixed order.
+TEST_F(Determinism, BallsWithBodies) {
+  const Scene s = waterScene("balls", R"({"radius": 0.012, "domain_max": [0.6, 0.4, 0.5], "fill": "block",
+                                     "fill_min": [0, 0, 0], "fill_max": [0.6, 0.4, 0.12]})");
+  balls::Params p = s.params.model<balls::Params>();
+  p.substeps = 8;
+  water::ObstacleParams box;
+  box.shape = water::Shape::Box;
+  box.size = glm::vec3(0.06f, 0.05f, 0.03f);
+  box.dynamic = true;
+  p.obstacles = {box, box};
+  p.obstacles[0].centre = glm::vec3(0.3f, 0.2f, 0.2f);
+  p.obstacles[1].centre = glm::vec3(0.34f, 0.22f, 0.3f);
+  p.obstacles[1].orientation = glm::vec3(0.0f, 25.0f, 0.0f);
+  p.obstacles[1].density = 1500.0f;
+  expectReproducible<balls::Balls>(30, shaders(), p);
+}
+
 TEST_F(Determinism, FluidWithBodies) {
   const Scene s = waterScene("fluid", R"({"spacing": 0.02, "domain_max": [0.6, 0.4, 0.5], "fill": "block",
                                      "fill_min": [0, 0, 0], "fill_max": [0.6, 0.4, 0.12]})");

@@ -23,7 +23,8 @@ Balls::Balls(gl::ShaderLibrary& shaders, const Params& params)
       m_shaders(shaders),
       m_params(params),
       m_obstacles(shaders),
-      m_loads(shaders, BALLS_GROUP_SIZE) {
+      m_loads(shaders, BALLS_GROUP_SIZE),
+      m_coupling(m_loads, m_obstacles) {
   reset();
 }
 
@@ -66,13 +67,10 @@ void Balls::reset() {
   char radius[48];
   std::snprintf(radius, sizeof radius, "particles.radius = %g m", double(p.radius));
   water::checkWaterRequest("balls", "ball", radius, water::estimatedWater(p), p, cost());
-  for (std::size_t k = 0; k < m_params.obstacles.size(); ++k)
-    if (m_params.obstacles[k].dynamic)
-      throw Error("balls: obstacles[" + std::to_string(k) +
-                  "] is dynamic, and bodies move with the fluid only; run the scene as fluid (\"model\": \"fluid\")");
   m_obstacles.build(m_params.obstacles, p.radius);  // a bad mesh fails before anything is allocated
   m_radius = p.radius;
-  m_obstacles.place(m_params.obstacles, water::posesAt(m_params.obstacles, 0.0), p.domainMin, p.domainMax);
+  m_coupling.reset(m_params.obstacles);
+  m_obstacles.place(m_params.obstacles, bodies().poses(m_params.obstacles, 0.0), p.domainMin, p.domainMax);
   const std::vector<glm::vec4> water =
       water::waterParticles(p, [this](glm::vec3 q) { return m_obstacles.occupied(q); });
   allocate(water.size(), water.size() + (m_params.tap ? std::size_t(m_params.tapMax) : 0));
@@ -134,7 +132,10 @@ std::string Balls::status() const {
 
 std::vector<sim::StateBuffer> Balls::stateBuffers() {
   const std::size_t bytes = m_count * sizeof(glm::vec4);
-  return {{"positions", &m_pos[m_posIndex], bytes}, {"velocities", &m_vel[m_velIndex], bytes}};
+  std::vector<sim::StateBuffer> buffers = {{"positions", &m_pos[m_posIndex], bytes},
+                                           {"velocities", &m_vel[m_velIndex], bytes}};
+  if (const auto bodies = m_coupling.stateBuffer(-mass())) buffers.push_back(*bodies);
+  return buffers;
 }
 
 std::vector<gl::Window> Balls::healthWindows(std::size_t count) const { return gl::windows(count, sizeof(glm::vec4)); }
@@ -162,6 +163,7 @@ void Balls::resume(const sim::StateStamp& good) {
   m_count = good.count;
   m_time = good.time;
   m_accValid = m_loadsValid = false;  // Verlet re-evaluates a(x) for the restored state
+  m_coupling.restored();              // the watch's copy of the bodies' states
   m_params.dt *= 0.5f;
   m_params.substeps = std::min(m_params.substeps * 2, 1000);  // same simulated time per frame
 }
@@ -177,6 +179,7 @@ void Balls::visitOwnState(sim::StateVisitor& v) {
   if (m_accValid) v.buffer("model.accelerations", accelerations(), m_count * sizeof(glm::vec4));
   if (v.loading()) {
     m_loadsValid = false;
+    m_coupling.restored();  // the bodies' states come with the state buffers
     ensureGrid();
     updateWalls();
   }
@@ -237,7 +240,8 @@ std::vector<double> Balls::pressures(const std::vector<glm::vec3>&) {
 }
 
 void Balls::beginLoads() {
-  m_loadsOn = m_wallLoadsOn = false;
+  m_loadsOn = m_coupling.any();
+  m_wallLoadsOn = false;
   for (const water::ProbeParams& p : m_params.probes)
     if (p.kind == water::ProbeKind::Force) {
       m_loadsOn = true;

@@ -6,8 +6,10 @@
 // in velocity w) and obstacles() (bodies, poses, meshes).
 //
 // One step (stepOnce), a list of passes (balls_passes.cpp):
-//   symplectic / explicit Euler:  placeObstacles(t)      -> sortByCell -> collide (forces, integrate)
-//   velocity Verlet:              placeObstacles(t + dt) -> drift -> sortByCell -> collide (forces, kick)
+//   symplectic / explicit Euler:  sortByCell -> move bodies, placeObstacles(t) -> collide (forces, integrate)
+//   velocity Verlet:              drift -> sortByCell -> move bodies, placeObstacles(t + dt) -> collide (forces, kick)
+// Dynamic obstacles (water/body_coupling.h) move by the loads the balls put on them in the step
+// before, to where the step's forces act.
 // Euler's collide also counts each ball into the next step's grid as it writes it, so the next
 // sortByCell starts at the scan. While a force probe is listed, measureLoads follows the collide
 // (the loads of the balls on the walls and the obstacles, from the same inputs).
@@ -27,6 +29,7 @@
 #include "sim/balls/balls_params.h"
 #include "sim/model.h"
 #include "sim/particle_memory.h"
+#include "sim/water/body_coupling.h"
 #include "sim/water/boundary_loads.h"
 #include "sim/water/obstacles.h"
 #include "sim/water/particle_water.h"
@@ -88,6 +91,8 @@ class Balls final : public sim::Model, public water::ParticleWater {
   const gl::Buffer& positions() const override { return m_pos[m_posIndex]; }   // vec4 (m, w = 1)
   const gl::Buffer& velocities() const override { return m_vel[m_velIndex]; }  // vec4 (m/s, w = foam)
   const water::Obstacles& obstacles() const override { return m_obstacles; }   // as placed at the last step
+  const water::Bodies& bodies() const { return m_coupling.bodies(); }          // the dynamic obstacles
+  water::Bodies& bodies() { return m_coupling.bodies(); }  // the window's mouse pulls them (Bodies::grab)
   // Why the last edit of the obstacles was refused (e.g. a missing mesh file); empty if it was not.
   // A refused edit leaves that obstacle, and its parameters, as they were.
   const std::string& obstacleError() const { return m_obstacleError; }
@@ -124,7 +129,7 @@ class Balls final : public sim::Model, public water::ParticleWater {
   void updateWalls();       // the piston's wall positions and velocities at t
   void rebuildObstacles();  // obstacles added, removed or reshaped since the last step
   void emitFromTap();       // appends a layer of balls when the jet has advanced one spacing
-  void beginLoads();        // whether this step measures the loads (a force probe is listed)
+  void beginLoads();        // whether this step measures the loads (a force probe or a body is listed)
   void placeObstacles(double time, gl::GpuProfiler* profiler);  // their fixed particles, at `time`
   void drift(gl::GpuProfiler* profiler);                        // Verlet: v½ = v + dt/2·a, x += dt·v½
   void sortByCell(gl::GpuProfiler* profiler);             // grid count + scan, positions and velocities to cell order
@@ -179,13 +184,14 @@ class Balls final : public sim::Model, public water::ParticleWater {
   double m_time = 0;
   bool m_trackOrder = false, m_accValid = false;
   std::vector<ReachWindow> m_windows;  // the last collide's
-  // A force probe is listed: the step measures the loads (the walls' only for a probe on a wall);
+  // A force probe or a body is listed: the step measures the loads (the walls' only for a probe on a wall);
   // after it, m_loads holds its sums.
   water::BoundaryLoads m_loads;
   bool m_loadsOn = false, m_wallLoadsOn = false, m_loadsValid = false;
-  gl::Buffer m_reachBounds;      // uvec2 per window (balls/reach_windows.comp)
-  std::size_t m_reachSize = 0;   // balls per window of the plan in m_reachBounds; 0: none planned
-  std::size_t m_reachCount = 0;  // balls when it was planned
+  water::BodyCoupling m_coupling;  // the dynamic obstacles
+  gl::Buffer m_reachBounds;        // uvec2 per window (balls/reach_windows.comp)
+  std::size_t m_reachSize = 0;     // balls per window of the plan in m_reachBounds; 0: none planned
+  std::size_t m_reachCount = 0;    // balls when it was planned
   CountKey m_countedAhead;
 };
 

@@ -48,26 +48,35 @@ void Balls::stepOnce(gl::GpuProfiler* profiler) {
   updateWalls();
   rebuildObstacles();
   emitFromTap();
+  m_coupling.sync(m_params.obstacles);
   beginLoads();
   // Obstacles are placed where they are when the forces act: at t, or at t + dt for Verlet's
   // forces on the drifted positions.
   const bool verlet = m_params.integrator == Integrator::VelocityVerlet;
+  const double forces = verlet ? m_time + m_params.dt : m_time;
   if (verlet) accelerations();                 // allocated on the first Verlet step (then a(x0) is evaluated)
   if (verlet && !m_accValid && m_count > 0) {  // a(x0) for the first drift
     placeObstacles(m_time, nullptr);
     sortByCell(nullptr);
     collide(nullptr, Collide::VerletForces);
   }
-  placeObstacles(verlet ? m_time + m_params.dt : m_time, profiler);
   if (m_count > 0) {
     if (verlet) drift(profiler);
     sortByCell(profiler);
+  }
+  // Neither the drift nor the sort reads the obstacles: the GPU runs them while the bodies wait
+  // for the last step's loads.
+  m_coupling.move(m_params.dt, -mass(), glm::dvec3(gravity()), water::wallsAt(m_params, forces),
+                  water::posesAt(m_params.obstacles, forces));
+  placeObstacles(forces, profiler);
+  if (m_count > 0) {
     collide(profiler, verlet ? Collide::VerletKick : Collide::Integrate);
     m_accValid = verlet;
     if (m_loadsOn) measureLoads(profiler);
   }
   if (m_loadsOn) m_loads.sum();
   m_loadsValid = m_loadsOn && m_count > 0;
+  m_coupling.requestLoads(m_loadsValid);  // complete: on their way back while the next step sorts
   m_time += m_params.dt;
 }
 
@@ -81,7 +90,7 @@ void Balls::rebuildObstacles() {
 }
 
 void Balls::placeObstacles(double time, gl::GpuProfiler* profiler) {
-  m_obstacles.place(m_params.obstacles, water::posesAt(m_params.obstacles, time), m_params.domainMin,
+  m_obstacles.place(m_params.obstacles, bodies().poses(m_params.obstacles, time), m_params.domainMin,
                     m_params.domainMax, profiler);
 }
 

@@ -50,7 +50,8 @@ Fluid::Fluid(gl::ShaderLibrary& shaders, const Params& params)
       m_params(params),
       m_obstacles(shaders),
       m_probe(shaders),
-      m_loads(shaders, FLUID_GROUP_SIZE) {
+      m_loads(shaders, FLUID_GROUP_SIZE),
+      m_coupling(m_loads, m_obstacles) {
   // Obstacle particles weigh in the density sum with their rest volumes (rest_lattice.h).
   m_obstacles.setVolumes([this](const water::ObstacleBody& b) {
     return boundaryVolumes(b.particles, b.built.shell, m_params.h(), m_solidVolume);
@@ -105,9 +106,8 @@ void Fluid::reset() {
   m_restSpacing = m_restSmoothing = 0;
   calibrate();
   m_obstacles.build(w.obstacles, w.radius);  // first: a bad mesh fails before anything is allocated
-  m_bodies = {};
-  m_bodies.sync(w.obstacles, m_obstacles);
-  m_obstacles.place(w.obstacles, m_bodies.poses(w.obstacles, 0.0), w.domainMin, w.domainMax);
+  m_coupling.reset(w.obstacles);
+  m_obstacles.place(w.obstacles, bodies().poses(w.obstacles, 0.0), w.domainMin, w.domainMax);
   const std::vector<glm::vec4> water =
       fill(w, m_params.spacing(), [this](glm::vec3 q) { return m_obstacles.occupied(q); });
   allocate(water.size(), water.size() + (w.tap ? std::size_t(w.tapMax) : 0));
@@ -125,8 +125,6 @@ void Fluid::reset() {
   m_grid = std::make_unique<grid::UniformGrid>(m_shaders, gp, m_capacity);
   m_obstacleError.clear();
   m_walls = water::wallsAt(w, 0.0);
-  m_bodiesRestored = m_bodyLoadsPending = false;
-  settleBodies();
 }
 
 void Fluid::emitFromTap() {
@@ -164,9 +162,9 @@ std::string Fluid::status() const {
 
 std::vector<sim::StateBuffer> Fluid::stateBuffers() {
   const std::size_t bytes = m_count * sizeof(glm::vec4);
-  if (!m_bodies.any()) return {{"positions", &m_x, bytes}, {"velocities", &m_v, bytes}};
-  settleBodies();
-  return {{"positions", &m_x, bytes}, {"velocities", &m_v, bytes}, {"bodies", &m_bodyState, m_bodyState.size()}};
+  std::vector<sim::StateBuffer> buffers = {{"positions", &m_x, bytes}, {"velocities", &m_v, bytes}};
+  if (const auto bodies = m_coupling.stateBuffer(loadScale())) buffers.push_back(*bodies);
+  return buffers;
 }
 
 Stats Fluid::stats() {
@@ -197,8 +195,7 @@ void Fluid::resume(const sim::StateStamp& good) {
   m_time = good.time;
   m_steps = good.steps;
   m_densitiesValid = false;
-  m_bodiesRestored = true;  // the watch's copy of m_bodyState
-  m_bodyLoadsPending = false;
+  m_coupling.restored();  // the watch's copy of the bodies' states
   m_params.dt *= 0.5f;
   m_params.substeps = std::min(m_params.substeps * 2, 1000);  // same simulated time per frame
 }
@@ -207,8 +204,7 @@ void Fluid::visitOwnState(sim::StateVisitor& v) {
   v.clock(m_time, m_steps);
   if (v.loading()) {
     m_densitiesValid = false;  // λ is not saved: the next step makes it anew
-    m_bodiesRestored = true;   // the bodies' states come with the state buffers
-    m_bodyLoadsPending = false;
+    m_coupling.restored();     // the bodies' states come with the state buffers
   }
   sim::capacityEntry(v, m_capacity, [&](std::size_t capacity) { allocate(0, capacity); });
   v.count("model.count", m_count, m_capacity);

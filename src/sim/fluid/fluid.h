@@ -30,6 +30,7 @@
 #include "sim/model.h"
 #include "sim/particle_memory.h"
 #include "sim/water/bodies.h"
+#include "sim/water/body_coupling.h"
 #include "sim/water/boundary_loads.h"
 #include "sim/water/obstacles.h"
 #include "sim/water/particle_water.h"
@@ -74,8 +75,8 @@ class Fluid final : public sim::Model, public water::ParticleWater {
   float radius() const override { return m_params.radius; }
   water::Packing packing() const override { return Params::kPacking; }
   const water::Obstacles& obstacles() const override { return m_obstacles; }
-  const water::Bodies& bodies() const { return m_bodies; }  // the dynamic obstacles
-  water::Bodies& bodies() { return m_bodies; }              // the window's mouse pulls them (Bodies::grab)
+  const water::Bodies& bodies() const { return m_coupling.bodies(); }  // the dynamic obstacles
+  water::Bodies& bodies() { return m_coupling.bodies(); }              // the window's mouse pulls them (Bodies::grab)
   const water::Setup& water() const override { return m_params; }
   glm::vec3 wallMin() const override { return m_walls.min; }
   glm::vec3 wallMax() const override { return m_walls.max; }
@@ -128,15 +129,6 @@ class Fluid final : public sim::Model, public water::ParticleWater {
   void sortByCell(gl::GpuProfiler* profiler);
   void solve(gl::GpuProfiler* profiler);  // the iterations
   void updateVelocities(gl::GpuProfiler* profiler);
-  // The dynamic obstacles. A step asks for the water's loads on them at its end
-  // (requestBodyLoads) and the next one reads them (receiveBodyLoads) after it has queued its
-  // predict and sort, so that the GPU has work while the CPU waits; moveBodies() then moves them
-  // to the step's end (from m_bodyState after a restore). settleBodies() writes their states,
-  // with any loads still on the way, into m_bodyState (for checkpoints and the watch).
-  void requestBodyLoads();
-  void receiveBodyLoads();
-  void moveBodies();
-  void settleBodies();
   // With m_loadsOn: binds the loads' partials and returns BOUNDARY_LOADS (and LOADS_WALLS with
   // m_wallLoadsOn), for predict and Δp.
   std::vector<gl::ShaderDefine> bindLoads() const;
@@ -157,10 +149,6 @@ class Fluid final : public sim::Model, public water::ParticleWater {
   gl::Buffer m_x, m_v, m_pred, m_scratch[2], m_lambda, m_lambdaSum, m_permutation;
   std::unique_ptr<grid::UniformGrid> m_grid;
   water::Obstacles m_obstacles;
-  water::Bodies m_bodies;
-  gl::Buffer m_bodyState;           // water::BodyState per obstacle: in the state buffers (checkpoints, the watch)
-  bool m_bodiesRestored = false;    // m_bodyState was loaded or restored: m_bodies reads it at the next step
-  bool m_bodyLoadsPending = false;  // the last step's loads are on their way back (requestBodyLoads)
   std::string m_obstacleError;
   water::Walls m_walls;
   DensityProbe m_probe;
@@ -169,6 +157,9 @@ class Fluid final : public sim::Model, public water::ParticleWater {
   // for a probe on a wall (theirs cost the most: most work groups touch a wall); after it,
   // m_loads holds its sums.
   bool m_loadsOn = false, m_wallLoadsOn = false;
+  // The dynamic obstacles: moved after predict and the sort are queued, the step's loads on them
+  // requested at its end (water/body_coupling.h).
+  water::BodyCoupling m_coupling;
   double m_time = 0;
   std::uint64_t m_steps = 0;
   bool m_trackOrder = false;

@@ -31,9 +31,9 @@ void Fluid::stepOnce(gl::GpuProfiler* profiler) {
   }
   emitFromTap();
   m_walls = water::wallsAt(m_params, m_time + m_params.dt);  // the collisions see the walls at the step's end
-  m_bodies.sync(m_params.obstacles, m_obstacles);
+  m_coupling.sync(m_params.obstacles);
   // A force probe or a body measures the loads; a probe on a wall, the walls' too.
-  m_loadsOn = m_bodies.any();
+  m_loadsOn = m_coupling.any();
   m_wallLoadsOn = false;
   for (const water::ProbeParams& p : m_params.probes)
     if (p.kind == water::ProbeKind::Force) {
@@ -47,52 +47,18 @@ void Fluid::stepOnce(gl::GpuProfiler* profiler) {
     predict(profiler);
     sortByCell(profiler);
   }
-  moveBodies();
+  m_coupling.move(m_params.dt, loadScale(), glm::dvec3(gravity()), m_walls,
+                  water::posesAt(m_params.obstacles, m_time + m_params.dt));
   // Placed where they are at the step's end, when the collisions see them (timed as "balls.obstacles").
-  m_obstacles.place(m_params.obstacles, m_bodies.poses(m_params.obstacles, m_time + m_params.dt), m_params.domainMin,
+  m_obstacles.place(m_params.obstacles, bodies().poses(m_params.obstacles, m_time + m_params.dt), m_params.domainMin,
                     m_params.domainMax, profiler);
   if (m_count > 0) solve(profiler);
   if (m_loadsOn) m_loads.sum();
   m_densitiesValid = m_count > 0 && m_params.iterations > 0;
-  requestBodyLoads();  // the loads are complete: on their way back while the velocities follow
+  m_coupling.requestLoads(m_densitiesValid);  // complete: on their way back while the velocities follow
   if (m_count > 0) updateVelocities(profiler);
   m_time += m_params.dt;
   ++m_steps;
-}
-
-void Fluid::moveBodies() {
-  if (!m_bodies.any()) return;
-  if (m_bodiesRestored) {
-    const std::size_t n = m_bodyState.size() / sizeof(water::BodyState);
-    if (n == m_obstacles.size()) m_bodies.setStates(m_bodyState.read<water::BodyState>(n));
-  }
-  m_bodiesRestored = false;
-  receiveBodyLoads();
-  m_bodies.advance(m_params.dt, glm::dvec3(gravity()), m_walls, m_obstacles,
-                   water::posesAt(m_params.obstacles, m_time + m_params.dt));
-}
-
-void Fluid::requestBodyLoads() {
-  m_bodyLoadsPending = m_bodies.any() && m_densitiesValid;
-  if (m_bodyLoadsPending)
-    m_loads.request();
-  else if (m_bodies.any())  // no water measured them: no load
-    m_bodies.setLoads(water::Loads::unmeasured(m_obstacles.size()), m_obstacles);
-}
-
-void Fluid::receiveBodyLoads() {
-  if (!m_bodyLoadsPending) return;
-  m_bodyLoadsPending = false;
-  m_bodies.setLoads(m_loads.received(loadScale()), m_obstacles);
-}
-
-void Fluid::settleBodies() {
-  if (!m_bodies.any() || m_bodiesRestored) return;  // restored: m_bodyState holds them
-  receiveBodyLoads();
-  const std::vector<water::BodyState> states = m_bodies.states();
-  const std::size_t bytes = states.size() * sizeof(water::BodyState);
-  if (m_bodyState.size() != bytes) m_bodyState = gl::Buffer(bytes);
-  m_bodyState.upload(states.data(), bytes);
 }
 
 void Fluid::step(gl::GpuProfiler& profiler) {

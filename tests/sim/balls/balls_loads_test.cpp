@@ -24,8 +24,8 @@ constexpr double kRho = 1000.0;  // the balls' rest density
 // Force probes on every wall and on each of `obstacles` obstacles.
 std::vector<ProbeParams> everyLoad(std::size_t obstacles) {
   std::vector<ProbeParams> probes;
-  for (ProbeWall w : {ProbeWall::MinX, ProbeWall::MaxX, ProbeWall::MinY, ProbeWall::MaxY, ProbeWall::MinZ,
-                      ProbeWall::MaxZ})
+  for (ProbeWall w :
+       {ProbeWall::MinX, ProbeWall::MaxX, ProbeWall::MinY, ProbeWall::MaxY, ProbeWall::MinZ, ProbeWall::MaxZ})
     probes.push_back({.kind = ProbeKind::Force, .wall = w});
   for (std::size_t k = 0; k < obstacles; ++k) probes.push_back({.kind = ProbeKind::Force, .obstacle = int(k)});
   return probes;
@@ -134,8 +134,10 @@ TEST_F(BallsLoads, MeasuringTheLoadsChangesNothingInTheRun) {
   jumbled(pos, vel);
   std::vector<glm::vec4> x[2], v[2];
   for (int measured = 0; measured < 2; ++measured) {
-    if (measured == 0) p.probes.clear();
-    else p.probes = everyLoad(2);
+    if (measured == 0)
+      p.probes.clear();
+    else
+      p.probes = everyLoad(2);
     Balls b(shaders(), p);
     b.upload(pos, vel);
     for (int n = 0; n < 20; ++n) b.stepOnce();
