@@ -13,28 +13,13 @@
 #include "base/error.h"
 #include "base/progress.h"
 #include "bench/bench.h"
+#include "bench/water_rows.h"
 #include "io/echo.h"
 #include "scene/fluid_stage.h"
 #include "sim/fluid/fluid.h"
 
 namespace tidepool::bench {
 namespace {
-
-// A comma list of whole numbers in [lo, hi] for `option` ("--iterations 2,4,8").
-std::vector<int> parseWholeNumbers(const std::string& text, const char* option, long lo, long hi) {
-  std::vector<int> out;
-  std::stringstream ss(text);
-  const std::string range = "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
-  for (std::string item; std::getline(ss, item, ',');) {
-    char* end = nullptr;
-    const long k = std::strtol(item.c_str(), &end, 10);
-    if (item.empty() || *end != '\0' || k < lo || k > hi)
-      throw Error(std::string(option) + " '" + io::printable(item) + "' is not a whole number in " + range);
-    out.push_back(int(k));
-  }
-  if (out.empty()) throw Error(std::string(option) + " is empty");
-  return out;
-}
 
 // The spacing that fills the scene's block with about n particles (one per d³).
 float spacingFor(const fluid::Params& p, std::size_t n) {
@@ -43,37 +28,8 @@ float spacingFor(const fluid::Params& p, std::size_t n) {
   return float(std::cbrt(double(extent.x) * extent.y * extent.z / double(n)));
 }
 
-// The scene's probes, and with `loads` a force probe on the floor and on each obstacle.
-std::vector<water::ProbeParams> probes(const fluid::Params& p, bool loads) {
-  std::vector<water::ProbeParams> out = p.probes;
-  if (!loads) return out;
-  out.push_back({.kind = water::ProbeKind::Force, .wall = water::ProbeWall::MinZ});
-  for (std::size_t k = 0; k < p.obstacles.size(); ++k)
-    out.push_back({.kind = water::ProbeKind::Force, .obstacle = int(k)});
-  return out;
-}
-
-// `n` boxes of 500 kg/m³ half under water at the fill's top, in two rows across it, a tenth of its
-// width wide, added to the scene's obstacles.
-void addBodies(fluid::Params& p, int n, bool dynamic) {
-  if (p.obstacles.size() + std::size_t(n) > water::kMaxObstacles)
-    throw Error("--bodies " + std::to_string(n) + ": the scene has " + std::to_string(p.obstacles.size()) +
-                " obstacles and at most " + std::to_string(water::kMaxObstacles) + " fit");
-  const glm::vec3 lo = glm::max(p.fillMin, p.domainMin), hi = glm::min(p.fillMax, p.domainMax);
-  const int perRow = (n + 1) / 2;
-  for (int i = 0; i < n; ++i) {
-    water::ObstacleParams box;
-    box.shape = water::Shape::Box;
-    box.size = glm::vec3(0.05f * (hi.x - lo.x));
-    box.centre = glm::vec3(lo.x + (hi.x - lo.x) * (float(i % perRow) + 0.5f) / float(perRow),
-                           lo.y + (hi.y - lo.y) * (i < perRow ? 0.25f : 0.75f), hi.z);
-    box.dynamic = dynamic;
-    p.obstacles.push_back(box);
-  }
-}
-
 int run(Env& env, const std::string& sceneName, const std::string& sizes, const std::string& iterations,
-        const std::string& deterministic, const std::string& loads, const std::string& bodies,
+        const std::string& deterministic, const std::string& loads, const std::string& bodiesText,
         const std::string& dynamic, const std::string& window) {
   const Scene scene = loadScene(resolveScenePath(sceneName));
   const fluid::Params base = fluidScene(scene).model;
@@ -83,33 +39,27 @@ int run(Env& env, const std::string& sceneName, const std::string& sizes, const 
   const std::vector<bool> orders =
       deterministic.empty() ? std::vector<bool>{base.deterministic} : parseOnOff(deterministic, "--deterministic");
   const std::vector<bool> measured = parseOnOff(loads, "--loads");
-  const std::vector<int> bodyCounts = parseWholeNumbers(bodies, "--bodies", 0, long(water::kMaxObstacles));
-  const std::vector<bool> moving = parseOnOff(dynamic, "--dynamic");
+  const std::vector<std::pair<int, bool>> bodies = bodyRows(bodiesText, dynamic);
   const std::vector<std::size_t> counts = block ? parseSizes(sizes) : std::vector<std::size_t>{0};
-  // The rows: each body count with each --dynamic setting (none: one row).
-  std::vector<std::pair<int, bool>> bodyRows;
-  for (int n : bodyCounts)
-    for (bool m : moving)
-      if (n > 0 || m == moving.front()) bodyRows.emplace_back(n, n > 0 && m);
   std::printf("fluid benchmark on %s: scene %s, steps %d..%d, medians per step\n", env.device.c_str(),
               scene.name.c_str(), w.first, w.last);
   Table table({"particles", "spacing", "iters", "determ.", "loads", "bodies", "dynamic", "cells", "predict ms",
                "count ms", "scan ms", "reorder ms", "lambda ms", "delta ms", "velocity ms", "viscosity ms", "ms/step",
                "steps/s", "bytes/particle"});
   Steps steps("bench fluid",
-              int(counts.size() * iterationCounts.size() * orders.size() * measured.size() * bodyRows.size()));
+              int(counts.size() * iterationCounts.size() * orders.size() * measured.size() * bodies.size()));
   for (std::size_t n : counts)
     for (int k : iterationCounts)
       for (bool stable : orders)
         for (bool withLoads : measured)
-          for (const auto& [bodyCount, bodiesMove] : bodyRows) {
+          for (const auto& [bodyCount, bodiesMove] : bodies) {
             steps.begin((block ? "about " + std::to_string(n) + " particles" : scene.name) + ", " + std::to_string(k) +
                         " iterations, determ. " + (stable ? "on" : "off") + ", loads " + (withLoads ? "on" : "off") +
                         ", " + std::to_string(bodyCount) + (bodiesMove ? " dynamic" : " fixed") + " bodies");
             fluid::Params p = base;
             p.deterministic = stable;
-            p.probes = probes(base, withLoads);
-            addBodies(p, bodyCount, bodiesMove);
+            p.probes = loadProbes(base, withLoads);
+            addFloatingBoxes(p, bodyCount, bodiesMove);
             if (block) {
               p.setSpacing(spacingFor(base, n));
               if (p.maxParticles > 0) p.maxParticles = std::max(p.maxParticles, int(n + n / 8));

@@ -52,22 +52,25 @@ double probe(const ProbeReadings& r, const std::string& column) {
   return NAN;
 }
 
-// A fluid tank 0.4 × 0.2 × 0.4 m, water in the corner up to `fillMax`, one dynamic obstacle
-// (`obstacle`, JSON) with its body probe, seen from −y by a camera 0.6 m from `target`, rendered
-// once at 64 × 32; `camera` is that camera, to cast the same rays as the stage.
+// A tank 0.4 × 0.2 × 0.4 m of `model` (fluid of d = 0.02, or balls of r = 0.01; 20 ms a frame),
+// water in the corner up to `fillMax`, one dynamic obstacle (`obstacle`, JSON) with its body
+// probe, seen from −y by a camera 0.6 m from `target`, rendered once at 64 × 32; `camera` is that
+// camera, to cast the same rays as the stage.
 struct SideView {
   std::unique_ptr<Stage> stage;
   OrbitCamera camera;
 };
-SideView sideView(gl::ShaderLibrary& shaders, const std::string& fillMax, const std::string& obstacle,
-                  glm::vec3 target) {
+SideView sideView(gl::ShaderLibrary& shaders, const std::string& fillMax, const std::string& obstacle, glm::vec3 target,
+                  const std::string& model = "fluid") {
+  const bool balls = model == "balls";
   const std::string at =
       "[" + std::to_string(target.x) + ", " + std::to_string(target.y) + ", " + std::to_string(target.z) + "]";
   const std::string scene =
-      R"({"model": "fluid", "params": {"particles": {"spacing": 0.02, "domain_max": [0.4, 0.2, 0.4], "fill": "block",
-          "fill_max": )" +
-      fillMax + R"(}, "engine": {"dt": 0.002, "substeps": 10}, "obstacles": [)" + obstacle +
-      R"(], "probes": [{"kind": "body", "obstacle": 0}], "view": {"camera": {"target": )" + at +
+      R"({"model": ")" + model + R"(", "params": {"particles": {)" +
+      (balls ? R"("radius": 0.01)" : R"("spacing": 0.02)") +
+      R"(, "domain_max": [0.4, 0.2, 0.4], "fill": "block", "fill_max": )" + fillMax + R"(}, "engine": )" +
+      (balls ? R"({"dt": 0.0005, "substeps": 40})" : R"({"dt": 0.002, "substeps": 10})") + R"(, "obstacles": [)" +
+      obstacle + R"(], "probes": [{"kind": "body", "obstacle": 0}], "view": {"camera": {"target": )" + at +
       R"(, "distance": 0.6, "yaw": -1.5707963, "pitch": 0}}}})";
   SideView v{createStage(parseScene(io::parseJson(scene, "w.json"), "w.json"), shaders), {}};
   gl::GpuProfiler profiler;
@@ -108,69 +111,72 @@ TEST_F(WaterStage, SwitchingBetweenBallsAndFluidKeepsTheParticles) {
   }
 }
 
-// A left drag that starts on a dynamic body pulls it with the mouse (fluid): from the side, the
-// cursor moved up 6 pixels lifts the point picked on the box off the floor to the mouse's point at
-// the depth where it was picked (within 5 mm), and the camera stays put. Released, a left drag
-// turns the camera again.
+// A left drag that starts on a dynamic body pulls it with the mouse (balls and fluid): from the
+// side, the cursor moved up 6 pixels lifts the point picked on the box off the floor to the
+// mouse's point at the depth where it was picked (within 5 mm), and the camera stays put.
+// Released, a left drag turns the camera again.
 TEST_F(WaterStage, ALeftDragOnABodyPullsItAndElsewhereTurnsTheCamera) {
-  SideView side = sideView(shaders(), "[0.1, 0.2, 0.1]",
-                           R"({"shape": "box", "size": [0.04, 0.04, 0.03], "centre": [0.28, 0.1, 0.045],
+  for (const char* model : {"fluid", "balls"}) {
+    SCOPED_TRACE(model);
+    SideView side = sideView(shaders(), "[0.1, 0.2, 0.1]",
+                             R"({"shape": "box", "size": [0.04, 0.04, 0.03], "centre": [0.28, 0.1, 0.045],
                                "dynamic": true, "density": 800})",
-                           {0.28f, 0.1f, 0.045f});
-  Stage* stage = side.stage.get();
-  const OrbitCamera& camera = side.camera;
-  gl::GpuProfiler profiler;
-  // The body's pose from its probe: where the point `own` (from the pose's origin) is in the world.
-  auto placed = [&](glm::dvec3 own) {
-    const ProbeReadings r = stage->probes();
-    const glm::dquat q(probe(r, "body0_qw"), probe(r, "body0_qx"), probe(r, "body0_qy"), probe(r, "body0_qz"));
-    return glm::dvec3(probe(r, "body0_x_m"), probe(r, "body0_y_m"), probe(r, "body0_z_m")) + q * own;
-  };
-  const glm::dvec3 origin = placed(glm::dvec3(0.0));
-  const std::optional<glm::mat4> view = stage->indicators().view;
-  ASSERT_TRUE(view);
-  Input in;
-  in.viewport = {64, 32};
-  in.cursor = {32, 16};
-  in.left = true;
-  stage->input(in);  // picked: a point of the box's face, on this ray
-  auto ray = [&](double depth) {
-    return glm::dvec3(camera.rayOrigin(in.cursor, in.viewport)) +
-           depth * glm::dvec3(camera.rayDirection(in.cursor, in.viewport));
-  };
-  std::vector<glm::dvec3> picked;  // where it may be: the face is 0.56 m away, its particles' spheres up to 0.58
-  for (double depth = 0.55; depth <= 0.6; depth += 0.001) picked.push_back(ray(depth));
-  in.cursor = {32, 10};
-  in.cursorDelta = {0, -6};
-  for (int i = 0; i < 40; ++i) {
-    stage->input(in);
-    in.cursorDelta = {0, 0};
-    stage->step(profiler);
-  }
-  // The point picked, carried by the body, against the new ray's point at the same depth; the pull
-  // leaves it g dt τ = 2 mm below it.
-  double closest = 1e30, lift = 0;
-  for (std::size_t i = 0; i < picked.size(); ++i) {
-    const glm::dvec3 held = placed(picked[i] - origin), want = ray(0.55 + 0.001 * double(i));
-    if (glm::distance(held, want) < closest) {
-      closest = glm::distance(held, want);
-      lift = held.z - picked[i].z;
+                             {0.28f, 0.1f, 0.045f}, model);
+    Stage* stage = side.stage.get();
+    const OrbitCamera& camera = side.camera;
+    gl::GpuProfiler profiler;
+    // The body's pose from its probe: where the point `own` (from the pose's origin) is in the world.
+    auto placed = [&](glm::dvec3 own) {
+      const ProbeReadings r = stage->probes();
+      const glm::dquat q(probe(r, "body0_qw"), probe(r, "body0_qx"), probe(r, "body0_qy"), probe(r, "body0_qz"));
+      return glm::dvec3(probe(r, "body0_x_m"), probe(r, "body0_y_m"), probe(r, "body0_z_m")) + q * own;
+    };
+    const glm::dvec3 origin = placed(glm::dvec3(0.0));
+    const std::optional<glm::mat4> view = stage->indicators().view;
+    ASSERT_TRUE(view);
+    Input in;
+    in.viewport = {64, 32};
+    in.cursor = {32, 16};
+    in.left = true;
+    stage->input(in);  // picked: a point of the box's face, on this ray
+    auto ray = [&](double depth) {
+      return glm::dvec3(camera.rayOrigin(in.cursor, in.viewport)) +
+             depth * glm::dvec3(camera.rayDirection(in.cursor, in.viewport));
+    };
+    std::vector<glm::dvec3> picked;  // where it may be: the face is 0.56 m away, its particles' spheres up to 0.58
+    for (double depth = 0.55; depth <= 0.6; depth += 0.001) picked.push_back(ray(depth));
+    in.cursor = {32, 10};
+    in.cursorDelta = {0, -6};
+    for (int i = 0; i < 40; ++i) {
+      stage->input(in);
+      in.cursorDelta = {0, 0};
+      stage->step(profiler);
     }
+    // The point picked, carried by the body, against the new ray's point at the same depth; the pull
+    // leaves it g dt τ = 2 mm below it.
+    double closest = 1e30, lift = 0;
+    for (std::size_t i = 0; i < picked.size(); ++i) {
+      const glm::dvec3 held = placed(picked[i] - origin), want = ray(0.55 + 0.001 * double(i));
+      if (glm::distance(held, want) < closest) {
+        closest = glm::distance(held, want);
+        lift = held.z - picked[i].z;
+      }
+    }
+    std::printf("the picked point %.4f m from the mouse's at its depth, lifted %.4f m\n", closest, lift);
+    EXPECT_LT(closest, 0.005);
+    EXPECT_GT(lift, 0.08) << "not lifted";
+    EXPECT_EQ(stage->indicators().view, view) << "the drag turned the camera";
+    // Released; a drag from empty space turns the camera.
+    in.left = false;
+    stage->input(in);
+    in.cursor = {2, 2};
+    in.left = true;
+    stage->input(in);
+    in.cursor = {12, 2};
+    in.cursorDelta = {10, 0};
+    stage->input(in);
+    EXPECT_NE(stage->indicators().view, view);
   }
-  std::printf("the picked point %.4f m from the mouse's at its depth, lifted %.4f m\n", closest, lift);
-  EXPECT_LT(closest, 0.005);
-  EXPECT_GT(lift, 0.08) << "not lifted";
-  EXPECT_EQ(stage->indicators().view, view) << "the drag turned the camera";
-  // Released; a drag from empty space turns the camera.
-  in.left = false;
-  stage->input(in);
-  in.cursor = {2, 2};
-  in.left = true;
-  stage->input(in);
-  in.cursor = {12, 2};
-  in.cursorDelta = {10, 0};
-  stage->input(in);
-  EXPECT_NE(stage->indicators().view, view);
 }
 
 // A hinged body dragged turns about its hinge: a plank hinged about y through its centre, seen

@@ -49,9 +49,9 @@ class BodyCoupling {
   BoundaryLoads& m_loads;
   const Obstacles& m_obstacles;
   Bodies m_bodies;
-  gl::Buffer m_state;         // BodyState per obstacle
-  bool m_restored = false;    // m_state was loaded or restored: m_bodies reads it at the next move()
-  bool m_pending = false;     // the last step's loads are on their way back (requestLoads)
+  gl::Buffer m_state;       // BodyState per obstacle
+  bool m_restored = false;  // m_state was loaded or restored: m_bodies reads it at the next move()
+  bool m_pending = false;   // the last step's loads are on their way back (requestLoads)
 };
 
 }  // namespace tidepool::water
