@@ -2,7 +2,7 @@
 // windows hold 16384 balls and the collide's windows 8192 (plus the balls in reach of them), so
 // these 40,000 balls step in several windows per pass. A deterministic run must be the unwindowed
 // one bit for bit, for both integrators, both reorders and with an obstacle, and so must its
-// statistics; a scene whose neighbours cannot fit a window is refused with the numbers.
+// statistics and loads; a scene whose neighbours cannot fit a window is refused with the numbers.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -46,13 +46,14 @@ struct Outcome {
   std::vector<glm::vec4> x, v;
   Stats stats;
   std::size_t windows = 0;
+  Loads loads;  // with force probes listed
 };
 
 Outcome run(gl::ShaderLibrary& shaders, const Params& p, std::size_t limit, int steps) {
   gl::overrideStorageBlockBytes(limit);
   Balls b(shaders, p);
   for (int n = 0; n < steps; ++n) b.stepOnce();
-  Outcome r{b.downloadPositions(), b.downloadVelocities(), b.stats(), b.collideWindows()};
+  Outcome r{b.downloadPositions(), b.downloadVelocities(), b.stats(), b.collideWindows(), b.loads()};
   gl::overrideStorageBlockBytes(0);
   return r;
 }
@@ -66,6 +67,12 @@ void expectSame(const Outcome& a, const Outcome& b) {
   EXPECT_EQ(a.stats.maxOverlap, b.stats.maxOverlap);
   EXPECT_EQ(a.stats.contactsPerBall, b.stats.contactsPerBall);
   EXPECT_EQ(a.stats.front, b.stats.front);
+  // Bit for bit (NaN where none was measured).
+  auto same = [](const Load& x, const Load& y) { return std::memcmp(&x, &y, sizeof(Load)) == 0; };
+  ASSERT_EQ(a.loads.obstacles.size(), b.loads.obstacles.size());
+  for (std::size_t k = 0; k < a.loads.obstacles.size(); ++k)
+    EXPECT_TRUE(same(a.loads.obstacles[k], b.loads.obstacles[k])) << "obstacle " << k;
+  EXPECT_TRUE(same(a.loads.walls[4], b.loads.walls[4])) << "the floor";
 }
 
 }  // namespace
@@ -84,7 +91,9 @@ TEST_F(BallsWindows, WindowedStepsEqualOneBlockBitForBit) {
   }
 }
 
-TEST_F(BallsWindows, ObstacleAndCountPassInWindows) {
+// With an obstacle, the next grid's count and the loads (their work groups' partials bound a
+// window at a time).
+TEST_F(BallsWindows, ObstacleCountAndLoadsPassInWindows) {
   Params p = box();
   ObstacleParams paddle;
   paddle.shape = Shape::Box;
@@ -92,7 +101,11 @@ TEST_F(BallsWindows, ObstacleAndCountPassInWindows) {
   paddle.size = glm::vec3(0.2f, 0.04f, 0.1f);
   paddle.spin = 6.0f;
   p.obstacles = {paddle};
-  expectSame(run(shaders(), p, 0, 5), run(shaders(), p, kLimit, 5));
+  p.probes = {{.kind = ProbeKind::Force, .obstacle = 0}, {.kind = ProbeKind::Force, .wall = ProbeWall::MinZ}};
+  const Outcome whole = run(shaders(), p, 0, 5), windowed = run(shaders(), p, kLimit, 5);
+  expectSame(whole, windowed);
+  EXPECT_GT(glm::length(windowed.loads.obstacles.at(0).force), 0.0) << "the paddle is pushed";
+  EXPECT_LT(windowed.loads.walls[4].force.z, 0.0) << "the floor is pushed down";
 }
 
 // Two layers of cells, full of balls: every ball is within a plane and a row of every other, so
