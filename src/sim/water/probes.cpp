@@ -42,7 +42,7 @@ void visitProbes(ParamVisitor& v, std::vector<ProbeParams>& probes) {
       [](ParamVisitor& v, ProbeParams& p) {
         v.choice({"kind", "Kind",
                   "gauge: water height at a vertical line; pressure: at a point (fluid); force: on an obstacle or "
-                  "a wall (fluid); body: an obstacle's pose and velocity"},
+                  "a wall; body: an obstacle's pose and velocity"},
                  p.kind, kProbeKindNames);
         v.vector({"at", "At", "gauge: the vertical line through (x, y), z unused; pressure: the point, m"}, p.at,
                  -100.0f, 100.0f);

@@ -113,7 +113,7 @@ void visit(ParamVisitor& v, ObstacleParams& o) {
     v.endGroup();
   }
   v.flag({"dynamic", "Dynamic",
-          "a rigid body the water, gravity and contacts move (fluid), starting at rest at its centre; spin and path "
+          "a rigid body the water, gravity and contacts move, starting at rest at its centre; spin and path "
           "unused"},
          o.dynamic);
   v.real({"density", "Density", "kg/m^3 of a dynamic obstacle (water: 1000)"}, o.density, 1.0f, 100000.0f);
