@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <optional>
 
 #include "app/fit_gpu.h"
 #include "app/frame_writer.h"
@@ -98,11 +99,13 @@ int renderHeadless(const RenderJob& request) {
     checkExportable(scene.model, stage->exportSource(), *job.exportFormat);
   }
   if (job.exportFormat) exporter = std::make_unique<ParticleExporter>(job.outDir, *job.exportFormat, job.exportEvery);
-  std::unique_ptr<ProbeLog> probeLog;  // the scene's probes beside the exported frames
+  std::unique_ptr<ProbeLog> probeLog;      // the scene's probes beside the exported frames
+  std::optional<ProbeReadings> unstepped;  // a fresh run's frame 0 (it only renders): read once
   if (exporter) {
-    if (const ProbeReadings r = stage->probes(); !r.columns.empty()) {
+    if (ProbeReadings r = stage->probes(); !r.columns.empty()) {
       if (!r.error.empty()) throw Error(r.error);  // a probe the model cannot measure: before any frame
       probeLog = std::make_unique<ProbeLog>(job.outDir / "probes.csv");
+      if (!resumed) unstepped = std::move(r);
     }
   }
   double surfaceMs = 0;  // building the meshes (GPU work and the wait for their sizes)
@@ -136,7 +139,8 @@ int renderHeadless(const RenderJob& request) {
         exporter->capture(int(frame), stage->simTime(), *stage->exportSource());
       }
       if (i == 0) exporter->writeObstacles(stage->exportObstacles());
-      if (probeLog && exporter->due(int(frame))) probeLog->write(frame, stage->simTime(), stage->probes());
+      if (probeLog && exporter->due(int(frame)))
+        probeLog->write(frame, stage->simTime(), i == 0 && unstepped ? *unstepped : stage->probes());
       exporter->poll();
     }
     std::vector<std::uint8_t> pixels = video || pngFrames ? target.readRgba8() : std::vector<std::uint8_t>();

@@ -77,6 +77,20 @@ Scene waterScene(const char* model, const char* particles) {
   return parseScene(io::parseJson(json, "determinism.json"), "determinism.json");
 }
 
+// Two boxes above the water of a 0.6 × 0.4 m tank, the second turned and denser, falling onto the first.
+std::vector<water::ObstacleParams> droppedBoxes() {
+  water::ObstacleParams box;
+  box.shape = water::Shape::Box;
+  box.size = glm::vec3(0.06f, 0.05f, 0.03f);
+  box.dynamic = true;
+  std::vector<water::ObstacleParams> boxes = {box, box};
+  boxes[0].centre = glm::vec3(0.3f, 0.2f, 0.2f);
+  boxes[1].centre = glm::vec3(0.34f, 0.22f, 0.3f);
+  boxes[1].orientation = glm::vec3(0.0f, 25.0f, 0.0f);
+  boxes[1].density = 1500.0f;
+  return boxes;
+}
+
 }  // namespace
 
 TEST_F(Determinism, Balls) {
@@ -105,15 +119,7 @@ TEST_F(Determinism, BallsWithBodies) {
                                      "fill_min": [0, 0, 0], "fill_max": [0.6, 0.4, 0.12]})");
   balls::Params p = s.params.model<balls::Params>();
   p.substeps = 8;
-  water::ObstacleParams box;
-  box.shape = water::Shape::Box;
-  box.size = glm::vec3(0.06f, 0.05f, 0.03f);
-  box.dynamic = true;
-  p.obstacles = {box, box};
-  p.obstacles[0].centre = glm::vec3(0.3f, 0.2f, 0.2f);
-  p.obstacles[1].centre = glm::vec3(0.34f, 0.22f, 0.3f);
-  p.obstacles[1].orientation = glm::vec3(0.0f, 25.0f, 0.0f);
-  p.obstacles[1].density = 1500.0f;
+  p.obstacles = droppedBoxes();
   expectReproducible<balls::Balls>(30, shaders(), p);
 }
 
@@ -122,15 +128,7 @@ TEST_F(Determinism, FluidWithBodies) {
                                      "fill_min": [0, 0, 0], "fill_max": [0.6, 0.4, 0.12]})");
   fluid::Params p = s.params.model<fluid::Params>();
   p.substeps = 4;
-  water::ObstacleParams box;
-  box.shape = water::Shape::Box;
-  box.size = glm::vec3(0.06f, 0.05f, 0.03f);
-  box.dynamic = true;
-  p.obstacles = {box, box};
-  p.obstacles[0].centre = glm::vec3(0.3f, 0.2f, 0.2f);
-  p.obstacles[1].centre = glm::vec3(0.34f, 0.22f, 0.3f);
-  p.obstacles[1].orientation = glm::vec3(0.0f, 25.0f, 0.0f);
-  p.obstacles[1].density = 1500.0f;
+  p.obstacles = droppedBoxes();
   expectReproducible<fluid::Fluid>(60, shaders(), p);
 }
 

@@ -240,13 +240,9 @@ std::vector<double> Balls::pressures(const std::vector<glm::vec3>&) {
 }
 
 void Balls::beginLoads() {
-  m_loadsOn = m_coupling.any();
-  m_wallLoadsOn = false;
-  for (const water::ProbeParams& p : m_params.probes)
-    if (p.kind == water::ProbeKind::Force) {
-      m_loadsOn = true;
-      m_wallLoadsOn = m_wallLoadsOn || p.wall != water::ProbeWall::None;
-    }
+  const water::LoadsWanted want = water::loadsWanted(m_params.probes, m_coupling.any());
+  m_loadsOn = want.any;
+  m_wallLoadsOn = want.walls;
   if (m_loadsOn) m_loads.begin(m_count, m_obstacles.size());
 }
 

@@ -32,14 +32,9 @@ void Fluid::stepOnce(gl::GpuProfiler* profiler) {
   emitFromTap();
   m_walls = water::wallsAt(m_params, m_time + m_params.dt);  // the collisions see the walls at the step's end
   m_coupling.sync(m_params.obstacles);
-  // A force probe or a body measures the loads; a probe on a wall, the walls' too.
-  m_loadsOn = m_coupling.any();
-  m_wallLoadsOn = false;
-  for (const water::ProbeParams& p : m_params.probes)
-    if (p.kind == water::ProbeKind::Force) {
-      m_loadsOn = true;
-      m_wallLoadsOn = m_wallLoadsOn || p.wall != water::ProbeWall::None;
-    }
+  const water::LoadsWanted want = water::loadsWanted(m_params.probes, m_coupling.any());
+  m_loadsOn = want.any;
+  m_wallLoadsOn = want.walls;
   if (m_loadsOn) m_loads.begin(m_count, m_obstacles.size());
   // Neither predict nor the sort reads the obstacles: the GPU runs them while the bodies wait
   // for the last step's loads.

@@ -4,8 +4,8 @@
 //
 // A step asks for the water's loads on the bodies at its end (requestLoads) and the next step
 // reads them (in move()) after it has queued the passes that do not read the obstacles, so that the
-// GPU has work while the CPU waits; move() then takes the bodies to the step's end (from the
-// state buffer after a restore or a load). settle() writes their states, with any loads still on
+// GPU has work while the CPU waits; move() then takes the bodies to where the step's forces act
+// (from the state buffer after a restore or a load). settle() writes their states, with any loads still on
 // the way, into that buffer.
 #pragma once
 
@@ -33,8 +33,9 @@ class BodyCoupling {
   void sync(const std::vector<ObstacleParams>& params) { m_bodies.sync(params, m_obstacles); }
   // The step's loads are summed (`measured`; else none reached the bodies): on their way back.
   void requestLoads(bool measured);
-  // One step of dt to `time`'s poses: the last step's loads (times `scale`, boundary_loads.h) and
-  // the step's gravity, walls and kinematic obstacles' poses (Bodies::advance).
+  // One step of dt (Bodies::advance): the last step's loads (times `scale`, boundary_loads.h),
+  // gravity, and contacts with the walls and the kinematic obstacles at `poses`, where this
+  // step's forces act.
   void move(double dt, double scale, glm::dvec3 gravity, const Walls& walls, const std::vector<ObstaclePose>& poses);
   // The bodies' states in their buffer, for a checkpoint or the watch (receiving any loads on the way).
   void settle(double scale);

@@ -25,6 +25,16 @@ constexpr std::size_t kAlignGroups = 8;  // 8 groups of slots of 32 B: a multipl
 
 }  // namespace
 
+LoadsWanted loadsWanted(const std::vector<ProbeParams>& probes, bool bodies) {
+  LoadsWanted want{.any = bodies};
+  for (const ProbeParams& p : probes)
+    if (p.kind == ProbeKind::Force) {
+      want.any = true;
+      want.walls = want.walls || p.wall != ProbeWall::None;
+    }
+  return want;
+}
+
 void BoundaryLoads::begin(std::size_t count, std::size_t obstacles) {
   m_groups = std::max<std::size_t>(1, (count + m_groupSize - 1) / m_groupSize);
   m_slots = GLuint(kWalls + obstacles);

@@ -16,6 +16,13 @@
 
 namespace tidepool::water {
 
+// What a step measures: the loads while a force probe or a body is listed, and the walls' (which
+// cost the most: most work groups touch a wall) only for a probe on a wall.
+struct LoadsWanted {
+  bool any = false, walls = false;
+};
+LoadsWanted loadsWanted(const std::vector<ProbeParams>& probes, bool bodies);
+
 class BoundaryLoads {
  public:
   // `groupSize`: the particles per work group of the kernels that measure.
