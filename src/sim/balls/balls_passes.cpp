@@ -229,11 +229,8 @@ void Balls::measureLoads(gl::GpuProfiler* profiler) {
   for (const ReachWindow& w : m_windows) {
     gl::bindWindow(posIn, BALLS_POS_IN, w.sources, kVec4);
     gl::bindWindow(velIn, BALLS_VEL_IN, w.sources, kVec4);
-    if (m_windows.size() == 1)
-      m_loads.bind(BALLS_LOADS);
-    else
-      m_loads.bindGroups(BALLS_LOADS, w.balls.first / BALLS_GROUP_SIZE,
-                         (w.balls.count + BALLS_GROUP_SIZE - 1) / BALLS_GROUP_SIZE);
+    m_loads.bindGroups(BALLS_LOADS, w.balls.first / BALLS_GROUP_SIZE,
+                       (w.balls.count + BALLS_GROUP_SIZE - 1) / BALLS_GROUP_SIZE);
     loads.dispatchThreads(w.balls.count, {.first = GLuint(w.balls.first),
                                           .count = GLuint(w.balls.end()),
                                           .radius = m_radius,

@@ -50,6 +50,7 @@ void BoundaryLoads::begin(std::size_t count, std::size_t obstacles) {
 void BoundaryLoads::bind(GLuint binding) const { m_partials.bindBase(GL_SHADER_STORAGE_BUFFER, binding); }
 
 void BoundaryLoads::bindGroups(GLuint binding, std::size_t firstGroup, std::size_t groups) const {
+  if (firstGroup == 0 && groups == m_groups) return bind(binding);
   const std::size_t groupBytes = m_slots * kSlotBytes;
   m_partials.bindRange(GL_SHADER_STORAGE_BUFFER, binding, firstGroup * groupBytes, groups * groupBytes);
 }
@@ -64,10 +65,7 @@ void BoundaryLoads::sum() {
     const std::size_t chunks = std::min(perWindow, m_chunks - first);
     const std::size_t firstGroup = first * m_chunkGroups;
     const std::size_t groups = std::min(m_groups - firstGroup, chunks * m_chunkGroups);
-    if (m_chunks == 1)
-      bind(LOADS_PARTIALS);
-    else
-      bindGroups(LOADS_PARTIALS, firstGroup, groups);
+    bindGroups(LOADS_PARTIALS, firstGroup, groups);
     kernel.dispatch(glm::uvec3(GLuint(chunks), m_slots, 1),
                     {m_slots, GLuint(groups), GLuint(first), GLuint(m_chunkGroups)});
   }

@@ -33,7 +33,7 @@ class BoundaryLoads {
   void begin(std::size_t count, std::size_t obstacles);
   void bind(GLuint binding) const;  // all the partials (the particles fit one storage block)
   // The partials of work groups [firstGroup, firstGroup + groups): a window of particles that
-  // starts at a multiple of gl::kWindowGrain (gl/window.h).
+  // starts at a multiple of gl::kWindowGrain (gl/window.h); all of them as bind() when that is all.
   void bindGroups(GLuint binding, std::size_t firstGroup, std::size_t groups) const;
   GLuint slots() const { return m_slots; }  // uLoadSlots
   std::size_t bytes() const { return m_partials.size() + m_sums.size(); }
