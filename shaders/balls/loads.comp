@@ -68,8 +68,9 @@ void obstacleShare(uint k, out vec3 delta, out vec3 moment) {
 #define LOADS_FIRST
 #include "water/loads.glsl"
 
-// Each wall's push on the ball at p, along its axis (walls.glsl's wallsAccel, a wall at a time);
-// `side` per axis: −1 the wall at the minimum, +1 at the maximum.
+// Each wall's push on the ball at p, along its axis (walls.glsl's wallsAccel, a wall at a time:
+// one helper serving both made the collide 1.2% slower, docs/ARCHITECTURE.md, "Rejected
+// designs"); `side` per axis: −1 the wall at the minimum, +1 at the maximum.
 vec3 wallShares(vec3 p, vec3 v, out vec3 side) {
   vec3 share = vec3(0.0);
   side = vec3(1.0);
