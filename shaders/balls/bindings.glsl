@@ -13,7 +13,10 @@
 #define BALLS_NEXT_PARTICLE_CELL 4  // and particleCell
 #define BALLS_OBST_POSES 0     // uniform block (std140): each obstacle's pose and velocity (obstacle_poses.glsl)
 #define BALLS_MAX_OBSTACLES 16
-#define BALLS_LOADS 2          // loads pass: vec4 pairs per work group and slot (water/loads.glsl; reuses POS_OUT)
+#define BALLS_LOADS 2          // walls' loads: vec4 pairs per work group (water/loads.glsl; reuses POS_OUT)
+#define BALLS_OBSTACLE_PLACED 2  // obstacle loads: vec4 obstacle particles in the world, w = obstacle (reuses POS_OUT)
+#define BALLS_SHARES 3         // obstacle loads: vec4 per obstacle particle, Σ share (water/obstacle_loads.glsl; reuses VEL_OUT)
+#define BALLS_MOMENTS 4        // obstacle loads: vec4 per obstacle particle, Σ moment (reuses ACC)
 #define BALLS_STATS 2          // stats pass: BALLS_STATS_VALUES floats per work group (stats_layout.glsl; reuses POS_OUT)
 #define BALLS_REACH_BOUNDS 0   // reach_windows.comp: uvec2 per window, the balls in reach of its cells
 #define BALLS_GROUP_SIZE 128   // local size of every balls kernel (one ball per invocation)

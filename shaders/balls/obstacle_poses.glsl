@@ -1,6 +1,7 @@
 // Each obstacle's rigid pose this step (src/sim/balls/obstacle_pose.h evaluates it from the time,
-// src/sim/water/obstacles.cpp fills the block): a fixed particle of obstacle k with own-frame
-// position b is at c_k + R_k·b and moves with v_k + ω_k × (x − c_k).
+// src/sim/water/obstacles.cpp fills the block, with each one's run of particles): a fixed
+// particle of obstacle k with own-frame position b is at c_k + R_k·b and moves with
+// v_k + ω_k × (x − c_k).
 #ifndef BALLS_OBSTACLE_POSES_GLSL
 #define BALLS_OBSTACLE_POSES_GLSL
 
@@ -9,6 +10,7 @@ layout(std140, binding = BALLS_OBST_POSES) uniform ObstaclePoses {
   vec4 poseCentre[BALLS_MAX_OBSTACLES];        // c_k, m
   vec4 poseVelocity[BALLS_MAX_OBSTACLES];      // v_k, m/s
   vec4 poseOmega[BALLS_MAX_OBSTACLES];         // ω_k, rad/s
+  uvec4 poseParticles[BALLS_MAX_OBSTACLES];    // x: the first of its particles, y: how many
 };
 
 vec3 obstaclePlace(uint k, vec3 body) {

@@ -8,7 +8,12 @@
 #define FLUID_LAMBDA 4         // vec2 (lambda, rho/rho0) per particle; vec4 vorticity in the vorticity passes
 #define FLUID_CELL_START 5     // uint per grid cell + 1 (grid/bindings.glsl's layout), cell = h / 2
 #define FLUID_PRESSURE 6       // float per particle: Σ λ over the step's iterations (the pressure, fluid/pressure.comp)
-#define FLUID_LOADS 7          // vec4 pairs per work group and slot: the boundaries' shares of the corrections (water/loads.glsl)
+#define FLUID_LOADS 7          // vec4 pairs per work group: the walls' shares of the corrections (water/loads.glsl)
+#define FLUID_UNPUSHED 6       // vec4 per particle: Δp's corrected position before the obstacles' push (obstacle loads)
+#define FLUID_OBSTACLE_PLACED 0   // obstacle loads: vec4 obstacle particles in the world, w = obstacle
+#define FLUID_OBSTACLE_VOLUMES 1  // obstacle loads: vec4 (x = rest volume m³) per obstacle particle, same order
+#define FLUID_SHARES 7         // obstacle loads: vec4 per obstacle particle, Σ share (water/obstacle_loads.glsl)
+#define FLUID_MOMENTS 3        // obstacle loads: vec4 per obstacle particle, Σ moment
 #ifndef FLUID_GROUP_SIZE
 #define FLUID_GROUP_SIZE 128   // local size of every fluid kernel (one particle per invocation)
 #endif

@@ -4,7 +4,9 @@
 // the walls' gradient), s_corr = −k (W(r)/W(Δq))^n, then the collisions: no closer than
 // uContact to an obstacle particle (no layer of them can be passed) and inside
 // the walls. Jacobi: reads p and λ of all, writes the corrected p to the other buffer. With
-// BOUNDARY_LOADS, the walls' and each obstacle's shares of the correction go to water/loads.glsl.
+// LOADS_WALLS, the walls' shares of the correction go to water/loads.glsl; with OBSTACLE_LOADS,
+// each particle with an obstacle particle within h keeps its corrected position before the push,
+// from which fluid/obstacle_loads.comp sums the obstacles' shares.
 #include "fluid/bindings.glsl"
 
 layout(local_size_x = FLUID_GROUP_SIZE) in;
@@ -13,6 +15,9 @@ layout(local_size_x = FLUID_GROUP_SIZE) in;
 layout(std430, binding = FLUID_PRED) readonly buffer Pred { vec4 pred[]; };
 layout(std430, binding = FLUID_LAMBDA) readonly buffer Lambda { vec2 lambda[]; };
 layout(std430, binding = FLUID_OUT) writeonly buffer PredOut { vec4 predOut[]; };
+#ifdef OBSTACLE_LOADS
+layout(std430, binding = FLUID_UNPUSHED) writeonly buffer Unpushed { vec4 unpushed[]; };  // q before the push
+#endif
 #define neighbourPos pred
 
 #include "fluid/kernels.glsl"
@@ -27,14 +32,7 @@ vec3 gBoundaryGradient;
 bool gPushing = false;  // the boundary loop's second use: pushing gPushed out to uContact
 vec3 gPushed = vec3(0.0);
 uniform float uContact;  // m: the closest a fluid particle comes to an obstacle particle
-#ifdef BOUNDARY_LOADS
-uint gTouched = 0u;  // bit k: a particle of obstacle k was within reach
-int gOnly = -1;      // ≥ 0: only obstacle gOnly's particles count (its share, obstacleShare())
-// The first obstacle met: its share is summed on the way, in the order a recount would sum it
-// (any other obstacle's share is recounted; a particle seldom has two within reach).
-int gFirst = -1;
-vec3 gFirstGradient = vec3(0.0), gFirstPushed = vec3(0.0);
-#endif
+bool gNearObstacle = false;  // an obstacle particle within h of p
 void onFluid(uint j, vec3 r, float r2) {
   const float len = sqrt(r2);
   if (len <= 0.0) return;
@@ -49,23 +47,11 @@ void onFluid(uint j, vec3 r, float r2) {
 void onBoundary(vec3 r, float r2, float volume, uint k) {
   const float len = sqrt(r2);
   if (len <= 0.0) return;
-#ifdef BOUNDARY_LOADS
-  if (gOnly >= 0 && k != uint(gOnly)) return;
-  gTouched |= 1u << k;
-  if (gFirst < 0) gFirst = int(k);
-#endif
   if (gPushing) {
-    const vec3 push = (uContact - len) / len * r;  // r from the corrected position: out to uContact
-    gPushed += push;
-#ifdef BOUNDARY_LOADS
-    if (k == uint(gFirst)) gFirstPushed += push;
-#endif
+    gPushed += (uContact - len) / len * r;  // r from the corrected position: out to uContact
   } else {
-    const vec3 gradient = volume * spikyGrad(r, len);
-    gBoundaryGradient += gradient;
-#ifdef BOUNDARY_LOADS
-    if (k == uint(gFirst)) gFirstGradient += gradient;
-#endif
+    gBoundaryGradient += volume * spikyGrad(r, len);
+    gNearObstacle = true;
   }
 }
 
@@ -75,35 +61,8 @@ void onBoundary(vec3 r, float r2, float volume, uint k) {
 
 uniform uint uCount;
 
-vec3 gP = vec3(0.0), gQ;  // the particle before the correction, and after it before the obstacles' push
 
-#ifdef BOUNDARY_LOADS
-#include "balls/bindings.glsl"
-#include "balls/obstacle_poses.glsl"
-// Obstacle k's share of this particle's correction (λ_i Σ_b V_b ∇W at p, then the push at q) and
-// its moment about c_k.
-void obstacleShare(uint k, out vec3 delta, out vec3 moment) {
-#ifdef HAS_OBSTACLE
-  vec3 gradientSum = gFirstGradient, pushed = gFirstPushed;
-  if (int(k) != gFirst) {  // recounted: only k's particles
-    gOnly = int(k);
-    gPushing = false;
-    gBoundaryGradient = vec3(0.0);
-    forEachBoundary(gP, uH);
-    gradientSum = gBoundaryGradient;
-    gPushing = true;
-    gPushed = vec3(0.0);
-    forEachBoundary(gQ, uContact);
-    pushed = gPushed;
-  }
-  const vec3 gradient = gLambda * gradientSum;
-  const vec3 c = poseCentre[k].xyz;
-  delta = gradient + pushed;
-  moment = cross(gP - c, gradient) + cross(gQ - c, pushed);
-#else
-  delta = moment = vec3(0.0);
-#endif
-}
+#ifdef LOADS_WALLS
 #define LOADS_BINDING FLUID_LOADS
 #define LOADS_GROUP_SIZE FLUID_GROUP_SIZE
 #include "water/loads.glsl"
@@ -113,19 +72,21 @@ void obstacleShare(uint k, out vec3 delta, out vec3 moment) {
 // their gradient, then the clamp).
 vec4 corrected(uint i, out vec3 wallShare) {
   const vec4 pi = pred[i];
-  gP = pi.xyz;
+  const vec3 p = pi.xyz;
   gLambda = lambda[i].x;
   gDelta = vec3(0.0);
   gBoundaryGradient = vec3(0.0);
-  forEachFluid(i, gP);
+  forEachFluid(i, p);
 #ifdef HAS_OBSTACLE
-  forEachBoundary(gP, uH);
+  forEachBoundary(p, uH);
 #endif
   float unused = 0.0;
   vec3 wallGradient = vec3(0.0);
-  wallsDensity(gP, unused, wallGradient);
-  gQ = gP + gDelta + gLambda * (gBoundaryGradient + wallGradient);
-  vec3 q = gQ;
+  wallsDensity(p, unused, wallGradient);
+  vec3 q = p + gDelta + gLambda * (gBoundaryGradient + wallGradient);
+#ifdef OBSTACLE_LOADS
+  if (gNearObstacle) unpushed[i] = vec4(q, 0.0);
+#endif
 #ifdef HAS_OBSTACLE
   // Each obstacle particle within uContact of the corrected position pushes it out to uContact.
   gPushing = true;
@@ -140,9 +101,14 @@ vec4 corrected(uint i, out vec3 wallShare) {
 
 void main() {
   const uint i = globalIndex();
-  vec3 wallShare = vec3(0.0);
-  if (i < uCount) predOut[i] = corrected(i, wallShare);
-#ifdef BOUNDARY_LOADS
-  addLoads(wallShare, wallSides(gP), gTouched);  // by every invocation: the group adds them
+  vec3 wallShare = vec3(0.0), side = vec3(1.0);
+  if (i < uCount) {
+    predOut[i] = corrected(i, wallShare);
+#ifdef LOADS_WALLS
+    side = wallSides(pred[i].xyz);
+#endif
+  }
+#ifdef LOADS_WALLS
+  addLoads(wallShare, side);  // by every invocation: the group adds them
 #endif
 }

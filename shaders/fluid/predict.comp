@@ -1,9 +1,8 @@
 #version 430 core
 // PBF step 1 (Macklin & Müller 2013, algorithm 1, lines 1-4): v += dt·g (with damping), the
 // predicted position p = x + dt·v, kept inside the walls (half a spacing off them). Particle order; w carries the foam to
-// the velocity pass (the velocities are recomputed from the positions there). With BOUNDARY_LOADS
-// it clears the step's partials (water/loads.glsl), and with LOADS_WALLS adds the walls' share (the
-// clamp) to them.
+// the velocity pass (the velocities are recomputed from the positions there). With LOADS_WALLS
+// it starts the step's partials of the walls' loads (water/loads.glsl) with their share (the clamp).
 #include "fluid/bindings.glsl"
 
 layout(local_size_x = FLUID_GROUP_SIZE) in;
@@ -20,10 +19,10 @@ uniform float uDecay;   // exp(−damping·dt)
 #include "fluid/kernels.glsl"
 #include "fluid/walls.glsl"
 
-#ifdef BOUNDARY_LOADS
-void obstacleShare(uint k, out vec3 delta, out vec3 moment) { delta = moment = vec3(0.0); }
+#ifdef LOADS_WALLS
 #define LOADS_BINDING FLUID_LOADS
 #define LOADS_GROUP_SIZE FLUID_GROUP_SIZE
+#define LOADS_FIRST
 #include "water/loads.glsl"
 #endif
 
@@ -38,9 +37,7 @@ void main() {
     pred[i] = vec4(inside, v.w);
     wallShare = inside - p;
   }
-#if defined(LOADS_WALLS)
-  addLoads(wallShare, wallSides(p), 0u);  // by every invocation: the group adds them
-#elif defined(BOUNDARY_LOADS)
-  clearLoads();  // no share of its own: the clamp only touches the walls
+#ifdef LOADS_WALLS
+  addLoads(wallShare, wallSides(p));  // by every invocation: the group adds them
 #endif
 }

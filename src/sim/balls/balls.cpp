@@ -243,7 +243,7 @@ void Balls::beginLoads() {
   const water::LoadsWanted want = water::loadsWanted(m_params.probes, m_coupling.any());
   m_loadsOn = want.any;
   m_wallLoadsOn = want.walls;
-  if (m_loadsOn) m_loads.begin(m_count, m_obstacles.size());
+  if (m_loadsOn) m_loads.begin(m_count, want.walls, m_obstacles);
 }
 
 double Balls::mass() const {

@@ -97,20 +97,34 @@ struct LoadsUniforms {          // balls/loads.comp
   GLuint first = 0, count = 0;  // balls [first, count)
   float radius = 0;             // m
   GLuint sourceFirst = 0;       // the first ball of the inputs' window
-  GLuint loadSlots = 0;         // water/loads.glsl
   ContactUniforms contact;
   WallUniforms walls;
-  water::ObstacleUniforms obstacles;
   static constexpr auto fields() {
     using U = LoadsUniforms;
+    return std::tuple{gl::field("uFirst", &U::first),   gl::field("uCount", &U::count),
+                      gl::field("uRadius", &U::radius), gl::field("uSourceFirst", &U::sourceFirst),
+                      gl::field(&U::contact),           gl::field(&U::walls)};
+  }
+};
+
+struct ObstacleLoadsUniforms {  // balls/obstacle_loads.comp
+  GLuint first = 0, count = 0;  // the balls counted: [first, count)
+  float radius = 0;             // m
+  GLuint sourceFirst = 0;       // the first ball of the inputs' window
+  GLuint particles = 0;         // the obstacles' (water/obstacle_loads.glsl)
+  GLuint add = 0;               // 1: add to the shares (a later window)
+  ContactUniforms contact;
+  grid::GridUniforms grid;
+  static constexpr auto fields() {
+    using U = ObstacleLoadsUniforms;
     return std::tuple{gl::field("uFirst", &U::first),
                       gl::field("uCount", &U::count),
                       gl::field("uRadius", &U::radius),
                       gl::field("uSourceFirst", &U::sourceFirst),
-                      gl::field("uLoadSlots", &U::loadSlots),
+                      gl::field("uObstacleParticles", &U::particles),
+                      gl::field("uAddShares", &U::add),
                       gl::field(&U::contact),
-                      gl::field(&U::walls),
-                      gl::field(&U::obstacles)};
+                      gl::field(&U::grid)};
   }
 };
 

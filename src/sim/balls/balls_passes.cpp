@@ -74,7 +74,7 @@ void Balls::stepOnce(gl::GpuProfiler* profiler) {
     m_accValid = verlet;
     if (m_loadsOn) measureLoads(profiler);
   }
-  if (m_loadsOn) m_loads.sum();
+  if (m_loadsOn) m_loads.sum(m_obstacles);
   m_loadsValid = m_loadsOn && m_count > 0;
   m_coupling.requestLoads(m_loadsValid);  // complete: on their way back while the next step sorts
   m_time += m_params.dt;
@@ -216,29 +216,51 @@ void Balls::collide(gl::GpuProfiler* profiler, Collide what) {
 }
 
 // The collide's inputs are still the cell-ordered copies (Verlet's positions are the state now,
-// its velocities the half step's): the loads are what the collide's accelerations were.
+// its velocities the half step's): the loads are what the collide's accelerations were. The walls'
+// from every ball (a probe on a wall), the obstacles' from every obstacle particle, a window of
+// balls at a time.
 void Balls::measureLoads(gl::GpuProfiler* profiler) {
   auto scope = timed(profiler, "balls.loads");
-  std::vector<gl::ShaderDefine> defines = this->defines(false);
-  if (m_wallLoadsOn) defines.push_back({"LOADS_WALLS", ""});
-  const gl::Kernel<LoadsUniforms> loads(m_shaders, "balls/loads.comp", {BALLS_POS_IN, BALLS_VEL_IN, BALLS_LOADS},
-                                        defines);
   const bool verlet = m_params.integrator == Integrator::VelocityVerlet;
   const gl::Buffer &posIn = verlet ? m_pos[m_posIndex] : m_pos[1 - m_posIndex], &velIn = m_vel[1 - m_velIndex];
-  m_obstacles.bind();
-  for (const ReachWindow& w : m_windows) {
-    gl::bindWindow(posIn, BALLS_POS_IN, w.sources, kVec4);
-    gl::bindWindow(velIn, BALLS_VEL_IN, w.sources, kVec4);
-    m_loads.bindGroups(BALLS_LOADS, w.balls.first / BALLS_GROUP_SIZE,
-                       (w.balls.count + BALLS_GROUP_SIZE - 1) / BALLS_GROUP_SIZE);
-    loads.dispatchThreads(w.balls.count, {.first = GLuint(w.balls.first),
-                                          .count = GLuint(w.balls.end()),
-                                          .radius = m_radius,
-                                          .sourceFirst = GLuint(w.sources.first),
-                                          .loadSlots = m_loads.slots(),
-                                          .contact = contactUniforms(),
-                                          .walls = wallUniforms(),
-                                          .obstacles = m_obstacles.uniforms()});
+  if (m_loads.walls()) {
+    const gl::Kernel<LoadsUniforms> walls(m_shaders, "balls/loads.comp", {BALLS_POS_IN, BALLS_VEL_IN, BALLS_LOADS},
+                                          defines(false));
+    for (const ReachWindow& w : m_windows) {
+      gl::bindWindow(posIn, BALLS_POS_IN, w.balls, kVec4);
+      gl::bindWindow(velIn, BALLS_VEL_IN, w.balls, kVec4);
+      m_loads.bindWallGroups(BALLS_LOADS, w.balls.first / BALLS_GROUP_SIZE,
+                             (w.balls.count + BALLS_GROUP_SIZE - 1) / BALLS_GROUP_SIZE);
+      walls.dispatchThreads(w.balls.count, {.first = GLuint(w.balls.first),
+                                            .count = GLuint(w.balls.end()),
+                                            .radius = m_radius,
+                                            .sourceFirst = GLuint(w.balls.first),
+                                            .contact = contactUniforms(),
+                                            .walls = wallUniforms()});
+    }
+  }
+  if (m_loads.obstacles()) {
+    const gl::Kernel<ObstacleLoadsUniforms> obstacles(
+        m_shaders, "balls/obstacle_loads.comp",
+        {BALLS_POS_IN, BALLS_VEL_IN, BALLS_CELL_START, BALLS_OBSTACLE_PLACED, BALLS_SHARES, BALLS_MOMENTS},
+        defines(false));
+    m_obstacles.bind();
+    m_obstacles.placed().bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_OBSTACLE_PLACED);
+    m_loads.bindShares(BALLS_SHARES, BALLS_MOMENTS);
+    m_grid->cellStart().bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_CELL_START);
+    for (const ReachWindow& w : m_windows) {  // each adds its balls' part, in the grid's order
+      gl::bindWindow(posIn, BALLS_POS_IN, w.sources, kVec4);
+      gl::bindWindow(velIn, BALLS_VEL_IN, w.sources, kVec4);
+      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);  // the last window's shares
+      obstacles.dispatchThreads(m_obstacles.particles(), {.first = GLuint(w.balls.first),
+                                                          .count = GLuint(w.balls.end()),
+                                                          .radius = m_radius,
+                                                          .sourceFirst = GLuint(w.sources.first),
+                                                          .particles = GLuint(m_obstacles.particles()),
+                                                          .add = GLuint(w.balls.first > 0),
+                                                          .contact = contactUniforms(),
+                                                          .grid = m_grid->uniforms()});
+    }
   }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }

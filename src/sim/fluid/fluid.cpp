@@ -217,7 +217,7 @@ std::size_t Fluid::bytesPerParticle() const {
   if (m_count == 0) return 0;
   const std::size_t own = m_x.size() + m_v.size() + m_pred.size() + m_scratch[0].size() + m_scratch[1].size() +
                           m_lambda.size() + m_lambdaSum.size() + m_permutation.size() +
-                          (m_loadsOn ? m_loads.bytes() : 0);
+                          (m_loadsOn ? m_loads.bytes() + m_unpushed.size() : 0);
   return (own + m_grid->memoryBytes()) / m_count;
 }
 

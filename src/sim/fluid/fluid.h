@@ -129,9 +129,10 @@ class Fluid final : public sim::Model, public water::ParticleWater {
   void sortByCell(gl::GpuProfiler* profiler);
   void solve(gl::GpuProfiler* profiler);  // the iterations
   void updateVelocities(gl::GpuProfiler* profiler);
-  // With m_loadsOn: binds the loads' partials and returns BOUNDARY_LOADS (and LOADS_WALLS with
-  // m_wallLoadsOn), for predict and Δp.
-  std::vector<gl::ShaderDefine> bindLoads() const;
+  // While the walls' loads are measured: binds their partials and returns LOADS_WALLS, for
+  // predict and Δp.
+  std::vector<gl::ShaderDefine> bindWallLoads() const;
+  void measureObstacleLoads(bool add, gl::GpuProfiler* profiler);  // after each Δp, while measuring
   // What the kernels share (fluid_kernels.h); bindNeighbours() binds the grid's cell starts.
   SphUniforms sph() const;
   WallUniforms walls() const;
@@ -147,6 +148,7 @@ class Fluid final : public sim::Model, public water::ParticleWater {
   // State x, v (cell order after a step); the predicted positions p; scratch for the Jacobi
   // iterations and the velocity passes; (λ, ρ/ρ0) per particle.
   gl::Buffer m_x, m_v, m_pred, m_scratch[2], m_lambda, m_lambdaSum, m_permutation;
+  gl::Buffer m_unpushed;  // vec4 per particle while the obstacles' loads are measured (fluid/delta.comp)
   std::unique_ptr<grid::UniformGrid> m_grid;
   water::Obstacles m_obstacles;
   std::string m_obstacleError;

@@ -67,18 +67,12 @@ struct PredictUniforms {  // fluid/predict.comp
   float dt = 0;
   glm::vec3 gravity{0.0f};  // m/s², turned with the domain
   float decay = 1;          // exp(−damping·dt)
-  GLuint loadSlots = 0;     // water/loads.glsl, with BOUNDARY_LOADS
   SphUniforms sph;
   WallUniforms walls;
   static constexpr auto fields() {
     using U = PredictUniforms;
-    return std::tuple{gl::field("uCount", &U::count),
-                      gl::field("uDt", &U::dt),
-                      gl::field("uGravity", &U::gravity),
-                      gl::field("uDecay", &U::decay),
-                      gl::field("uLoadSlots", &U::loadSlots),
-                      gl::field(&U::sph),
-                      gl::field(&U::walls)};
+    return std::tuple{gl::field("uCount", &U::count), gl::field("uDt", &U::dt), gl::field("uGravity", &U::gravity),
+                      gl::field("uDecay", &U::decay), gl::field(&U::sph),       gl::field(&U::walls)};
   }
 };
 
@@ -105,9 +99,8 @@ struct LambdaUniforms {  // fluid/lambda.comp
 struct DeltaUniforms {  // fluid/delta.comp
   GLuint count = 0;
   float scorrK = 0, scorrN = 0;
-  float scorrInvQ = 0;   // 1 / (1 − Δq²/h²)
-  float contact = 0;     // m: the closest a fluid particle comes to an obstacle particle
-  GLuint loadSlots = 0;  // water/loads.glsl, with BOUNDARY_LOADS
+  float scorrInvQ = 0;  // 1 / (1 − Δq²/h²)
+  float contact = 0;    // m: the closest a fluid particle comes to an obstacle particle
   SphUniforms sph;
   WallUniforms walls;
   NeighbourUniforms neighbours;
@@ -119,11 +112,23 @@ struct DeltaUniforms {  // fluid/delta.comp
                       gl::field("uScorrN", &U::scorrN),
                       gl::field("uScorrInvQ", &U::scorrInvQ),
                       gl::field("uContact", &U::contact),
-                      gl::field("uLoadSlots", &U::loadSlots),
                       gl::field(&U::sph),
                       gl::field(&U::walls),
                       gl::field(&U::neighbours),
                       gl::field(&U::boundary)};
+  }
+};
+
+struct ObstacleLoadsUniforms {  // fluid/obstacle_loads.comp
+  GLuint particles = 0;         // the obstacles' (water/obstacle_loads.glsl)
+  GLuint add = 0;               // 1: add to the shares (a later iteration)
+  float contact = 0;            // m: the closest a fluid particle comes to an obstacle particle
+  SphUniforms sph;
+  NeighbourUniforms neighbours;
+  static constexpr auto fields() {
+    using U = ObstacleLoadsUniforms;
+    return std::tuple{gl::field("uObstacleParticles", &U::particles), gl::field("uAddShares", &U::add),
+                      gl::field("uContact", &U::contact), gl::field(&U::sph), gl::field(&U::neighbours)};
   }
 };
 

@@ -35,7 +35,7 @@ void Fluid::stepOnce(gl::GpuProfiler* profiler) {
   const water::LoadsWanted want = water::loadsWanted(m_params.probes, m_coupling.any());
   m_loadsOn = want.any;
   m_wallLoadsOn = want.walls;
-  if (m_loadsOn) m_loads.begin(m_count, m_obstacles.size());
+  if (m_loadsOn) m_loads.begin(m_count, want.walls, m_obstacles);
   // Neither predict nor the sort reads the obstacles: the GPU runs them while the bodies wait
   // for the last step's loads.
   if (m_count > 0) {
@@ -48,7 +48,7 @@ void Fluid::stepOnce(gl::GpuProfiler* profiler) {
   m_obstacles.place(m_params.obstacles, bodies().poses(m_params.obstacles, m_time + m_params.dt), m_params.domainMin,
                     m_params.domainMax, profiler);
   if (m_count > 0) solve(profiler);
-  if (m_loadsOn) m_loads.sum();
+  if (m_loadsOn) m_loads.sum(m_obstacles);
   m_densitiesValid = m_count > 0 && m_params.iterations > 0;
   m_coupling.requestLoads(m_densitiesValid);  // complete: on their way back while the velocities follow
   if (m_count > 0) updateVelocities(profiler);
@@ -72,19 +72,16 @@ NeighbourUniforms Fluid::bindNeighbours() const {
   return {kGridReach, m_grid->uniforms()};
 }
 
-std::vector<gl::ShaderDefine> Fluid::bindLoads() const {
-  if (!m_loadsOn) return {};
-  m_loads.bind(FLUID_LOADS);
-  if (m_wallLoadsOn) return {{"BOUNDARY_LOADS", ""}, {"LOADS_WALLS", ""}};
-  return {{"BOUNDARY_LOADS", ""}};
+std::vector<gl::ShaderDefine> Fluid::bindWallLoads() const {
+  if (!m_loadsOn || !m_loads.walls()) return {};
+  m_loads.bindWalls(FLUID_LOADS);
+  return {{"LOADS_WALLS", ""}};
 }
 
 void Fluid::predict(gl::GpuProfiler* profiler) {
   auto scope = timed(profiler, "fluid.predict");
-  std::vector<gl::ShaderDefine> defines = bindLoads();
-  if (m_loadsOn) defines.push_back({"LOADS_FIRST", ""});  // zeroes the partials
   const gl::Kernel<PredictUniforms> predict(m_shaders, "fluid/predict.comp",
-                                            {FLUID_POS, FLUID_VEL_IN, FLUID_OUT, FLUID_LOADS}, defines);
+                                            {FLUID_POS, FLUID_VEL_IN, FLUID_OUT, FLUID_LOADS}, bindWallLoads());
   m_x.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_POS);
   m_v.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_VEL_IN);
   m_pred.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_OUT);
@@ -92,7 +89,6 @@ void Fluid::predict(gl::GpuProfiler* profiler) {
                                     .dt = m_params.dt,
                                     .gravity = gravity(),
                                     .decay = std::exp(-m_params.damping * m_params.dt),
-                                    .loadSlots = m_loads.slots(),
                                     .sph = sph(),
                                     .walls = walls()});
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
@@ -120,12 +116,17 @@ void Fluid::solve(gl::GpuProfiler* profiler) {
   const std::vector<gl::ShaderDefine> boundary = boundaryDefines(m_obstacles);
   std::vector<gl::ShaderDefine> deltaDefines = boundary;
   if (q.scorrN == 4.0f) deltaDefines.push_back({"SCORR_N4", ""});
-  for (const gl::ShaderDefine& d : bindLoads()) deltaDefines.push_back(d);
+  for (const gl::ShaderDefine& d : bindWallLoads()) deltaDefines.push_back(d);
+  const bool obstacleLoads = m_loadsOn && m_loads.obstacles();
+  if (obstacleLoads) {
+    deltaDefines.push_back({"OBSTACLE_LOADS", ""});
+    if (m_unpushed.size() < m_capacity * sizeof(glm::vec4)) m_unpushed = gl::Buffer(m_capacity * sizeof(glm::vec4));
+  }
   const gl::Kernel<LambdaUniforms> lambda(m_shaders, "fluid/lambda.comp",
                                           {FLUID_CELL_START, FLUID_PRED, FLUID_LAMBDA, FLUID_PRESSURE}, boundary);
-  const gl::Kernel<DeltaUniforms> delta(m_shaders, "fluid/delta.comp",
-                                        {FLUID_CELL_START, FLUID_PRED, FLUID_LAMBDA, FLUID_OUT, FLUID_LOADS},
-                                        deltaDefines);
+  const gl::Kernel<DeltaUniforms> delta(
+      m_shaders, "fluid/delta.comp",
+      {FLUID_CELL_START, FLUID_PRED, FLUID_LAMBDA, FLUID_OUT, FLUID_LOADS, FLUID_UNPUSHED}, deltaDefines);
   for (int k = 0; k < q.iterations; ++k) {
     {
       auto scope = timed(profiler, "fluid.lambda");
@@ -141,26 +142,57 @@ void Fluid::solve(gl::GpuProfiler* profiler) {
                                        .boundary = bindBoundary(m_obstacles, q.h())});
       glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     }
-    auto scope = timed(profiler, "fluid.delta");
-    m_pred.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_PRED);
-    m_lambda.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_LAMBDA);
-    m_scratch[0].bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_OUT);
-    // s_corr in the units of λ (m²): k times the λ a unit compression gives a resting particle, so k
-    // is the compression one close pair pushes with (Macklin's k = 0.1 is dimensionless only in the
-    // paper's units, where the mass is 1 and ρ0 sets the scale).
-    delta.dispatchThreads(m_count, {.count = GLuint(m_count),
-                                    .scorrK = float(q.scorrK / m_rest.gradients),
-                                    .scorrN = q.scorrN,
-                                    .scorrInvQ = 1.0f / (1.0f - dq * dq),
-                                    .contact = kObstacleContact * q.spacing(),
-                                    .loadSlots = m_loads.slots(),
-                                    .sph = sph(),
-                                    .walls = walls(),
-                                    .neighbours = bindNeighbours(),
-                                    .boundary = bindBoundary(m_obstacles, q.h())});
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    {
+      auto scope = timed(profiler, "fluid.delta");
+      bindWallLoads();  // the obstacles' loads bind their own there
+      if (obstacleLoads) m_unpushed.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_UNPUSHED);
+      m_pred.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_PRED);
+      m_lambda.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_LAMBDA);
+      m_scratch[0].bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_OUT);
+      // s_corr in the units of λ (m²): k times the λ a unit compression gives a resting particle, so k
+      // is the compression one close pair pushes with (Macklin's k = 0.1 is dimensionless only in the
+      // paper's units, where the mass is 1 and ρ0 sets the scale).
+      delta.dispatchThreads(m_count, {.count = GLuint(m_count),
+                                      .scorrK = float(q.scorrK / m_rest.gradients),
+                                      .scorrN = q.scorrN,
+                                      .scorrInvQ = 1.0f / (1.0f - dq * dq),
+                                      .contact = kObstacleContact * q.spacing(),
+                                      .sph = sph(),
+                                      .walls = walls(),
+                                      .neighbours = bindNeighbours(),
+                                      .boundary = bindBoundary(m_obstacles, q.h())});
+      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    }
+    if (obstacleLoads) measureObstacleLoads(k > 0, profiler);  // from the iteration's inputs, m_pred
     std::swap(m_pred, m_scratch[0]);
   }
+}
+
+// The obstacles' shares of the iteration just run (fluid/obstacle_loads.comp): after Δp, from its
+// inputs p (m_pred), λ and its positions before the push; `add` to the earlier iterations'.
+void Fluid::measureObstacleLoads(bool add, gl::GpuProfiler* profiler) {
+  auto scope = timed(profiler, "fluid.loads");
+  const gl::Kernel<ObstacleLoadsUniforms> kernel(
+      m_shaders, "fluid/obstacle_loads.comp",
+      {FLUID_CELL_START, FLUID_PRED, FLUID_LAMBDA, FLUID_UNPUSHED, FLUID_OBSTACLE_PLACED, FLUID_OBSTACLE_VOLUMES,
+       FLUID_SHARES, FLUID_MOMENTS},
+      boundaryDefines(m_obstacles));
+  m_pred.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_PRED);
+  m_lambda.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_LAMBDA);
+  m_unpushed.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_UNPUSHED);
+  m_obstacles.placed().bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_OBSTACLE_PLACED);
+  if (const gl::Buffer* volumes = m_obstacles.bodyVolumes())
+    volumes->bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_OBSTACLE_VOLUMES);
+  m_loads.bindShares(FLUID_SHARES, FLUID_MOMENTS);
+  m_obstacles.bind();
+  NeighbourUniforms neighbours = bindNeighbours();
+  ++neighbours.reach;  // the particles moved since the sort (fluid/obstacle_loads.comp)
+  kernel.dispatchThreads(m_obstacles.particles(), {.particles = GLuint(m_obstacles.particles()),
+                                                   .add = GLuint(add),
+                                                   .contact = kObstacleContact * m_params.spacing(),
+                                                   .sph = sph(),
+                                                   .neighbours = neighbours});
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
 void Fluid::updateVelocities(gl::GpuProfiler* profiler) {

@@ -1,9 +1,13 @@
-// The loads the water puts on the walls and the obstacles in a step (shaders/water/loads.glsl):
-// the model's measuring kernels add each work group's shares to that group's partials,
-// loads_sum.comp adds them in chunks of groups and read() the chunks, all in a fixed order, and
-// the force is `scale` times the sum (the fluid: −m ΣΔ / dt², the momentum its boundaries gave
-// the water per second; the balls: −m Σa). The partials take 6 + obstacles slots of 32 B per
-// work group: under 6 B per particle of groups of 128, less than one vec4 array.
+// The loads the water puts on the walls and the obstacles in a step, all summed in a fixed order:
+//   walls      while a wall is probed, the model's measuring kernels add each work group's
+//              shares to that group's partials (shaders/water/loads.glsl), and loads_sum.comp
+//              adds them in chunks of groups;
+//   obstacles  the model's obstacle-loads kernels sum, for each obstacle particle, what it did
+//              to the water particles near it (water/obstacle_loads.glsl), and
+//              obstacle_loads_sum.comp adds each obstacle's particles.
+// The force is `scale` times a sum (the fluid: −m ΣΔ / dt², the momentum its boundaries gave the
+// water per second; the balls: −m Σa). The walls' partials take 32 B per work group, under 0.3 B
+// per particle; the obstacles' shares and moments 32 B per obstacle particle.
 #pragma once
 
 #include <cstddef>
@@ -12,6 +16,7 @@
 #include "gl/async_readback.h"
 #include "gl/buffer.h"
 #include "gl/shader_library.h"
+#include "sim/water/obstacles.h"
 #include "sim/water/particle_water.h"
 
 namespace tidepool::water {
@@ -25,19 +30,26 @@ LoadsWanted loadsWanted(const std::vector<ProbeParams>& probes, bool bodies);
 
 class BoundaryLoads {
  public:
-  // `groupSize`: the particles per work group of the kernels that measure.
+  // `groupSize`: the particles per work group of the kernels that measure the walls.
   BoundaryLoads(gl::ShaderLibrary& shaders, std::size_t groupSize) : m_shaders(shaders), m_groupSize(groupSize) {}
 
-  // A step of `count` particles with `obstacles` obstacles begins. Its first measuring kernel
-  // zeroes the partials of its groups (LOADS_FIRST in water/loads.glsl); with no particles, this does.
-  void begin(std::size_t count, std::size_t obstacles);
-  void bind(GLuint binding) const;  // all the partials (the particles fit one storage block)
-  // The partials of work groups [firstGroup, firstGroup + groups): a window of particles that
-  // starts at a multiple of gl::kWindowGrain (gl/window.h); all of them as bind() when that is all.
-  void bindGroups(GLuint binding, std::size_t firstGroup, std::size_t groups) const;
-  GLuint slots() const { return m_slots; }  // uLoadSlots
-  std::size_t bytes() const { return m_partials.size() + m_sums.size(); }
-  void sum();  // the step's sums per chunk of groups and slot (after its last measuring kernel)
+  // A step of `count` water particles begins, measuring the walls or not and the obstacles as
+  // built. The step's first measuring kernels zero the walls' partials of their groups
+  // (LOADS_FIRST in water/loads.glsl) and store the obstacles' shares; with no water particles,
+  // this does. Throws Error when the obstacles' shares pass one storage block.
+  void begin(std::size_t count, bool walls, const Obstacles& obstacles);
+  bool walls() const { return m_walls; }
+  bool obstacles() const { return m_obstacleParticles > 0; }  // any obstacle particle: shares to sum
+  void bindWalls(GLuint binding) const;  // all the walls' partials (the particles fit one storage block)
+  // The walls' partials of work groups [firstGroup, firstGroup + groups): a window of particles
+  // that starts at a multiple of gl::kWindowGrain (gl/window.h); all of them as bindWalls() when
+  // that is all.
+  void bindWallGroups(GLuint binding, std::size_t firstGroup, std::size_t groups) const;
+  void bindShares(GLuint shares, GLuint moments) const;  // the obstacles' shares and their moments
+  std::size_t bytes() const { return m_partials.size() + m_shares.size() + m_moments.size() + m_sums.size(); }
+  // The step's sums (after its last measuring kernel): the obstacles' (their pose block bound
+  // by obstacles.bind()), then the walls' per chunk of groups.
+  void sum(const Obstacles& obstacles);
   // The sums as forces and torques (`scale` times them); walls about nothing (zero torque).
   Loads read(double scale) const;
   // The same in two halves, so that the GPU goes on with other work in between: request() copies
@@ -46,17 +58,21 @@ class BoundaryLoads {
   Loads received(double scale);
 
  private:
-  Loads fromSums(const glm::vec4* sums, std::size_t chunks, GLuint slots, double scale) const;
+  struct Layout {
+    std::size_t obstacles = 0, chunks = 0;
+    std::size_t vec4s() const { return 2 * (obstacles + chunks); }
+  };
+  static Loads fromSums(const glm::vec4* sums, Layout layout, double scale);
 
   gl::ShaderLibrary& m_shaders;
   std::size_t m_groupSize;
-  gl::Buffer m_partials, m_sums;
+  gl::Buffer m_partials, m_shares, m_moments, m_sums;
   gl::AsyncReadback m_copy;
-  std::size_t m_copyChunks = 0;  // the requesting step's, to read the copy after a later begin()
-  GLuint m_copySlots = 0;
-  std::size_t m_groups = 0, m_chunks = 0;
+  Layout m_layout, m_copyLayout;  // this step's, and the requesting step's (read after a later begin())
+  bool m_walls = false;
+  std::size_t m_groups = 0;       // the walls' measuring kernels' work groups
   std::size_t m_chunkGroups = 0;  // work groups per chunk: a chunk's partials fit one storage block
-  GLuint m_slots = 0;
+  std::size_t m_obstacleParticles = 0;
 };
 
 }  // namespace tidepool::water

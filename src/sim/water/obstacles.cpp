@@ -22,6 +22,7 @@ struct PoseBlock {
   glm::vec4 centre[kMaxObstacles];
   glm::vec4 velocity[kMaxObstacles];
   glm::vec4 omega[kMaxObstacles];
+  glm::uvec4 particles[kMaxObstacles];  // the first of its particles, how many
 };
 
 // The parameters a body is built from, from `from` (the pose stays as it is).
@@ -169,6 +170,7 @@ void Obstacles::place(const std::vector<ObstacleParams>& params, std::vector<Obs
     block.centre[k] = glm::vec4(q.centre, 0.0f);
     block.velocity[k] = glm::vec4(q.velocity, 0.0f);
     block.omega[k] = glm::vec4(q.omega, 0.0f);
+    block.particles[k] = glm::uvec4(m_bodies[k].first, m_bodies[k].particles.size(), 0u, 0u);
   }
   if (!m_poseBlock) m_poseBlock = gl::Buffer(sizeof block, nullptr, GL_DYNAMIC_DRAW);
   m_poseBlock.upload(&block, sizeof block);

@@ -85,9 +85,10 @@ class Obstacles {
   using VolumeFn = std::function<std::vector<float>(const ObstacleBody&)>;
   void setVolumes(VolumeFn volumes) { m_volumeFn = std::move(volumes); }
   void refreshVolumes();
-  const gl::Buffer* volumes() const { return m_volumeFn ? &m_volumeSorted : nullptr; }  // vec4 (x), grid order
-  float cellSize() const { return 2.0f * m_radius; }                                    // of the obstacle grid
-  float radius() const { return m_radius; }                                             // r they were built for
+  const gl::Buffer* volumes() const { return m_volumeFn ? &m_volumeSorted : nullptr; }    // vec4 (x), grid order
+  const gl::Buffer* bodyVolumes() const { return m_volumeFn ? &m_volumeBody : nullptr; }  // vec4 (x), as bodies()
+  float cellSize() const { return 2.0f * m_radius; }                                      // of the obstacle grid
+  float radius() const { return m_radius; }                                               // r they were built for
 
   bool active() const { return m_grid != nullptr; }  // any particles: the kernels' HAS_OBSTACLE
   std::size_t size() const { return m_bodies.size(); }
