@@ -6,7 +6,9 @@
 // obstacle's centre (at p_j and at q_j), so that the obstacle felt F = −m ΣΔ / dt². The same
 // float operations as Δp's, from its inputs p and λ; q comes from Δp (OBSTACLE_LOADS). The fluid
 // particles come from the grid of the step's sort: the search reaches half a cell farther than h
-// (one ring more), for the particles the iterations so far moved out of their cells.
+// (one ring more), for the particles the iterations so far moved out of their cells. Δp keeps q
+// only for a particle within h of an obstacle particle, so a push of one farther than h (an
+// iteration moving it more than h − uContact, 1.25 spacings) is not counted.
 #include "fluid/bindings.glsl"
 
 layout(local_size_x = FLUID_GROUP_SIZE) in;

@@ -43,9 +43,9 @@ int run(Env& env, const std::string& sceneName, const std::string& sizes, const 
   const std::vector<std::size_t> counts = block ? parseSizes(sizes) : std::vector<std::size_t>{0};
   std::printf("fluid benchmark on %s: scene %s, steps %d..%d, medians per step\n", env.device.c_str(),
               scene.name.c_str(), w.first, w.last);
-  Table table({"particles", "spacing", "iters", "determ.", "loads", "bodies", "dynamic", "cells", "predict ms",
-               "count ms", "scan ms", "reorder ms", "lambda ms", "delta ms", "velocity ms", "viscosity ms", "ms/step",
-               "steps/s", "bytes/particle"});
+  Table table({"particles", "spacing",     "iters",        "determ.", "loads",      "bodies",        "dynamic",
+               "cells",     "predict ms",  "count ms",     "scan ms", "reorder ms", "lambda ms",     "delta ms",
+               "loads ms",  "velocity ms", "viscosity ms", "ms/step", "steps/s",    "bytes/particle"});
   Steps steps("bench fluid",
               int(counts.size() * iterationCounts.size() * orders.size() * measured.size() * bodies.size()));
   for (std::size_t n : counts)
@@ -68,12 +68,25 @@ int run(Env& env, const std::string& sceneName, const std::string& sizes, const 
             fluid::Fluid model(env.shaders, p);
             const PassTimes t = timePasses(w.first, w.last - w.first, [&](gl::GpuProfiler& g) { model.stepOnce(&g); });
             const double perStep = t.frameMs();
-            table.add({std::to_string(model.count()), fixed(p.spacing(), 5), std::to_string(k), stable ? "on" : "off",
-                       withLoads ? "on" : "off", std::to_string(bodyCount), bodiesMove ? "on" : "off",
-                       std::to_string(model.cells()), t.cell("fluid.predict", 4), t.cell("fluid.count", 4),
-                       t.cell("fluid.scan", 4), t.cell("fluid.reorder", 4), t.cell("fluid.lambda", 4),
-                       t.cell("fluid.delta", 4), t.cell("fluid.velocity", 4), t.cell("fluid.viscosity", 4),
-                       fixed(perStep, 4), fixed(perStep > 0 ? 1000.0 / perStep : 0.0, 0),
+            table.add({std::to_string(model.count()),
+                       fixed(p.spacing(), 5),
+                       std::to_string(k),
+                       stable ? "on" : "off",
+                       withLoads ? "on" : "off",
+                       std::to_string(bodyCount),
+                       bodiesMove ? "on" : "off",
+                       std::to_string(model.cells()),
+                       t.cell("fluid.predict", 4),
+                       t.cell("fluid.count", 4),
+                       t.cell("fluid.scan", 4),
+                       t.cell("fluid.reorder", 4),
+                       t.cell("fluid.lambda", 4),
+                       t.cell("fluid.delta", 4),
+                       t.cell("fluid.loads", 4),
+                       t.cell("fluid.velocity", 4),
+                       t.cell("fluid.viscosity", 4),
+                       fixed(perStep, 4),
+                       fixed(perStep > 0 ? 1000.0 / perStep : 0.0, 0),
                        std::to_string(model.bytesPerParticle())});
           }
   steps.finish();

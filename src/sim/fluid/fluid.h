@@ -6,7 +6,8 @@
 //   sort       grid of cell h on p (count, scan), p and x to cell order  (neighbours for the step)
 //   bodies     the dynamic obstacles moved by the last step's loads, then every obstacle placed
 //   iterate    `iterations` times: λ (density, constraint, λ), then Δp with s_corr, the obstacles
-//              (no closer than kObstacleContact) and the walls
+//              (no closer than kObstacleContact) and the walls, then, while measuring, the
+//              obstacles' loads from their particles' side (boundary_loads.h)
 //   velocity   v = (p − x)/dt, x = p
 //   viscosity  XSPH (and the vorticity ω), then vorticity confinement when ε_v > 0
 // Densities are ρ/ρ0 throughout (shaders/fluid/kernels.glsl); boundaries take part in the density
