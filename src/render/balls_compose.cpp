@@ -42,6 +42,12 @@ struct ComposeUniforms {  // see render/balls/compose.comp
   float thicknessScale = 0.0f;
   glm::vec3 lightView{0.0f};
   float depthStep = 0.0f;
+  float ior = 1.0f, scattering = 1.0f;
+  GLint environment = 0;
+  glm::vec3 skyColor{0.0f}, sunWorld{0.0f, 0.0f, 1.0f};
+  glm::mat4 boxFromWorld{1.0f};
+  glm::vec3 floorMin{0.0f}, floorMax{1.0f};
+  float tileSize = 1.0f, pixelSpread = 0.0f;
   GLint gbuffer = BALLS_VIEW_GBUFFER, foam = BALLS_VIEW_FOAM, depth = BALLS_VIEW_DEPTH;  // texture units
   GLint sceneDepth = BALLS_VIEW_SCENE_DEPTH, target = BALLS_VIEW_COMPOSE_TARGET;         // texture, image unit
   static constexpr auto fields() {
@@ -69,6 +75,16 @@ struct ComposeUniforms {  // see render/balls/compose.comp
                       gl::field("uThicknessScale", &U::thicknessScale),
                       gl::field("uLightView", &U::lightView),
                       gl::field("uDepthStep", &U::depthStep),
+                      gl::field("uIor", &U::ior),
+                      gl::field("uScattering", &U::scattering),
+                      gl::field("uEnvironment", &U::environment),
+                      gl::field("uSkyColor", &U::skyColor),
+                      gl::field("uSunWorld", &U::sunWorld),
+                      gl::field("uBoxFromWorld", &U::boxFromWorld),
+                      gl::field("uFloorMin", &U::floorMin),
+                      gl::field("uFloorMax", &U::floorMax),
+                      gl::field("uTileSize", &U::tileSize),
+                      gl::field("uPixelSpread", &U::pixelSpread),
                       gl::field("uGBuffer", &U::gbuffer),
                       gl::field("uFoam", &U::foam),
                       gl::field("uDepth", &U::depth),
@@ -134,7 +150,20 @@ void BallsCompose::draw(const gl::Texture2D* surface, const BallsGBuffer& gbuffe
                     .foamOn = look.foam ? 1 : 0,
                     .thicknessScale = 40.0f * radius,  // ~20 balls deep shows white
                     .lightView = camera.towardsLight(look.lightDirection),
-                    .depthStep = look.depthThreshold * radius};
+                    .depthStep = look.depthThreshold * radius,
+                    .ior = look.refractionIndex,
+                    .scattering = look.scattering,
+                    .environment = look.environment ? 1 : 0,
+                    .skyColor = look.skyColor,
+                    .sunWorld = glm::length(look.lightDirection) > 0.0f ? glm::normalize(look.lightDirection)
+                                                                        : glm::vec3(0.0f, 0.0f, 1.0f),
+                    .boxFromWorld = glm::inverse(scene.boxModel),
+                    .floorMin = scene.boxMin,
+                    .floorMax = scene.boxMax,
+                    .tileSize = std::min(scene.boxMax.x - scene.boxMin.x, scene.boxMax.y - scene.boxMin.y) /
+                                std::max(look.floorTiles, 1.0f),
+                    // Both projections: rad (perspective) or m (orthographic) per pixel at the centre.
+                    .pixelSpread = 2.0f / (camera.proj[1][1] * float(camera.height))};
   std::copy_n(lines.begin(), std::min(lines.size(), kMaxLinePoints), u.lines.begin());
   compose.dispatch({unsigned(camera.width + 15) / 16, unsigned(camera.height + 15) / 16, 1u}, u);
   // Readers of the image: read-backs, the window's blit, texture fetches; the next frame's

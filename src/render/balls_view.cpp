@@ -28,9 +28,26 @@ void visit(ParamVisitor& v, BallsViewParams& p) {
            p.gridCells, kGridCellsModeNames);
   v.real({"grid_cells_full", "Grid cells full", "balls per cell drawn red in the population view"}, p.gridCellsFull,
          1.0f, 64.0f);
+  const WaterLook look = p.look;
+  v.choice({"look", "Look",
+            "a preset of the fields below: seed (flat water, dark background), clear (a tiled floor under a sky, "
+            "seen through the water), ocean (deeper, greener water there); fields set after it stay"},
+           p.look, kWaterLookNames);
+  if (p.look != look) applyLook(p, p.look);
+  v.flag({"environment", "Environment", "a sky, the sun (towards the light) and a tiled floor (off: the background)"},
+         p.environment);
+  v.real({"refraction_index", "Refraction index", "water: bends the floor seen through it (1: straight through)"},
+         p.refractionIndex, 1.0f, 2.0f);
+  v.color({"sky_color", "Sky colour", "linear RGB at the zenith (environment; the horizon is the background)"},
+          p.skyColor);
+  v.real({"floor_tiles", "Floor tiles", "tiles across the domain box's shorter side (environment)"}, p.floorTiles, 1.0f,
+         200.0f);
   v.color({"water_color", "Water colour", "linear RGB: ball albedo, water tint"}, p.waterColor);
   v.real({"absorption", "Absorption", "1/m: this inverse thickness transmits the water colour"}, p.absorption, 0.0f,
          200.0f);
+  v.real({"scattering", "Scattering",
+          "water: the share of the light it absorbs that it sends back towards the eye, in its colour (0: clear)"},
+         p.scattering, 0.0f, 1.0f);
   v.real({"blur_radius", "Blur radius", "water: kernel radius in on-screen ball radii"}, p.blurRadius, 0.0f, 8.0f);
   v.integer({"blur_iterations", "Blur iterations", "water: times the row and column passes run (2: no streaks)"},
             p.blurIterations, 1, 4);
@@ -48,6 +65,40 @@ void visit(ParamVisitor& v, BallsViewParams& p) {
   v.flag({"show_obstacle", "Show obstacle", "draw the obstacle"}, p.showObstacle);
   v.flag({"obstacle_balls", "Obstacle balls", "the obstacle's fixed particles too (they lie up to r outside its mesh)"},
          p.obstacleBalls);
+}
+
+void applyLook(BallsViewParams& p, WaterLook look) {
+  const BallsViewParams seed;
+  p.look = look;
+  p.environment = look != WaterLook::Seed;
+  p.refractionIndex = look == WaterLook::Seed ? seed.refractionIndex : 1.33f;
+  p.fresnelF0 = seed.fresnelF0;  // water's 0.02 in every look
+  switch (look) {
+    case WaterLook::Seed:
+      p.skyColor = seed.skyColor;
+      p.waterColor = seed.waterColor;
+      p.absorption = seed.absorption;
+      p.scattering = seed.scattering;
+      p.background = seed.background;
+      p.specular = seed.specular;
+      break;
+    case WaterLook::Clear:  // thin water nearly clear, a metre of it pale blue-green
+      p.skyColor = {0.30f, 0.50f, 0.85f};
+      p.waterColor = {0.62f, 0.86f, 0.92f};
+      p.absorption = 4.0f;
+      p.scattering = 0.25f;
+      p.background = {0.80f, 0.85f, 0.90f};
+      p.specular = 1.0f;
+      break;
+    case WaterLook::Ocean:  // a few decimetres already deep teal
+      p.skyColor = {0.22f, 0.40f, 0.72f};
+      p.waterColor = {0.10f, 0.45f, 0.50f};
+      p.absorption = 12.0f;
+      p.scattering = 0.6f;
+      p.background = {0.70f, 0.76f, 0.82f};
+      p.specular = 0.8f;
+      break;
+  }
 }
 
 BallsCamera BallsCamera::perspective(glm::mat4 view, float fovYRadians, int width, int height, float near, float far) {

@@ -35,6 +35,11 @@ inline constexpr std::array<const char*, 2> kBallsRasterNames = {"compute", "fra
 enum class GridCellsMode { Hidden, Population, NonEmpty };
 inline constexpr std::array<const char*, 3> kGridCellsModeNames = {"hidden", "population", "non_empty"};
 
+// Presets of the look (applyLook): the seed's flat blue water over a dark background, clear
+// water over a tiled floor under a sky, and deeper, greener ocean water there.
+enum class WaterLook { Seed, Clear, Ocean };
+inline constexpr std::array<const char*, 3> kWaterLookNames = {"seed", "clear", "ocean"};
+
 struct BallsViewParams {
   BallsMode mode = BallsMode::Balls;
   BallsRaster raster = BallsRaster::Compute;  // not read from scenes (see BallsRaster)
@@ -42,8 +47,14 @@ struct BallsViewParams {
   bool debugUnblurred = false;                      // water: the debug views show the G-buffer before the blur
   GridCellsMode gridCells = GridCellsMode::Hidden;  // the neighbour grid's non-empty cells as wire cubes
   float gridCellsFull = 3.0f;                       // balls per cell at the population ramp's red end
+  WaterLook look = WaterLook::Seed;                 // the preset the fields below started from
+  bool environment = false;                         // a sky, the sun and a tiled floor (off: the background)
+  float refractionIndex = 1.0f;                     // water's, bending what is seen through it (1: straight)
+  glm::vec3 skyColor{0.55f, 0.68f, 0.85f};          // linear RGB at the zenith (the horizon: background)
+  float floorTiles = 5.0f;                          // tiles across the domain box's shorter side
   glm::vec3 waterColor{0.18f, 0.45f, 0.91f};        // linear RGB: balls' albedo, water's tint (water-webgpu)
   float absorption = 20.0f;                         // 1/m: thickness 1/absorption transmits waterColor
+  float scattering = 1.0f;                          // water: how much of the absorbed light it sends back, tinted
   float blurRadius = 4.0f;                          // blur kernel radius, in on-screen ball radii
   int blurIterations = 2;                           // times the blur's row and column passes run
   float depthThreshold = 12.0f;                     // ball radii: no blur across larger depth steps between pixels
@@ -58,6 +69,9 @@ struct BallsViewParams {
   bool obstacleBalls = false;  // the obstacle's fixed balls too (they stick out of its mesh by up to r)
 };
 void visit(ParamVisitor& v, BallsViewParams& p);
+// Sets the fields a look decides (the surroundings, the water's colour, absorption, refraction,
+// Fresnel and highlight, the background); the others stay.
+void applyLook(BallsViewParams& p, WaterLook look);
 
 // One frame's camera: view and projection matrices (glm::perspective or glm::ortho, symmetric),
 // image size and the depth range (m). Only what lies in front of the eye (view depth > 0) is

@@ -38,10 +38,23 @@ TEST(Bench, RenderPrintsMsPerPassInBothModes) {
                              "compose ms", "frame ms"})
     EXPECT_NE(r.out.find(column), std::string::npos) << column << "\n" << r.out;
   const std::string csv = io::readTextFile(dir / "render.csv");
-  for (const char* row : {",balls,compute,", ",water,compute,", ",balls,fragment,", ",water,fragment,"})
+  for (const char* row :
+       {",balls,seed,compute,", ",water,seed,compute,", ",balls,seed,fragment,", ",water,seed,fragment,"})
     EXPECT_NE(csv.find(row), std::string::npos) << row << "\n" << csv;
   expectOneLineError({"bench", "render", "--size", "1920"}, "--size '1920' is not WIDTHxHEIGHT");
   expectOneLineError({"bench", "render", "--raster", "rops"}, "--raster 'rops' is not compute, fragment or both");
+  expectOneLineError({"bench", "render", "--look", "seed,murky"}, "--look 'murky' is not one of: seed, clear, ocean");
+}
+
+// --look: a row per look and mode.
+TEST(Bench, RenderRowsForEachLook) {
+  test::TempDir dir;
+  auto r = runTidepool({"bench", "render", "--n", "4096", "--size", "96x54", "--settle", "2", "--repeats", "1",
+                        "--raster", "compute", "--look", "seed,clear,ocean", "--csv", (dir / "render.csv").string()});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::string csv = io::readTextFile(dir / "render.csv");
+  for (const char* row : {",water,seed,compute,", ",water,clear,compute,", ",water,ocean,compute,"})
+    EXPECT_NE(csv.find(row), std::string::npos) << row << "\n" << csv;
 }
 
 TEST(Bench, GridGivesACheckedRowPerSizeAndLoad) {

@@ -1,6 +1,6 @@
 // Golden images of the balls renderer (cup and dam-break, both modes, 256x144 once the water is
-// moving), compared with a tolerance metric, and `tidepool render` on every balls scene. The
-// compute raster (the default) draws all four; the fragment raster the dam-break ones, against
+// moving; the water also in the clear and ocean looks), compared with a tolerance metric, and `tidepool render` on
+// every balls scene. The compute raster (the default) draws all four; the fragment raster the dam-break ones, against
 // the same images.
 //
 // Regenerate the golden images (after a deliberate change to the look), then look at them:
@@ -39,6 +39,7 @@ struct Golden {
   const char* mode;
   int frames;  // simulated frames before the picture: the water is falling or surging by then
   const char* raster = "compute";
+  const char* look = "seed";  // view.look (render/balls_view_params.h)
 };
 
 struct Difference {
@@ -87,15 +88,16 @@ std::ostream& operator<<(std::ostream& os, const Difference& d) {
 }
 
 std::filesystem::path goldenPath(const Golden& g) {
+  const std::string look = std::string(g.look) == "seed" ? "" : std::string("-") + g.look;
   return std::filesystem::path(TIDEPOOL_TEST_DATA) / "golden" /
-         (std::string("balls-") + g.mode + "-" + g.scene + ".png");
+         (std::string("balls-") + g.mode + "-" + g.scene + look + ".png");
 }
 
 class BallsGolden : public test::GlTest, public ::testing::WithParamInterface<Golden> {
  protected:
   // The scene after g.frames frames, with its "view" group edited by `tweak`.
   static io::Image render(const Golden& g, const std::function<void(io::Json&)>& tweak = {}) {
-    io::Json view = {{"mode", g.mode}};
+    io::Json view = {{"mode", g.mode}, {"look", g.look}};
     if (tweak) tweak(view);
     const Scene scene = loadScene(resolveScenePath(g.scene), {{"view", view}});  // merged into the file's view
     auto stage = createStage(scene, shaders());
@@ -144,10 +146,14 @@ INSTANTIATE_TEST_SUITE_P(Scenes, BallsGolden,
                          ::testing::Values(Golden{"cup", "balls", 40}, Golden{"cup", "water", 40},
                                            Golden{"dam-break", "balls", 40}, kDamBreakWater,
                                            Golden{"dam-break", "balls", 40, "fragment"},
-                                           Golden{"dam-break", "water", 40, "fragment"}),
+                                           Golden{"dam-break", "water", 40, "fragment"},
+                                           Golden{"dam-break", "water", 40, "compute", "clear"},
+                                           Golden{"dam-break", "water", 40, "compute", "ocean"},
+                                           Golden{"cup", "water", 40, "compute", "clear"}),
                          [](const auto& info) {
                            std::string name =
                                std::string(info.param.scene) + "_" + info.param.mode + "_" + info.param.raster;
+                           if (std::string(info.param.look) != "seed") name += std::string("_") + info.param.look;
                            std::replace(name.begin(), name.end(), '-', '_');
                            return name;
                          });

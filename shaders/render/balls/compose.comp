@@ -12,8 +12,10 @@
 // (the fixed-point blend of the fragment compose this replaces). The target's depth is left as
 // the scene's: nothing is drawn after the compose.
 //   balls: diffuse + ambient (+ a small highlight), opaque
-//   water: normals from the (blurred) depth, Schlick Fresnel toward a sky gradient, specular,
-//          absorption tint, foam
+//   water: normals from the (blurred) depth, Schlick Fresnel toward the sky, specular,
+//          absorption tint, foam; with uEnvironment (environment.glsl) the surroundings are a sky
+//          and a tiled floor, seen through the water along the ray refracted at its surface
+//          (Snell, index uIor) and reflected in it
 #include "render/balls/bindings.glsl"
 layout(local_size_x = 16, local_size_y = 16) in;
 
@@ -45,11 +47,16 @@ uniform int uFoamOn;         // 0: foam off
 uniform float uThicknessScale;  // m shown as white in the thickness view
 uniform vec3 uLightView;    // towards the key light, view space
 uniform float uDepthStep;   // m: a larger depth difference to a neighbour is a silhouette, not a slope
+uniform float uIor;         // water's index of refraction (1: straight through)
+uniform float uScattering;  // the share of the absorbed light sent back, in the water's colour
+#include "render/balls/environment.glsl"
+#include "render/balls/water_optics.glsl"
 
 const vec3 kFoamColor = vec3(0.92, 0.96, 1.0);
 const vec3 kZenith = vec3(0.55, 0.68, 0.85);
+const float kRefractionBlur = 0.05;  // rad: the spread of refracted rays from sub-pixel ripples
 
-vec3 sky(vec3 worldDir) { return mix(uBackground + 0.08, kZenith, clamp(worldDir.z, 0.0, 1.0)); }
+vec3 seedSky(vec3 worldDir) { return mix(uBackground + 0.08, kZenith, clamp(worldDir.z, 0.0, 1.0)); }
 
 // Window depth of the nearest box line covering px, or `depth` when none is nearer. A line is
 // drawn as GL draws a one-pixel line: for an x-major segment one pixel per column whose centre
@@ -91,8 +98,16 @@ bool surfaceSlope(ivec2 px, ivec2 axis, vec3 p, out vec3 slope) {
   return true;
 }
 
-// The ball's colour over `scene` at px (g: its G-buffer texel).
-vec3 shade(ivec2 px, vec4 g, vec3 scene) {
+// The eye's ray through px, world.
+void eyeRay(ivec2 px, out vec3 origin, out vec3 dir) {
+  const vec3 p = viewPosition(px, 1.0);
+  origin = (uInvView * vec4(uOrtho != 0 ? vec3(p.xy, 0.0) : vec3(0.0), 1.0)).xyz;
+  dir = normalize(mat3(uInvView) * (uOrtho != 0 ? vec3(0.0, 0.0, -1.0) : p));
+}
+
+// The ball's colour over `scene` at px (g: its G-buffer texel); `open`: nothing opaque behind it
+// (the scene is the surroundings).
+vec3 shade(ivec2 px, vec4 g, vec3 scene, bool open) {
   const vec3 p = viewPosition(px, g.a);  // view-space position, m
   const vec3 v = uOrtho != 0 ? vec3(0.0, 0.0, 1.0) : normalize(-p);  // towards the eye
   // Balls: the ray-traced normal. Water: the smoothed depth's, where both slopes exist (the
@@ -117,15 +132,22 @@ vec3 shade(ivec2 px, vec4 g, vec3 scene) {
     const vec3 albedo = mix(uWaterColor, kFoamColor, foam);
     return albedo * (0.35 + 0.65 * diffuse) + 0.2 * uSpecular * highlight;
   }
-  // Beer–Lambert: sigma = -absorption ln(waterColor) per channel, so T = waterColor^(absorption d).
-  vec3 through = pow(max(uWaterColor, vec3(1e-3)), vec3(uAbsorption * g.b));
+  vec3 through = transmittance(uWaterColor, uAbsorption, g.b);
   // Light scattered back toward the eye takes the water colour, in proportion to what is absorbed.
-  vec3 body = uWaterColor * (0.5 + 0.7 * diffuse) * (1.0 - dot(through, vec3(1.0 / 3.0)));
+  vec3 body = uScattering * uWaterColor * (0.5 + 0.7 * diffuse) * (1.0 - dot(through, vec3(1.0 / 3.0)));
   body = mix(body, kFoamColor * (0.6 + 0.4 * diffuse), foam);
   through *= 1.0 - foam;
   const float cosine = clamp(dot(n, v), 0.0, 1.0);
-  const float fresnel = uF0 + (1.0 - uF0) * pow(1.0 - cosine, 5.0);
-  const vec3 reflected = sky(toWorld * reflect(-v, n));
+  const float fresnel = schlick(uF0, cosine);
+  vec3 reflected;
+  if (uEnvironment != 0) {
+    const vec3 surface = (uInvView * vec4(p, 1.0)).xyz;
+    reflected = environment(surface, toWorld * reflect(-v, n), length(p), 0.0);
+    if (open)  // the surroundings through the water, along the refracted ray
+      scene = environment(surface, normalize(toWorld * refracted(-v, n, uIor)), length(p), kRefractionBlur);
+  } else {
+    reflected = seedSky(toWorld * reflect(-v, n));
+  }
   const vec3 color = fresnel * reflected + (1.0 - fresnel) * body + uSpecular * highlight;
   return clamp(color, 0.0, 1.0) + clamp((1.0 - fresnel) * through, 0.0, 1.0) * scene;
 }
@@ -145,11 +167,18 @@ void main() {
     scene = uLineColor;
     sceneDepth = line;
   }
-  vec3 color = scene;
+  vec4 g = vec4(0.0);
+  bool covered = false;  // a ball in front of the scene
   if (uBalls != 0) {
-    const vec4 g = texelFetch(uGBuffer, px, 0);
-    const float depth = texelFetch(uDepth, px, 0).r;
-    if (g.a > 0.0 && depth < sceneDepth) color = shade(px, g, scene);
+    g = texelFetch(uGBuffer, px, 0);
+    covered = g.a > 0.0 && texelFetch(uDepth, px, 0).r < sceneDepth;
   }
+  const bool open = sceneDepth == 1.0;  // nothing opaque: the surroundings
+  if (open && uEnvironment != 0 && !covered) {  // (water shades its own, through the surface)
+    vec3 origin, dir;
+    eyeRay(px, origin, dir);
+    scene = environment(origin, dir, 0.0, 0.0);
+  }
+  const vec3 color = covered ? shade(px, g, scene, open) : scene;
   imageStore(uTarget, px, vec4(color, 1.0));
 }
