@@ -213,7 +213,8 @@ TEST_F(WaterLookTest, TheFloorThroughATiltedSurfaceIsWhereTheRefractedRaysLand) 
       const std::uint8_t* p = &rgba[std::size_t(((kSize - 1 - row) * kSize + x) * 4)];
       luma[std::size_t(x)] = double(p[0]) + p[1] + p[2];
     }
-    const double mid = 0.5 * (*std::min_element(luma.begin(), luma.end()) + *std::max_element(luma.begin(), luma.end()));
+    const double mid =
+        0.5 * (*std::min_element(luma.begin(), luma.end()) + *std::max_element(luma.begin(), luma.end()));
     double sum = 0, count = 0;
     for (int x = 0; x < kSize; ++x)
       if (luma[std::size_t(x)] < mid) sum += x, ++count;

@@ -72,8 +72,9 @@ const std::map<std::string, Kind>& kinds() {
         benchKind({{"--n", true, "4096"}, {"--steps", true, "1:3"}, {"--iterations"}, {"--deterministic"}},
                   {{"--n", "4096"}, {"--steps", "1:3"}});
     m["bench grid"] = benchKind({{"--n", true, "65536"}, {"--ppc"}}, {{"--n", "65536"}});
-    m["bench render"] = benchKind({{"--n", true, "4096"}, {"--size", true, "64x48"}, {"--settle", true, "1"}},
-                                  {{"--n", "4096"}, {"--size", "64x48"}, {"--settle", "1"}});
+    m["bench render"] =
+        benchKind({{"--n", true, "4096"}, {"--size", true, "64x48"}, {"--settle", true, "1"}, {"--look"}},
+                  {{"--n", "4096"}, {"--size", "64x48"}, {"--settle", "1"}});
     m["bench export"] = benchKind({{"--frames", true, "1"}, {"--format"}}, {{"--frames", "1"}});
     m["bench surface"] =
         benchKind({{"--particles", true, "4096"}, {"--resolution", true, "16"}, {"--steps", true, "1"}},
