@@ -47,7 +47,7 @@ struct ComposeUniforms {  // see render/balls/compose.comp
   glm::vec3 skyColor{0.0f}, sunWorld{0.0f, 0.0f, 1.0f};
   glm::mat4 boxFromWorld{1.0f};
   glm::vec3 floorMin{0.0f}, floorMax{1.0f};
-  float tileSize = 1.0f, pixelSpread = 0.0f;
+  float tileSize = 1.0f, pixelSpread = 0.0f, glass = 0.0f;
   GLint gbuffer = BALLS_VIEW_GBUFFER, foam = BALLS_VIEW_FOAM, depth = BALLS_VIEW_DEPTH;  // texture units
   GLint sceneDepth = BALLS_VIEW_SCENE_DEPTH, target = BALLS_VIEW_COMPOSE_TARGET;         // texture, image unit
   static constexpr auto fields() {
@@ -85,6 +85,7 @@ struct ComposeUniforms {  // see render/balls/compose.comp
                       gl::field("uFloorMax", &U::floorMax),
                       gl::field("uTileSize", &U::tileSize),
                       gl::field("uPixelSpread", &U::pixelSpread),
+                      gl::field("uGlass", &U::glass),
                       gl::field("uGBuffer", &U::gbuffer),
                       gl::field("uFoam", &U::foam),
                       gl::field("uDepth", &U::depth),
@@ -163,7 +164,8 @@ void BallsCompose::draw(const gl::Texture2D* surface, const BallsGBuffer& gbuffe
                     .tileSize = std::min(scene.boxMax.x - scene.boxMin.x, scene.boxMax.y - scene.boxMin.y) /
                                 std::max(look.floorTiles, 1.0f),
                     // Both projections: rad (perspective) or m (orthographic) per pixel at the centre.
-                    .pixelSpread = 2.0f / (camera.proj[1][1] * float(camera.height))};
+                    .pixelSpread = 2.0f / (camera.proj[1][1] * float(camera.height)),
+                    .glass = look.glass};
   std::copy_n(lines.begin(), std::min(lines.size(), kMaxLinePoints), u.lines.begin());
   compose.dispatch({unsigned(camera.width + 15) / 16, unsigned(camera.height + 15) / 16, 1u}, u);
   // Readers of the image: read-backs, the window's blit, texture fetches; the next frame's

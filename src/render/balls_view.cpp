@@ -42,6 +42,9 @@ void visit(ParamVisitor& v, BallsViewParams& p) {
           p.skyColor);
   v.real({"floor_tiles", "Floor tiles", "tiles across the domain box's shorter side (environment)"}, p.floorTiles, 1.0f,
          200.0f);
+  v.real(
+      {"glass", "Glass", "the box's side walls as glass: their reflectance at normal incidence (environment; 0: none)"},
+      p.glass, 0.0f, 1.0f);
   v.color({"water_color", "Water colour", "linear RGB: ball albedo, water tint"}, p.waterColor);
   v.real({"absorption", "Absorption", "1/m: this inverse thickness transmits the water colour"}, p.absorption, 0.0f,
          200.0f);
@@ -72,7 +75,8 @@ void applyLook(BallsViewParams& p, WaterLook look) {
   p.look = look;
   p.environment = look != WaterLook::Seed;
   p.refractionIndex = look == WaterLook::Seed ? seed.refractionIndex : 1.33f;
-  p.fresnelF0 = seed.fresnelF0;  // water's 0.02 in every look
+  p.fresnelF0 = seed.fresnelF0;                            // water's 0.02 in every look
+  p.glass = look == WaterLook::Seed ? seed.glass : 0.04f;  // glass's
   switch (look) {
     case WaterLook::Seed:
       p.skyColor = seed.skyColor;

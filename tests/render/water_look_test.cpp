@@ -236,3 +236,36 @@ TEST_F(WaterLookTest, TheFloorThroughATiltedSurfaceIsWhereTheRefractedRaysLand) 
   EXPECT_NEAR(wet, want, 1.0) << "dry " << dry;
   std::printf("joint: dry %.2f, wet %.2f, Snell %.2f (columns)\n", dry, wet, want);
 }
+
+// The tank's side walls are glass: through one, the floor inside the tank is mixed with the sky
+// it reflects by Schlick's Fresnel at the wall (F0 = glass). An orthographic eye outside the box
+// looks steeply down, 75° from the wall's normal, through the wall x = 0; the reflected ray points
+// down, where the sky is the background, and the sun straight up adds no glow to it.
+TEST_F(WaterLookTest, TheTanksGlassWallsReflectTheSkyByFresnel) {
+  constexpr int kSize = 16;
+  BallsViewParams look;
+  applyLook(look, WaterLook::Clear);
+  look.lightDirection = {0.0f, 0.0f, 1.0f};
+  const double angle = 75.0 * std::acos(-1.0) / 180.0;
+  const glm::vec3 eye(-0.1f, 0.5f, 1.0f), target = eye + glm::vec3(std::cos(angle), 0.0, -std::sin(angle));
+  const BallsCamera camera = BallsCamera::orthographic(glm::lookAt(eye, target, glm::vec3(0.0f, 0.0f, 1.0f)), 0.02f,
+                                                       kSize, kSize, 0.1f, 10.0f);
+  BallsGBuffer gbuffer(shaders());
+  gbuffer.resize(kSize, kSize);
+  BallsCompose compose(shaders());
+  const ComposeScene scene{.boxMin = glm::vec3(0.0f), .boxMax = glm::vec3(1.0f)};
+  const auto centre = [&](float glass) {
+    look.glass = glass;
+    RenderTarget target(kSize, kSize);
+    compose.draw(nullptr, gbuffer, look, camera, 0.01f, scene, target);
+    const std::vector<std::uint8_t> rgba = target.readRgba8();
+    const std::uint8_t* p = &rgba[std::size_t((kSize / 2 * kSize + kSize / 2) * 4)];
+    return glm::dvec3(p[0], p[1], p[2]) / 255.0;
+  };
+  const glm::dvec3 floor = centre(0.0f), glazed = centre(0.5f);
+  const double cosine = std::cos(angle);
+  const double fresnel = 0.5 + 0.5 * std::pow(1.0 - cosine, 5.0);
+  for (int k = 0; k < 3; ++k)
+    EXPECT_NEAR(glazed[k], floor[k] + fresnel * (look.background[k] - floor[k]), 1.5 / 255.0) << "channel " << k;
+  EXPECT_GT(glm::length(glazed - floor), 0.05) << "the glass shows";
+}

@@ -98,6 +98,12 @@ bool surfaceSlope(ivec2 px, ivec2 axis, vec3 p, out vec3 slope) {
   return true;
 }
 
+// The view depth (m) of a window depth of the scene (GL's default depth range).
+float viewDepth(float window) {
+  const float n = uDepthRange.x, f = uDepthRange.y;
+  return uOrtho != 0 ? n + window * (f - n) : 2.0 * n * f / (f + n - (2.0 * window - 1.0) * (f - n));
+}
+
 // The eye's ray through px, world.
 void eyeRay(ivec2 px, out vec3 origin, out vec3 dir) {
   const vec3 p = viewPosition(px, 1.0);
@@ -179,6 +185,12 @@ void main() {
     eyeRay(px, origin, dir);
     scene = environment(origin, dir, 0.0, 0.0);
   }
-  const vec3 color = covered ? shade(px, g, scene, open) : scene;
+  vec3 color = covered ? shade(px, g, scene, open) : scene;
+  if (uEnvironment != 0 && uGlass > 0.0) {  // the tank's walls in front of what this pixel sees
+    vec3 origin, dir;
+    eyeRay(px, origin, dir);
+    const float depth = covered ? g.a : open ? 1e30 : viewDepth(sceneDepth);
+    color = throughTank(color, origin, dir, uOrtho != 0 ? depth : depth * length(viewPosition(px, 1.0)));
+  }
   imageStore(uTarget, px, vec4(color, 1.0));
 }

@@ -3,9 +3,12 @@
 // key light) over a floor of square tiles at the bottom of the domain box, reaching past the box
 // and fading into the horizon far away. Analytic, per ray: nothing is drawn or stored, so the
 // water can look at it along any ray (the eye's, refracted through the surface, reflected).
-// Without uEnvironment the surroundings are the flat background and the seed's sky.
+// Without uEnvironment the surroundings are the flat background and the seed's sky. The box's
+// four side walls are glass (throughTank), open at the top, on the floor.
 #ifndef RENDER_BALLS_ENVIRONMENT_GLSL
 #define RENDER_BALLS_ENVIRONMENT_GLSL
+
+#include "render/balls/water_optics.glsl"
 
 uniform int uEnvironment;      // 0: the flat background (the seed's look)
 uniform vec3 uSkyColor;        // linear RGB at the zenith
@@ -15,6 +18,7 @@ uniform vec3 uFloorMin;        // the box's bottom corner in its frame, m (the f
 uniform vec3 uFloorMax;        // the opposite corner, m
 uniform float uTileSize;       // floor tiles' edge, m
 uniform float uPixelSpread;    // perspective: rad per pixel; orthographic: m per pixel
+uniform float uGlass;          // the tank's walls' reflectance at normal incidence (0: no glass)
 
 const vec3 kSunColor = vec3(1.0, 0.94, 0.84);
 const vec3 kTile = vec3(0.78, 0.80, 0.79), kGrout = vec3(0.30, 0.32, 0.33);
@@ -56,6 +60,38 @@ vec3 environment(vec3 origin, vec3 d, float travelled, float blur) {
   const float size = length(uFloorMax.xy - uFloorMin.xy);
   const float fade = smoothstep(1.5 * size, 8.0 * size, length(hit - centre));
   return mix(lit, skyColour(normalize(vec3(d.xy, 0.0) + vec3(0.0, 0.0, 1e-4))), fade);
+}
+
+// `colour`, seen from `origin` (world) along d (unit) at `distance` m, behind the tank's glass:
+// each side wall the ray crosses before it reflects the sky by Schlick's Fresnel and passes the
+// rest, the farthest first.
+vec3 throughTank(vec3 colour, vec3 origin, vec3 d, float distance) {
+  const vec3 o = (uBoxFromWorld * vec4(origin, 1.0)).xyz, b = mat3(uBoxFromWorld) * d;
+  const mat3 toWorld = transpose(mat3(uBoxFromWorld));
+  vec4 hits[4];  // xyz: the wall's normal (box frame), w: the distance to it
+  int count = 0;
+  for (int axis = 0; axis < 2; ++axis)
+    for (int side = 0; side < 2; ++side) {
+      if (b[axis] == 0.0) continue;
+      const float plane = side == 0 ? uFloorMin[axis] : uFloorMax[axis];
+      const float t = (plane - o[axis]) / b[axis];
+      if (!(t > 0.0 && t < distance)) continue;
+      const vec3 hit = o + t * b;
+      const int other = 1 - axis;
+      if (hit[other] < uFloorMin[other] || hit[other] > uFloorMax[other] || hit.z < uFloorMin.z ||
+          hit.z > uFloorMax.z)
+        continue;
+      vec3 n = vec3(0.0);
+      n[axis] = side == 0 ? -1.0 : 1.0;
+      hits[count++] = vec4(n, t);
+    }
+  for (int k = count - 1; k >= 0; --k) {  // a ray crosses two side walls at most
+    const int at = count == 2 && hits[0].w > hits[1].w ? 1 - k : k;
+    const vec3 n = toWorld * hits[at].xyz;
+    const float fresnel = schlick(uGlass, abs(dot(d, n)));
+    colour = mix(colour, skyColour(reflect(d, n)), fresnel);
+  }
+  return colour;
 }
 
 #endif
