@@ -38,14 +38,14 @@ if [ -f "$driver" ]; then
 fi
 cd build-asan
 # The step tests of each model (tests/sim/<model>/<model>_step_test.cpp, tests/sim/swarm/swarm_test.cpp)
-# and BallsView's debug views (tests/render/balls_debug_views_test.cpp), by name: their suites hold
-# the model's slower tests too.
+# and BallsView's debug views (tests/render/balls_debug_views_test.cpp) and the water's looks
+# (tests/render/water_look_test.cpp), by name: their suites hold the model's slower tests too.
 steps='BallsTest\.(GpuStepEquals|AccelerationsAndOrder|NothingIsLost|PistonPushes|SpinningObstacle|TooManyBalls|TapEmits|ObstacleEdited|CountingInTheCollide)'
 steps+='|FluidTest\.(OneSolverIteration|IterationsViscosity|LoadsOnTheWalls)|LifeTest\.(BinnedForces|FrictionAlone|PushBrush|VerletIsSecondOrder)'
 steps+='|RipplesTest\.(GpuMatchesCpu|TotalHeightIsConserved|CourantAboveTheLimit|MovingSpherePushes)'
 steps+='|SwarmTest\.(AnimatedPreset|BounceKeeps|Fp16StorageErrorAgainstFp32|TooLargeRequests|ResetScatters)'
 probes='Probes\.|^Loads\.|RigidBody\.|HeaveReference\.|LoadsTest\.(TheBalls|ForceProbesRead|ProbesOfAnObstacleAdded)|BoundaryLoadsTest\.|ProbesTest\.(GaugesEqual|TheBodyProbe|AGaugeReads|PressuresEqual)|Validate\.(SceneProbes|ProbesTheScene|APressureProbe)|BallsLoads\.OneSteps|BallsLoads\.Measuring'
-debugViews='BallsViewTest\.(GridCellsCompaction|GridCellsOverlay|ScreenNormalsFace)'
+debugViews='BallsViewTest\.(GridCellsCompaction|GridCellsOverlay|ScreenNormalsFace)|WaterLookTest\.'
 selection=(-R "Grid|Determinism|DomainEdges|ParticleMemory|GpuLimits|BadInput|Checkpoint|InputLimits|BadDrop|Hostile|Fuzz|SoakJudge|SoakCli|Json|Obj|Png|ParamJson|SceneFile|LifeRules|$steps|SwarmStages|Export|Video|Surface|Resolution|FramePacer|$probes|$debugViews|KeyBindings|Indicators")
 [ $# -gt 0 ] && selection=("$@")
 ctest --output-on-failure --no-tests=error -j "$(nproc)" -E '^(Layers|Build)\.' -LE soak "${selection[@]}"
