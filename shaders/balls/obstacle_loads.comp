@@ -14,7 +14,6 @@ layout(local_size_x = BALLS_GROUP_SIZE) in;
 layout(std430, binding = BALLS_POS_IN) readonly buffer PosIn { vec4 posIn[]; };
 layout(std430, binding = BALLS_VEL_IN) readonly buffer VelIn { vec4 velIn[]; };
 layout(std430, binding = BALLS_CELL_START) readonly buffer CellStart { uint cellStart[]; };
-layout(std430, binding = BALLS_OBSTACLE_PLACED) readonly buffer Placed { vec4 placed[]; };  // world, w = obstacle
 
 uniform float uRadius;      // m
 uniform uint uSourceFirst;  // the first ball of the inputs' window
@@ -22,21 +21,20 @@ uniform uint uFirst;        // the balls this dispatch counts: [uFirst, uCount)
 uniform uint uCount;
 
 #include "balls/contact.glsl"
-#include "balls/obstacle_poses.glsl"
+#define PLACED_BINDING BALLS_OBSTACLE_PLACED
 #define SHARES_BINDING BALLS_SHARES
 #define MOMENTS_BINDING BALLS_MOMENTS
 #include "water/obstacle_loads.glsl"
 
 void main() {
-  const uint b = globalIndex();
-  if (b >= uObstacleParticles) return;
-  const vec4 q = placed[b];
-  const uint k = uint(q.w);
-  const vec3 velocity = obstacleVelocity(k, q.xyz), centre = poseCentre[k].xyz;
+  uint b, k;
+  vec3 at;
+  if (!obstacleParticle(b, at, k)) return;
+  const vec3 velocity = obstacleVelocity(k, at), centre = poseCentre[k].xyz;
   const float reach = 2.0 * uRadius;
   vec3 share, moment;
   startShares(b, share, moment);
-  const ivec3 c = cellCoord(q.xyz);
+  const ivec3 c = cellCoord(at);
   const int x0 = max(c.x - 1, 0), x1 = min(c.x + 1, int(uGridDims.x) - 1);
   for (int dz = -1; dz <= 1; ++dz)
     for (int dy = -1; dy <= 1; ++dy) {
@@ -45,13 +43,13 @@ void main() {
       const uint first = cellIndex(row);
       const uint end = min(cellStart[first + uint(x1 - x0) + 1u], uCount);
       for (uint i = max(cellStart[first], uFirst); i < end; ++i) {
-        const vec3 p = posIn[i - uSourceFirst].xyz, d = p - q.xyz;
+        const vec3 p = posIn[i - uSourceFirst].xyz, d = p - at;
         const float dist2 = dot(d, d);
         if (dist2 >= reach * reach || dist2 == 0.0) continue;
         const float dist = sqrt(dist2);
         const vec3 a = contactAccel(d / dist, reach - dist, velIn[i - uSourceFirst].xyz - velocity, 1.0, 1.0);
         share += a;
-        moment += cross(0.5 * (p + q.xyz) - centre, a);
+        moment += cross(0.5 * (p + at) - centre, a);
       }
     }
   storeShares(b, share, moment);

@@ -17,7 +17,6 @@ layout(local_size_x = FLUID_GROUP_SIZE) in;
 layout(std430, binding = FLUID_PRED) readonly buffer Pred { vec4 pred[]; };  // p, this iteration's input
 layout(std430, binding = FLUID_LAMBDA) readonly buffer Lambda { vec2 lambda[]; };
 layout(std430, binding = FLUID_UNPUSHED) readonly buffer Unpushed { vec4 unpushed[]; };  // q
-layout(std430, binding = FLUID_OBSTACLE_PLACED) readonly buffer Placed { vec4 placed[]; };  // world, w = obstacle
 #ifdef OBSTACLE_VOLUMES
 layout(std430, binding = FLUID_OBSTACLE_VOLUMES) readonly buffer Volumes { vec4 volumes[]; };  // x = m³
 #endif
@@ -50,17 +49,15 @@ void onFluid(uint j, vec3 r, float r2) {  // r = b − p_j
 
 #include "fluid/neighbours.glsl"
 #include "balls/bindings.glsl"
-#include "balls/obstacle_poses.glsl"
+#define PLACED_BINDING FLUID_OBSTACLE_PLACED
 #define SHARES_BINDING FLUID_SHARES
 #define MOMENTS_BINDING FLUID_MOMENTS
 #include "water/obstacle_loads.glsl"
 
 void main() {
-  const uint b = globalIndex();
-  if (b >= uObstacleParticles) return;
-  const vec4 q = placed[b];
-  gB = q.xyz;
-  gCentre = poseCentre[uint(q.w)].xyz;
+  uint b, k;
+  if (!obstacleParticle(b, gB, k)) return;
+  gCentre = poseCentre[k].xyz;
 #ifdef OBSTACLE_VOLUMES
   gVolume = volumes[b].x;
 #else

@@ -17,7 +17,7 @@ uniform uint uFirstChunk;  // the first chunk bound
 uniform uint uChunkGroups; // the measuring kernel's work groups per chunk
 uniform uint uSumsFirst;   // the walls' first vec4 in the sums
 
-shared vec4 sLow[LOADS_SUM_GROUP_SIZE], sHigh[LOADS_SUM_GROUP_SIZE];
+#include "water/pair_sum.glsl"
 
 void main() {
   const uint chunk = gl_WorkGroupID.x, t = gl_LocalInvocationIndex;
@@ -27,19 +27,10 @@ void main() {
     low += loads[2u * g];
     high += loads[2u * g + 1u];
   }
-  sLow[t] = low;
-  sHigh[t] = high;
-  barrier();
-  for (uint stride = uint(LOADS_SUM_GROUP_SIZE) / 2u; stride > 0u; stride /= 2u) {
-    if (t < stride) {
-      sLow[t] += sLow[t + stride];
-      sHigh[t] += sHigh[t + stride];
-    }
-    barrier();
-  }
+  sumPairs(low, high);
   if (t == 0u) {
     const uint at = uSumsFirst + 2u * (uFirstChunk + chunk);
-    sums[at] = sLow[0];
-    sums[at + 1u] = sHigh[0];
+    sums[at] = sPairA[0];
+    sums[at + 1u] = sPairB[0];
   }
 }

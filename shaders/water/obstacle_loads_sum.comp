@@ -15,30 +15,20 @@ layout(std430, binding = LOADS_SUMS) writeonly buffer Sums { vec4 sums[]; };
 #include "balls/obstacle_poses.glsl"
 
 uniform uint uObstacles;
-
-shared vec3 sShare[LOADS_SUM_GROUP_SIZE], sMoment[LOADS_SUM_GROUP_SIZE];
+#include "water/pair_sum.glsl"
 
 void main() {
   const uint k = gl_WorkGroupID.x, t = gl_LocalInvocationIndex;
   if (k >= uObstacles) return;  // the whole group
   const uint first = poseParticles[k].x, end = first + poseParticles[k].y;
-  vec3 share = vec3(0.0), moment = vec3(0.0);
+  vec4 share = vec4(0.0), moment = vec4(0.0);
   for (uint b = first + t; b < end; b += uint(LOADS_SUM_GROUP_SIZE)) {
-    share += shares[b].xyz;
-    moment += moments[b].xyz;
+    share += shares[b];
+    moment += moments[b];
   }
-  sShare[t] = share;
-  sMoment[t] = moment;
-  barrier();
-  for (uint stride = uint(LOADS_SUM_GROUP_SIZE) / 2u; stride > 0u; stride /= 2u) {
-    if (t < stride) {
-      sShare[t] += sShare[t + stride];
-      sMoment[t] += sMoment[t + stride];
-    }
-    barrier();
-  }
+  sumPairs(share, moment);
   if (t == 0u) {
-    sums[2u * k] = vec4(sShare[0], 0.0);
-    sums[2u * k + 1u] = vec4(sMoment[0], 0.0);
+    sums[2u * k] = sPairA[0];
+    sums[2u * k + 1u] = sPairB[0];
   }
 }

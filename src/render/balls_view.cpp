@@ -70,39 +70,40 @@ void visit(ParamVisitor& v, BallsViewParams& p) {
          p.obstacleBalls);
 }
 
+namespace {
+// The fields a look decides, per look (WaterLook's order).
+struct LookFields {
+  bool environment;
+  float refractionIndex, glass;
+  glm::vec3 skyColor, waterColor;
+  float absorption, scattering;
+  glm::vec3 background;
+  float specular;
+};
+constexpr BallsViewParams kSeed;
+constexpr std::array<LookFields, 3> kLooks = {{
+    {kSeed.environment, kSeed.refractionIndex, kSeed.glass, kSeed.skyColor, kSeed.waterColor, kSeed.absorption,
+     kSeed.scattering, kSeed.background, kSeed.specular},
+    // clear: thin water nearly clear, a metre of it pale blue-green; glass's F0 0.04
+    {true, 1.33f, 0.04f, {0.30f, 0.50f, 0.85f}, {0.62f, 0.86f, 0.92f}, 4.0f, 0.25f, {0.80f, 0.85f, 0.90f}, 1.0f},
+    // ocean: a few decimetres already deep teal
+    {true, 1.33f, 0.04f, {0.22f, 0.40f, 0.72f}, {0.10f, 0.45f, 0.50f}, 12.0f, 0.6f, {0.70f, 0.76f, 0.82f}, 0.8f},
+}};
+}  // namespace
+
 void applyLook(BallsViewParams& p, WaterLook look) {
-  const BallsViewParams seed;
+  const LookFields& f = kLooks[std::size_t(look)];
   p.look = look;
-  p.environment = look != WaterLook::Seed;
-  p.refractionIndex = look == WaterLook::Seed ? seed.refractionIndex : 1.33f;
-  p.fresnelF0 = seed.fresnelF0;                            // water's 0.02 in every look
-  p.glass = look == WaterLook::Seed ? seed.glass : 0.04f;  // glass's
-  switch (look) {
-    case WaterLook::Seed:
-      p.skyColor = seed.skyColor;
-      p.waterColor = seed.waterColor;
-      p.absorption = seed.absorption;
-      p.scattering = seed.scattering;
-      p.background = seed.background;
-      p.specular = seed.specular;
-      break;
-    case WaterLook::Clear:  // thin water nearly clear, a metre of it pale blue-green
-      p.skyColor = {0.30f, 0.50f, 0.85f};
-      p.waterColor = {0.62f, 0.86f, 0.92f};
-      p.absorption = 4.0f;
-      p.scattering = 0.25f;
-      p.background = {0.80f, 0.85f, 0.90f};
-      p.specular = 1.0f;
-      break;
-    case WaterLook::Ocean:  // a few decimetres already deep teal
-      p.skyColor = {0.22f, 0.40f, 0.72f};
-      p.waterColor = {0.10f, 0.45f, 0.50f};
-      p.absorption = 12.0f;
-      p.scattering = 0.6f;
-      p.background = {0.70f, 0.76f, 0.82f};
-      p.specular = 0.8f;
-      break;
-  }
+  p.environment = f.environment;
+  p.refractionIndex = f.refractionIndex;
+  p.glass = f.glass;
+  p.fresnelF0 = kSeed.fresnelF0;  // water's 0.02 in every look
+  p.skyColor = f.skyColor;
+  p.waterColor = f.waterColor;
+  p.absorption = f.absorption;
+  p.scattering = f.scattering;
+  p.background = f.background;
+  p.specular = f.specular;
 }
 
 BallsCamera BallsCamera::perspective(glm::mat4 view, float fovYRadians, int width, int height, float near, float far) {

@@ -48,6 +48,30 @@ struct OpticsUniforms {
   static constexpr auto fields() { return std::tuple{gl::field("uCount", &OpticsUniforms::count)}; }
 };
 
+// The clear look with only the surface's optics left: no scattering, highlight or foam, the sun
+// at the horizon (the floor lit evenly), `tiles` across the box.
+BallsViewParams opticsOnly(float tiles) {
+  BallsViewParams look;
+  applyLook(look, WaterLook::Clear);
+  look.mode = BallsMode::Water;
+  look.scattering = 0.0f;
+  look.specular = 0.0f;
+  look.foam = false;
+  look.floorTiles = tiles;
+  look.lightDirection = {1.0f, 0.0f, 0.0f};
+  return look;
+}
+
+// A G-buffer of size x size whose foam and depth are those of one big ball in front of the
+// camera at `centre` everywhere: the compose then shades whatever surface texture it is given.
+void coverWithABall(BallsGBuffer& gbuffer, int size, const BallsCamera& camera, glm::vec3 centre) {
+  gbuffer.resize(size, size);
+  const glm::vec4 ball(centre, 1.0f);
+  const gl::Buffer balls(sizeof ball, &ball);
+  gl::GpuProfiler profiler;
+  gbuffer.draw({.positions = &balls, .count = 1, .radius = 0.4f}, camera, {}, true, BallsRaster::Compute, profiler);
+}
+
 }  // namespace
 
 TEST_F(WaterLookTest, TheOpticsAreBeerLambertSchlickAndSnell) {
@@ -102,26 +126,14 @@ TEST_F(WaterLookTest, TheOpticsAreBeerLambertSchlickAndSnell) {
 // the picture is F0 times the sky plus (1 − F0) T(d) times the floor seen in the right half.
 TEST_F(WaterLookTest, ASlabOfKnownThicknessTransmitsTheFloorByBeerLambert) {
   constexpr int kSize = 32;
-  BallsViewParams look;
-  applyLook(look, WaterLook::Clear);
-  look.mode = BallsMode::Water;
-  look.scattering = 0.0f;
-  look.specular = 0.0f;
-  look.foam = false;
-  look.floorTiles = 1.0f;
-  look.lightDirection = {1.0f, 0.0f, 0.0f};
+  BallsViewParams look = opticsOnly(1.0f);
   look.background = look.skyColor;
   const float height = 2.0f;  // the eye above the floor, m
   const BallsCamera camera = BallsCamera::orthographic(
       glm::lookAt(glm::vec3(0.5f, 0.5f, height), glm::vec3(0.5f, 0.5f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f)), 0.05f,
       kSize, kSize, 0.1f, 10.0f);
-  // The G-buffer's foam and depth from one big ball in front of everything.
   BallsGBuffer gbuffer(shaders());
-  gbuffer.resize(kSize, kSize);
-  const glm::vec4 ball(0.5f, 0.5f, 1.5f, 1.0f);
-  const gl::Buffer balls(sizeof ball, &ball);
-  gl::GpuProfiler profiler;
-  gbuffer.draw({.positions = &balls, .count = 1, .radius = 0.4f}, camera, {}, true, BallsRaster::Compute, profiler);
+  coverWithABall(gbuffer, kSize, camera, {0.5f, 0.5f, 1.5f});
   BallsCompose compose(shaders());
   const ComposeScene scene{.boxMin = glm::vec3(0.0f), .boxMax = glm::vec3(1.0f)};
   for (float d : {0.0f, 0.05f, 0.2f, 0.6f}) {
@@ -175,24 +187,13 @@ TEST_F(WaterLookTest, PresetsSetTheirFieldsAndKeysAfterThemOverrideThem) {
 TEST_F(WaterLookTest, TheFloorThroughATiltedSurfaceIsWhereTheRefractedRaysLand) {
   constexpr int kSize = 64;
   constexpr double kTilt = 0.35, kHeight = 0.2, kEye = 2.0;  // rad; the surface's height over the floor at x = 1
-  BallsViewParams look;
-  applyLook(look, WaterLook::Clear);
-  look.mode = BallsMode::Water;
-  look.scattering = 0.0f;
-  look.specular = 0.0f;
-  look.foam = false;
-  look.floorTiles = 4.0f;  // tiles of 0.5 m in a 2 m box: a joint at x = 1
-  look.lightDirection = {1.0f, 0.0f, 0.0f};
-  const double half = 0.08;  // the view's half width, m
+  const BallsViewParams look = opticsOnly(4.0f);             // tiles of 0.5 m in a 2 m box: a joint at x = 1
+  const double half = 0.08;                                  // the view's half width, m
   const BallsCamera camera = BallsCamera::orthographic(
       glm::lookAt(glm::vec3(1.0f, 0.25f, float(kEye)), glm::vec3(1.0f, 0.25f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f)),
       float(half), kSize, kSize, 0.1f, 10.0f);
   BallsGBuffer gbuffer(shaders());
-  gbuffer.resize(kSize, kSize);
-  const glm::vec4 ball(1.0f, 0.25f, 1.5f, 1.0f);
-  const gl::Buffer balls(sizeof ball, &ball);
-  gl::GpuProfiler profiler;
-  gbuffer.draw({.positions = &balls, .count = 1, .radius = 0.4f}, camera, {}, true, BallsRaster::Compute, profiler);
+  coverWithABall(gbuffer, kSize, camera, {1.0f, 0.25f, 1.5f});
   const auto worldX = [&](int column) { return 1.0 + (2.0 * (column + 0.5) / kSize - 1.0) * half; };
   const auto surfaceZ = [&](double x) { return kHeight + (x - 1.0) * std::tan(kTilt); };
   // Water in the lower half of the rows: the view depth of a plane rising towards +x.
