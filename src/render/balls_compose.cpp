@@ -42,7 +42,7 @@ struct ComposeUniforms {  // see render/balls/compose.comp
   float thicknessScale = 0.0f;
   glm::vec3 lightView{0.0f};
   float depthStep = 0.0f;
-  float ior = 1.0f, scattering = 1.0f;
+  float ior = 1.0f, scattering = 1.0f, spray = 0.0f, radius = 0.0f;
   GLint environment = 0;
   glm::vec3 skyColor{0.0f}, sunWorld{0.0f, 0.0f, 1.0f};
   glm::mat4 boxFromWorld{1.0f};
@@ -77,6 +77,8 @@ struct ComposeUniforms {  // see render/balls/compose.comp
                       gl::field("uDepthStep", &U::depthStep),
                       gl::field("uIor", &U::ior),
                       gl::field("uScattering", &U::scattering),
+                      gl::field("uSpray", &U::spray),
+                      gl::field("uRadius", &U::radius),
                       gl::field("uEnvironment", &U::environment),
                       gl::field("uSkyColor", &U::skyColor),
                       gl::field("uSunWorld", &U::sunWorld),
@@ -154,6 +156,8 @@ void BallsCompose::draw(const gl::Texture2D* surface, const BallsGBuffer& gbuffe
                     .depthStep = look.depthThreshold * radius,
                     .ior = look.refractionIndex,
                     .scattering = look.scattering,
+                    .spray = look.spray,
+                    .radius = radius,
                     .environment = look.environment ? 1 : 0,
                     .skyColor = look.skyColor,
                     .sunWorld = glm::length(look.lightDirection) > 0.0f ? glm::normalize(look.lightDirection)

@@ -58,6 +58,9 @@ void visit(ParamVisitor& v, BallsViewParams& p) {
           "water: ball radii of depth step between neighbouring pixels not blurred across"},
          p.depthThreshold, 0.1f, 50.0f);
   v.flag({"foam", "Foam", "white water from each ball's foam"}, p.foam);
+  v.real({"spray", "Spray",
+          "water: how white a lone ball (a droplet: no more water along the ray than itself) is drawn (0: as water)"},
+         p.spray, 0.0f, 1.0f);
   v.real({"fresnel_f0", "Fresnel F0", "water: reflectance at normal incidence"}, p.fresnelF0, 0.0f, 1.0f);
   v.real({"specular", "Specular", "key-light highlight strength"}, p.specular, 0.0f, 4.0f);
   v.vector({"light_direction", "Light direction", "towards the key light, world axes (z up)"}, p.lightDirection, -1.0f,
@@ -78,16 +81,16 @@ struct LookFields {
   glm::vec3 skyColor, waterColor;
   float absorption, scattering;
   glm::vec3 background;
-  float specular;
+  float specular, spray;
 };
 constexpr BallsViewParams kSeed;
 constexpr std::array<LookFields, 3> kLooks = {{
     {kSeed.environment, kSeed.refractionIndex, kSeed.glass, kSeed.skyColor, kSeed.waterColor, kSeed.absorption,
-     kSeed.scattering, kSeed.background, kSeed.specular},
+     kSeed.scattering, kSeed.background, kSeed.specular, kSeed.spray},
     // clear: thin water nearly clear, a metre of it pale blue-green; glass's F0 0.04
-    {true, 1.33f, 0.04f, {0.30f, 0.50f, 0.85f}, {0.62f, 0.86f, 0.92f}, 4.0f, 0.25f, {0.80f, 0.85f, 0.90f}, 1.0f},
+    {true, 1.33f, 0.04f, {0.30f, 0.50f, 0.85f}, {0.62f, 0.86f, 0.92f}, 4.0f, 0.25f, {0.80f, 0.85f, 0.90f}, 1.0f, 1.0f},
     // ocean: a few decimetres already deep teal
-    {true, 1.33f, 0.04f, {0.22f, 0.40f, 0.72f}, {0.10f, 0.45f, 0.50f}, 12.0f, 0.6f, {0.70f, 0.76f, 0.82f}, 0.8f},
+    {true, 1.33f, 0.04f, {0.22f, 0.40f, 0.72f}, {0.10f, 0.45f, 0.50f}, 12.0f, 0.6f, {0.70f, 0.76f, 0.82f}, 0.8f, 1.0f},
 }};
 }  // namespace
 
@@ -104,6 +107,7 @@ void applyLook(BallsViewParams& p, WaterLook look) {
   p.scattering = f.scattering;
   p.background = f.background;
   p.specular = f.specular;
+  p.spray = f.spray;
 }
 
 BallsCamera BallsCamera::perspective(glm::mat4 view, float fovYRadians, int width, int height, float near, float far) {

@@ -56,6 +56,7 @@ struct BallsViewParams {
   glm::vec3 waterColor{0.18f, 0.45f, 0.91f};        // linear RGB: balls' albedo, water's tint (water-webgpu)
   float absorption = 20.0f;                         // 1/m: thickness 1/absorption transmits waterColor
   float scattering = 1.0f;                          // water: how much of the absorbed light it sends back, tinted
+  float spray = 0.0f;                               // water: how white a lone ball (a droplet) is drawn
   float blurRadius = 4.0f;                          // blur kernel radius, in on-screen ball radii
   int blurIterations = 2;                           // times the blur's row and column passes run
   float depthThreshold = 12.0f;                     // ball radii: no blur across larger depth steps between pixels

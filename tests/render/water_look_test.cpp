@@ -270,3 +270,50 @@ TEST_F(WaterLookTest, TheTanksGlassWallsReflectTheSkyByFresnel) {
     EXPECT_NEAR(glazed[k], floor[k] + fresnel * (look.background[k] - floor[k]), 1.5 / 255.0) << "channel " << k;
   EXPECT_GT(glm::length(glazed - floor), 0.05) << "the glass shows";
 }
+
+// Spray: a lone ball (a droplet) is drawn white as foam; a ball in a sheet of water one ball
+// thick is not, though the water along the ray is no thicker there (its neighbours on screen
+// tell). The eye looks down the view's −z at a sheet of 6 × 6 balls and, beside it, one alone.
+TEST_F(WaterLookTest, ALoneBallIsSprayAndASheetIsWater) {
+  constexpr int kWidth = 160, kHeight = 90;
+  constexpr float kRadius = 0.01f;
+  std::vector<glm::vec4> positions;
+  for (int y = 0; y < 6; ++y)
+    for (int x = 0; x < 6; ++x)
+      positions.emplace_back(-0.15f + 0.02f * float(x), -0.05f + 0.02f * float(y), -1.0f, 1.0f);
+  const glm::vec3 lone(0.15f, 0.0f, -1.0f), sheet(-0.09f, 0.01f, -1.0f);  // view space (the view is the identity)
+  positions.emplace_back(lone, 1.0f);
+  const gl::Buffer buffer(positions.size() * sizeof(glm::vec4), positions.data());
+  BallsScene scene;
+  scene.water = {&buffer, nullptr, positions.size(), kRadius, glm::mat4(1.0f)};
+  scene.boxMin = glm::vec3(-2.0f, -2.0f, -3.0f);
+  scene.boxMax = glm::vec3(2.0f, 2.0f, 2.0f);
+  const BallsCamera camera =
+      BallsCamera::perspective(glm::mat4(1.0f), glm::radians(30.0f), kWidth, kHeight, 0.5f, 10.0f);
+  const auto colours = [&](float spray) {
+    BallsView view(shaders());
+    applyLook(view.params(), WaterLook::Ocean);
+    view.params().mode = BallsMode::Water;
+    view.params().showBox = false;
+    view.params().spray = spray;
+    RenderTarget target(kWidth, kHeight);
+    gl::GpuProfiler profiler;
+    view.render(scene, camera, target, profiler);
+    const std::vector<std::uint8_t> rgba = target.readRgba8();  // top row first
+    const auto at = [&](glm::vec3 p) {
+      const glm::vec4 clip = camera.proj * glm::vec4(p, 1.0f);
+      const glm::ivec2 px = glm::ivec2((0.5f * glm::vec2(clip) / clip.w + 0.5f) * glm::vec2(kWidth, kHeight));
+      const std::uint8_t* c = &rgba[std::size_t(((kHeight - 1 - px.y) * kWidth + px.x) * 4)];
+      return glm::vec3(c[0], c[1], c[2]) / 255.0f;
+    };
+    return std::pair{at(lone), at(sheet)};
+  };
+  const auto [loneWater, sheetWater] = colours(0.0f);
+  const auto [loneSpray, sheetSpray] = colours(1.0f);
+  EXPECT_EQ(sheetSpray, sheetWater) << "the sheet stays water";
+  EXPECT_GT(loneSpray.r, loneWater.r + 0.2f) << "the lone ball turns white";
+  EXPECT_GT(std::min({loneSpray.r, loneSpray.g, loneSpray.b}), 0.55f);
+  EXPECT_LT(std::max({loneSpray.r, loneSpray.g, loneSpray.b}) - std::min({loneSpray.r, loneSpray.g, loneSpray.b}),
+            0.15f)
+      << "white, not the water's colour";
+}

@@ -13,7 +13,7 @@
 // the scene's: nothing is drawn after the compose.
 //   balls: diffuse + ambient (+ a small highlight), opaque
 //   water: normals from the (blurred) depth, Schlick Fresnel toward the sky, specular,
-//          absorption tint, foam; with uEnvironment (environment.glsl) the surroundings are a sky
+//          absorption tint, foam (and lone balls as spray); with uEnvironment (environment.glsl) the surroundings are a sky
 //          and a tiled floor, seen through the water along the ray refracted at its surface
 //          (Snell, index uIor) and reflected in it
 #include "render/balls/bindings.glsl"
@@ -49,6 +49,8 @@ uniform vec3 uLightView;    // towards the key light, view space
 uniform float uDepthStep;   // m: a larger depth difference to a neighbour is a silhouette, not a slope
 uniform float uIor;         // water's index of refraction (1: straight through)
 uniform float uScattering;  // the share of the absorbed light sent back, in the water's colour
+uniform float uSpray;       // water: how white a lone ball (a droplet) is drawn, as foam (0: as water)
+uniform float uRadius;      // the balls', m
 #include "render/balls/environment.glsl"
 #include "render/balls/water_optics.glsl"
 
@@ -111,6 +113,22 @@ void eyeRay(ivec2 px, out vec3 origin, out vec3 dir) {
   dir = normalize(mat3(uInvView) * (uOrtho != 0 ? vec3(0.0, 0.0, -1.0) : p));
 }
 
+// 1 where the ball at px is a droplet, alone: no more water along the ray than its own chord,
+// and nothing at its depth two of its radii away on screen, left, right, above or below.
+float droplet(ivec2 px, vec4 g) {
+  const float chord = 2.0 * uRadius * sqrt(max(1.0 - dot(g.rg, g.rg), 0.04));
+  if (g.b > 1.3 * chord) return 0.0;
+  const float reach = 2.0 * uRadius / (uInvFocal.y * (uOrtho != 0 ? 1.0 : g.a)) * 0.5 * float(uSize.y);  // px
+  const ivec2 last = uSize - 1;
+  for (int k = 0; k < 4; ++k) {
+    const ivec2 step = ivec2(k == 0 ? 1 : k == 1 ? -1 : 0, k == 2 ? 1 : k == 3 ? -1 : 0);
+    const ivec2 q = clamp(px + ivec2(round(reach * vec2(step))), ivec2(0), last);
+    const float d = texelFetch(uGBuffer, q, 0).a;
+    if (d > 0.0 && abs(d - g.a) < 2.0 * uRadius) return 0.0;
+  }
+  return 1.0;
+}
+
 // The ball's colour over `scene` at px (g: its G-buffer texel); `open`: nothing opaque behind it
 // (the scene is the surroundings).
 vec3 shade(ivec2 px, vec4 g, vec3 scene, bool open) {
@@ -131,7 +149,8 @@ vec3 shade(ivec2 px, vec4 g, vec3 scene, bool open) {
   if (uDebug == 3) return vec3(g.b / uThicknessScale);
   if (uDebug == 4) return vec3((g.a - uDepthRange.x) / (uDepthRange.y - uDepthRange.x));
 
-  const float foam = uFoamOn != 0 ? smoothstep(0.15, 0.6, texelFetch(uFoam, px, 0).r) : 0.0;
+  float foam = uFoamOn != 0 ? smoothstep(0.15, 0.6, texelFetch(uFoam, px, 0).r) : 0.0;
+  if (uMode == 1 && uSpray > 0.0) foam = max(foam, uSpray * droplet(px, g));
   const float diffuse = max(dot(n, uLightView), 0.0);
   const float highlight = pow(max(dot(reflect(-uLightView, n), v), 0.0), 60.0);
   if (uMode == 0) {
