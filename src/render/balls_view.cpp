@@ -1,5 +1,6 @@
 #include "render/balls_view.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 #include <glm/gtc/matrix_transform.hpp>
@@ -74,6 +75,8 @@ void visit(ParamVisitor& v, BallsViewParams& p) {
 }
 
 namespace {
+constexpr float kFloorAlbedo = 0.75f;  // the environment's tiles and grout, on average (environment.glsl)
+
 // The fields a look decides, per look (WaterLook's order).
 struct LookFields {
   bool environment;
@@ -256,6 +259,17 @@ WindowRect BallsView::drawScene(const BallsScene& scene, const BallsCamera& came
     program.use();
     program.set("uColor", m_params.obstacleColor);
     program.set("uLightView", camera.towardsLight(m_params.lightDirection));
+    // The environment's sky (its colour at the zenith, brightest channel 1) and floor (its tiles'
+    // mean albedo, lit as environment.glsl lights it) as ambient light.
+    const glm::vec3 sky =
+        m_params.skyColor / std::max({m_params.skyColor.r, m_params.skyColor.g, m_params.skyColor.b, 1e-3f});
+    const glm::vec3 sun = glm::length(m_params.lightDirection) > 0.0f ? glm::normalize(m_params.lightDirection)
+                                                                      : glm::vec3(0.0f, 0.0f, 1.0f);
+    const glm::vec3 up = glm::normalize(glm::mat3(camera.view * scene.boxModel) * glm::vec3(0.0f, 0.0f, 1.0f));
+    program.set("uSkyLit", m_params.environment ? 1 : 0);
+    program.set("uSkyLight", sky);
+    program.set("uGroundLight", glm::vec3(kFloorAlbedo * (0.4f + 0.6f * std::max(sun.z, 0.0f))));
+    program.set("uUpView", up);
   };
   if (scene.obstacle.count > 0) {
     gl::Program& balls = m_shaders.program({"render/balls/impostor.vert", "render/balls/impostor.frag"});

@@ -14,6 +14,7 @@
 #include "render/balls_compose.h"
 #include "render/balls_gbuffer.h"
 #include "render/balls_view.h"
+#include "render/obstacle_mesh.h"
 #include "scene/balls_stage.h"
 #include "scene/scene.h"
 #include "support/gl_test.h"
@@ -316,4 +317,40 @@ TEST_F(WaterLookTest, ALoneBallIsSprayAndASheetIsWater) {
   EXPECT_LT(std::max({loneSpray.r, loneSpray.g, loneSpray.b}) - std::min({loneSpray.r, loneSpray.g, loneSpray.b}),
             0.15f)
       << "white, not the water's colour";
+}
+
+// Obstacles are lit by the environment too: a face turned to the sky takes the sky's colour in its
+// ambient share, colour · 0.2 · (sky − 1) from the white ambient without the environment; here a
+// square facing the eye, with the box's up towards the eye as well.
+TEST_F(WaterLookTest, ObstaclesFacingTheSkyTakeItsColourInTheirAmbientLight) {
+  constexpr int kSize = 32;
+  std::vector<MeshVertex> square;
+  for (glm::vec2 c :
+       {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)})
+    square.push_back({glm::vec4(0.3f * c, 0.0f, 1.0f), glm::vec4(0.0f, 0.0f, 1.0f, 0.0f)});
+  const gl::Buffer vertices(square.size() * sizeof(MeshVertex), square.data());
+  BallsScene scene;
+  scene.obstacleMeshes = {{&vertices, square.size(), glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -2.0f))}};
+  scene.boxMin = glm::vec3(-5.0f, -5.0f, -10.0f);
+  scene.boxMax = glm::vec3(5.0f);
+  const BallsCamera camera = BallsCamera::perspective(glm::mat4(1.0f), glm::radians(30.0f), kSize, kSize, 0.5f, 10.0f);
+  const auto centre = [&](bool environment) {
+    BallsView view(shaders());
+    applyLook(view.params(), WaterLook::Clear);
+    view.params().environment = environment;
+    view.params().showBox = false;
+    RenderTarget target(kSize, kSize);
+    gl::GpuProfiler profiler;
+    view.render(scene, camera, target, profiler);
+    const std::vector<std::uint8_t> rgba = target.readRgba8();
+    const std::uint8_t* p = &rgba[std::size_t((kSize / 2 * kSize + kSize / 2) * 4)];
+    return glm::dvec3(p[0], p[1], p[2]) / 255.0;
+  };
+  const glm::dvec3 white = centre(false), sky = centre(true);
+  BallsViewParams look;
+  applyLook(look, WaterLook::Clear);
+  const glm::dvec3 skyLight = glm::dvec3(look.skyColor) / double(look.skyColor.b);  // blue is its brightest
+  for (int k = 0; k < 3; ++k)
+    EXPECT_NEAR(sky[k], white[k] + look.obstacleColor[k] * 0.2 * (skyLight[k] - 1.0), 1.5 / 255.0) << "channel " << k;
+  EXPECT_LT(sky.r, white.r - 0.04) << "bluer in the sky's light";
 }

@@ -19,5 +19,5 @@ void main() {
   const vec3 albedo = mix(uColor, vec3(1.0, 1.2, 1.4), clamp(vFoam, 0.0, 1.0));
   const float diffuse = max(dot(n, uLightView), 0.0);
   const float spec = pow(max(dot(reflect(-uLightView, n), vec3(0, 0, 1)), 0.0), 40.0);
-  fragColor = vec4(albedo * (0.35 + 0.65 * diffuse) + vec3(0.25 * spec), 1.0);
+  fragColor = vec4(albedo * (0.35 * ambientLight(n) + 0.65 * diffuse) + vec3(0.25 * spec), 1.0);
 }
