@@ -242,7 +242,6 @@ std::vector<double> Balls::pressures(const std::vector<glm::vec3>&) {
 void Balls::beginLoads() {
   const water::LoadsWanted want = water::loadsWanted(m_params.probes, m_coupling.any());
   m_loadsOn = want.any;
-  m_wallLoadsOn = want.walls;
   if (m_loadsOn) m_loads.begin(m_count, want.walls, m_obstacles);
 }
 
@@ -253,7 +252,7 @@ double Balls::mass() const {
 water::Loads Balls::loads() {
   if (!m_loadsValid) return water::Loads::unmeasured(m_obstacles.size());  // no step since reset, or none that measured
   water::Loads out = m_loads.read(-mass());
-  if (!m_wallLoadsOn || m_params.contact == Contact::CudaSample) out.unmeasuredWalls();
+  if (!m_loads.walls() || m_params.contact == Contact::CudaSample) out.unmeasuredWalls();
   return out;
 }
 

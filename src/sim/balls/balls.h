@@ -184,10 +184,10 @@ class Balls final : public sim::Model, public water::ParticleWater {
   double m_time = 0;
   bool m_trackOrder = false, m_accValid = false;
   std::vector<ReachWindow> m_windows;  // the last collide's
-  // A force probe or a body is listed: the step measures the loads (the walls' only for a probe on a wall);
-  // after it, m_loads holds its sums.
+  // A force probe or a body is listed: the step measures the loads (the walls' only for a probe on a wall:
+  // m_loads.walls()); after it, m_loads holds its sums.
   water::BoundaryLoads m_loads;
-  bool m_loadsOn = false, m_wallLoadsOn = false, m_loadsValid = false;
+  bool m_loadsOn = false, m_loadsValid = false;
   water::BodyCoupling m_coupling;  // the dynamic obstacles
   gl::Buffer m_reachBounds;        // uvec2 per window (balls/reach_windows.comp)
   std::size_t m_reachSize = 0;     // balls per window of the plan in m_reachBounds; 0: none planned

@@ -119,7 +119,7 @@ void Fluid::reset() {
   m_time = 0;
   m_steps = 0;
   m_densitiesValid = false;
-  m_loadsOn = m_wallLoadsOn = false;
+  m_loadsOn = false;
   grid::GridParams gp{
       .domainMin = w.domainMin, .domainMax = w.domainMax, .cellSize = cellSize(), .stable = w.deterministic};
   m_grid = std::make_unique<grid::UniformGrid>(m_shaders, gp, m_capacity);

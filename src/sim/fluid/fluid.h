@@ -157,9 +157,9 @@ class Fluid final : public sim::Model, public water::ParticleWater {
   DensityProbe m_probe;
   water::BoundaryLoads m_loads;
   // A force probe or a dynamic obstacle is listed: the step measures the loads, the walls' only
-  // for a probe on a wall (theirs cost the most: most work groups touch a wall); after it,
-  // m_loads holds its sums.
-  bool m_loadsOn = false, m_wallLoadsOn = false;
+  // for a probe on a wall (theirs cost the most: most work groups touch a wall; m_loads.walls());
+  // after it, m_loads holds its sums.
+  bool m_loadsOn = false;
   // The dynamic obstacles: moved after predict and the sort are queued, the step's loads on them
   // requested at its end (water/body_coupling.h).
   water::BodyCoupling m_coupling;

@@ -34,7 +34,6 @@ void Fluid::stepOnce(gl::GpuProfiler* profiler) {
   m_coupling.sync(m_params.obstacles);
   const water::LoadsWanted want = water::loadsWanted(m_params.probes, m_coupling.any());
   m_loadsOn = want.any;
-  m_wallLoadsOn = want.walls;
   if (m_loadsOn) m_loads.begin(m_count, want.walls, m_obstacles);
   // Neither predict nor the sort reads the obstacles: the GPU runs them while the bodies wait
   // for the last step's loads.

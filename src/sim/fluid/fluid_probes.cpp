@@ -61,7 +61,7 @@ water::Loads Fluid::loads() {
   // No step since reset, or none that measured.
   if (!m_loadsOn || !m_densitiesValid) return water::Loads::unmeasured(m_obstacles.size());
   water::Loads out = m_loads.read(loadScale());
-  if (!m_wallLoadsOn) out.unmeasuredWalls();
+  if (!m_loads.walls()) out.unmeasuredWalls();
   return out;
 }
 

@@ -27,7 +27,7 @@ struct ObstacleSumUniforms {  // water/obstacle_loads_sum.comp
   static constexpr auto fields() { return std::tuple{gl::field("uObstacles", &ObstacleSumUniforms::obstacles)}; }
 };
 
-constexpr std::size_t kPairBytes = 2 * sizeof(glm::vec4);  // a group's partials, a particle's shares, a sum
+constexpr std::size_t kPairBytes = 2 * sizeof(glm::vec4);  // a group's wall partials, an obstacle's or a chunk's sums
 constexpr std::size_t kChunkGroups = 1024;                 // work groups a chunk adds, where a block holds them
 constexpr std::size_t kAlignGroups = 8;  // 8 groups of 32 B: a multiple of 256 B, the largest offset alignment
 
@@ -67,7 +67,7 @@ void BoundaryLoads::begin(std::size_t count, bool walls, const Obstacles& obstac
   if (m_sums.size() < sums) m_sums.resize(sums);
   if (count == 0) {  // no kernel measures: nothing pushed
     if (walls) m_partials.fillZero();
-    if (obstacles.particles() > 0) {
+    if (m_obstacleParticles > 0) {
       m_shares.fillZero();
       m_moments.fillZero();
     }
@@ -75,9 +75,7 @@ void BoundaryLoads::begin(std::size_t count, bool walls, const Obstacles& obstac
   if (m_layout.obstacles > 0 && m_obstacleParticles == 0) m_sums.fillZero();  // no particles: no loads
 }
 
-void BoundaryLoads::bindWalls(GLuint binding) const {
-  m_partials.bindRange(GL_SHADER_STORAGE_BUFFER, binding, 0, m_groups * kPairBytes);
-}
+void BoundaryLoads::bindWalls(GLuint binding) const { bindWallGroups(binding, 0, m_groups); }
 
 void BoundaryLoads::bindWallGroups(GLuint binding, std::size_t firstGroup, std::size_t groups) const {
   m_partials.bindRange(GL_SHADER_STORAGE_BUFFER, binding, firstGroup * kPairBytes, groups * kPairBytes);

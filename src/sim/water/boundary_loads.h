@@ -38,7 +38,7 @@ class BoundaryLoads {
   // (LOADS_FIRST in water/loads.glsl) and store the obstacles' shares; with no water particles,
   // this does. Throws Error when the obstacles' shares pass one storage block.
   void begin(std::size_t count, bool walls, const Obstacles& obstacles);
-  bool walls() const { return m_walls; }
+  bool walls() const { return m_walls; }                      // the step that began last measures the walls
   bool obstacles() const { return m_obstacleParticles > 0; }  // any obstacle particle: shares to sum
   void bindWalls(GLuint binding) const;  // all the walls' partials (the particles fit one storage block)
   // The walls' partials of work groups [firstGroup, firstGroup + groups): a window of particles
