@@ -7,10 +7,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <string>
 #include <functional>
 #include <glm/gtc/matrix_transform.hpp>
 #include <random>
+#include <string>
 
 #include "render/balls_view.h"
 #include "support/gl_test.h"
@@ -78,7 +78,7 @@ Errors measure(gl::ShaderLibrary& shaders, const std::vector<glm::vec4>& balls, 
     const float d = g[std::size_t(y) * kSize + x].a;
     const glm::ivec2 a(x + axis.x, y + axis.y), b(x - axis.x, y - axis.y);
     const float da = g[std::size_t(a.y) * kSize + a.x].a, db = g[std::size_t(b.y) * kSize + b.x].a;
-    const bool okA = da > 0 && std::abs(da - d) < step, okB = db > 0 && std::abs(db - d) < step;
+    const bool okA = da > 0 && std::abs(da - d)<step, okB = db> 0 && std::abs(db - d) < step;
     if (!okA && !okB) return false;
     const bool useA = okA && (!okB || std::abs(da - d) <= std::abs(db - d));
     out = useA ? position(a.x, a.y) - position(x, y) : position(x, y) - position(b.x, b.y);

@@ -134,11 +134,11 @@ struct ObstacleLoadsUniforms {  // fluid/obstacle_loads.comp
 
 struct VelocityUniforms {  // fluid/velocity.comp
   GLuint count = 0;
-  float dt = 0, foamGain = 0, foamDecay = 1;
+  float dt = 0, foamGain = 0, foamDecay = 1, sprayDensity = 0;
   static constexpr auto fields() {
     using U = VelocityUniforms;
     return std::tuple{gl::field("uCount", &U::count), gl::field("uDt", &U::dt), gl::field("uFoamGain", &U::foamGain),
-                      gl::field("uFoamDecay", &U::foamDecay)};
+                      gl::field("uFoamDecay", &U::foamDecay), gl::field("uSprayDensity", &U::sprayDensity)};
   }
 };
 

@@ -28,6 +28,8 @@ void visit(ParamVisitor& v, Params& p) {
   if (v.beginGroup({"engine", "Engine", "time step, gravity"})) {
     water::visitEngine(v, p, 0.1f);
     water::visitFoam(v, p);
+    v.real({"spray_density", "Spray density", "rho/rho0 under which a particle turns to foam, as spray (0: off)"},
+           p.sprayDensity, 0.0f, 1.0f);
     v.endGroup();
   }
   if (v.beginGroup({"walls", "Walls", "piston and domain rotation"})) {

@@ -17,9 +17,10 @@ struct Params : water::Setup {
   float relaxation = 0.01f;     // ε as a fraction of a resting particle's Σ|∇C|² (Macklin's CFM)
   float scorrK = 0.01f;         // tensile correction s_corr = −k (W(r)/W(Δq))^n, k as a compression (λ units)
   float scorrN = 4.0f;
-  float scorrDq = 0.2f;     // Δq as a fraction of h
-  float viscosity = 0.01f;  // XSPH c: the fraction of the neighbourhood's mean velocity blended in per step
-  float vorticity = 0.0f;   // vorticity confinement ε_v (m/s); 0: off
+  float scorrDq = 0.2f;        // Δq as a fraction of h
+  float viscosity = 0.01f;     // XSPH c: the fraction of the neighbourhood's mean velocity blended in per step
+  float vorticity = 0.0f;      // vorticity confinement ε_v (m/s); 0: off
+  float sprayDensity = 0.24f;  // ρ/ρ0 under which a particle turns (partly) to foam, as spray; 0: off
 
   Params() {
     dt = 1.0f / 600.0f;

@@ -197,15 +197,18 @@ void Fluid::measureObstacleLoads(bool add, gl::GpuProfiler* profiler) {
 void Fluid::updateVelocities(gl::GpuProfiler* profiler) {
   {
     auto scope = timed(profiler, "fluid.velocity");
-    const gl::Kernel<VelocityUniforms> velocity(m_shaders, "fluid/velocity.comp", {FLUID_POS, FLUID_PRED, FLUID_OUT});
+    const gl::Kernel<VelocityUniforms> velocity(m_shaders, "fluid/velocity.comp",
+                                                {FLUID_POS, FLUID_PRED, FLUID_OUT, FLUID_LAMBDA});
     m_x.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_POS);
     m_pred.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_PRED);
     m_v.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_OUT);
+    m_lambda.bindBase(GL_SHADER_STORAGE_BUFFER, FLUID_LAMBDA);
     velocity.dispatchThreads(m_count, {.count = GLuint(m_count),
                                        .dt = m_params.dt,
                                        .foamGain = m_params.foamGain,
                                        // the seed's decay per 0.5 ms
-                                       .foamDecay = std::pow(m_params.foamDecay, m_params.dt / 0.0005f)});
+                                       .foamDecay = std::pow(m_params.foamDecay, m_params.dt / 0.0005f),
+                                       .sprayDensity = m_params.sprayDensity});
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   }
   std::swap(m_x, m_pred);  // the corrected positions are the new state (w = 1)

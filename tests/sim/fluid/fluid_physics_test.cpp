@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "scene/fluid_stage.h"
@@ -186,4 +187,35 @@ TEST_F(FluidTest, TapJetLeavesTheNozzleUncompressed) {
   std::printf("tap jet: %zu particles, largest compression %.3g\n", f.count(), worst);
   EXPECT_GT(f.count(), 200u);
   EXPECT_LT(worst, 0.02);
+}
+
+// A particle with few neighbours, its density well under the rest density, is spray: its foam is
+// raised to 1 − smoothstep(0.6 s, s, ρ/ρ0) (s = spray_density) and decays from there. One step of
+// the dam break's splash against that rule, particle by particle (the foam's growth with speed
+// off, so the rule is all there is).
+TEST_F(FluidTest, ParticlesWellUnderTheRestDensityTurnToFoamAsSpray) {
+  Params p = sceneParams("dam-break-fluid");
+  p.foamGain = 0.0f;
+  p.foamDecay = 0.999f;
+  Fluid f(shaders(), p);
+  f.trackOrder(true);
+  run(f, 0.45);  // the surge has run up the far wall
+  const std::vector<glm::vec4> before = f.downloadVelocities();
+  f.stepOnce();
+  const std::vector<glm::vec4> after = f.downloadVelocities();
+  const std::vector<GLuint> order = f.lastOrder();
+  const std::vector<glm::vec2> density = f.densities().read<glm::vec2>(f.count());
+  const double s = p.sprayDensity, decay = std::pow(double(p.foamDecay), double(p.dt) / 0.0005);
+  int spray = 0, partly = 0, water = 0;
+  for (std::size_t k = 0; k < after.size(); ++k) {
+    const double t = std::clamp((density[k].y - 0.6 * s) / (0.4 * s), 0.0, 1.0);
+    const double airborne = 1.0 - t * t * (3.0 - 2.0 * t);
+    const double want = std::min(1.0, std::max(double(before[order[k]].w), airborne) * decay);
+    ASSERT_NEAR(after[k].w, want, 1e-5) << "particle " << k << ", density " << density[k].y;
+    spray += airborne > 0.3, partly += airborne > 0.0 && airborne <= 0.3, water += airborne == 0.0;
+  }
+  std::printf("spray %d, partly %d, water %d\n", spray, partly, water);
+  EXPECT_GT(spray, 0);
+  EXPECT_GT(partly, 0);
+  EXPECT_GT(water, int(0.9 * double(after.size())));
 }
