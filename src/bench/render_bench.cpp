@@ -35,8 +35,9 @@ glm::ivec2 parseImage(const std::string& text) {
   return {std::stoi(m[1]), std::stoi(m[2])};
 }
 
-constexpr const char* kPasses[] = {"balls.scene",    "balls.gbuffer",       "balls.thickness", "balls.splat.depth",
-                                   "balls.splat.id", "balls.splat.resolve", "balls.blur",      "balls.compose"};
+constexpr const char* kPasses[] = {"balls.scene",       "balls.gbuffer",  "balls.thickness",
+                                   "balls.splat.depth", "balls.splat.id", "balls.splat.resolve",
+                                   "balls.blur",        "balls.caustics", "balls.compose"};
 
 std::vector<BallsRaster> parseRaster(const std::string& text) {
   if (text == "both") return {BallsRaster::Compute, BallsRaster::Fragment};
@@ -73,7 +74,7 @@ int run(Env& env, const Options& o) {
   std::printf("render benchmark on %s: scene %s, %dx%d, %d settling steps, medians of %d frames\n", env.device.c_str(),
               scene.name.c_str(), image.x, image.y, o.settle, env.common.repeats);
   Table table({"balls", "mode", "look", "raster", "scene ms", "gbuffer ms", "thickness ms", "splat ms", "id ms",
-               "resolve ms", "blur ms", "compose ms", "frame ms"});
+               "resolve ms", "blur ms", "caustics ms", "compose ms", "frame ms"});
   const std::vector<std::size_t> counts = lattice ? parseSizes(o.sizes) : std::vector<std::size_t>{0};
   Steps steps("bench render", int(counts.size() * looks.size() * rasters.size() * 2));
   for (std::size_t n : counts) {

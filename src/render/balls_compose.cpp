@@ -48,6 +48,7 @@ struct ComposeUniforms {  // see render/balls/compose.comp
   glm::mat4 boxFromWorld{1.0f};
   glm::vec3 floorMin{0.0f}, floorMax{1.0f};
   float tileSize = 1.0f, pixelSpread = 0.0f, glass = 0.0f;
+  GLint caustics = 0, causticsLight = BALLS_VIEW_CAUSTICS;                               // on, texture unit
   GLint gbuffer = BALLS_VIEW_GBUFFER, foam = BALLS_VIEW_FOAM, depth = BALLS_VIEW_DEPTH;  // texture units
   GLint sceneDepth = BALLS_VIEW_SCENE_DEPTH, target = BALLS_VIEW_COMPOSE_TARGET;         // texture, image unit
   static constexpr auto fields() {
@@ -88,6 +89,8 @@ struct ComposeUniforms {  // see render/balls/compose.comp
                       gl::field("uTileSize", &U::tileSize),
                       gl::field("uPixelSpread", &U::pixelSpread),
                       gl::field("uGlass", &U::glass),
+                      gl::field("uCaustics", &U::caustics),
+                      gl::field("uCausticsLight", &U::causticsLight),
                       gl::field("uGBuffer", &U::gbuffer),
                       gl::field("uFoam", &U::foam),
                       gl::field("uDepth", &U::depth),
@@ -128,6 +131,7 @@ void BallsCompose::draw(const gl::Texture2D* surface, const BallsGBuffer& gbuffe
     gbuffer.depth().bind(BALLS_VIEW_DEPTH);
   }
   if (scene.drawn) target.depth().bind(BALLS_VIEW_SCENE_DEPTH);
+  if (scene.caustics) scene.caustics->bind(BALLS_VIEW_CAUSTICS);
   target.color().bindImage(BALLS_VIEW_COMPOSE_TARGET, GL_READ_WRITE, GL_RGBA8);
   const std::vector<glm::vec4> lines =
       scene.box ? boxEdgesInWindow(scene.boxMin, scene.boxMax, camera.proj * camera.view * scene.boxModel,
@@ -169,7 +173,8 @@ void BallsCompose::draw(const gl::Texture2D* surface, const BallsGBuffer& gbuffe
                                 std::max(look.floorTiles, 1.0f),
                     // Both projections: rad (perspective) or m (orthographic) per pixel at the centre.
                     .pixelSpread = 2.0f / (camera.proj[1][1] * float(camera.height)),
-                    .glass = look.glass};
+                    .glass = look.glass,
+                    .caustics = scene.caustics ? 1 : 0};
   std::copy_n(lines.begin(), std::min(lines.size(), kMaxLinePoints), u.lines.begin());
   compose.dispatch({unsigned(camera.width + 15) / 16, unsigned(camera.height + 15) / 16, 1u}, u);
   // Readers of the image: read-backs, the window's blit, texture fetches; the next frame's

@@ -21,6 +21,7 @@ struct ComposeScene {
   glm::vec3 boxMin{0.0f}, boxMax{1.0f};
   glm::mat4 boxModel{1.0f};
   WindowRect rect;  // where the raster drew them (drawn): the scene is at the far plane elsewhere
+  const gl::Texture2D* caustics = nullptr;  // the sunlight on the box's floor (WaterCaustics); null: 1
 };
 
 class BallsCompose {

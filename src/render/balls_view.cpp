@@ -46,6 +46,9 @@ void visit(ParamVisitor& v, BallsViewParams& p) {
   v.real(
       {"glass", "Glass", "the box's side walls as glass: their reflectance at normal incidence (environment; 0: none)"},
       p.glass, 0.0f, 1.0f);
+  v.real({"caustics", "Caustics",
+          "the sunlight the water's surface focuses and spreads on the floor (environment; 0: none, 1: as refracted)"},
+         p.caustics, 0.0f, 2.0f);
   v.color({"water_color", "Water colour", "linear RGB: ball albedo, water tint"}, p.waterColor);
   v.real({"absorption", "Absorption", "1/m: this inverse thickness transmits the water colour"}, p.absorption, 0.0f,
          200.0f);
@@ -80,7 +83,7 @@ constexpr float kFloorAlbedo = 0.75f;  // the environment's tiles and grout, on 
 // The fields a look decides, per look (WaterLook's order).
 struct LookFields {
   bool environment;
-  float refractionIndex, glass;
+  float refractionIndex, glass, caustics;
   glm::vec3 skyColor, waterColor;
   float absorption, scattering;
   glm::vec3 background;
@@ -88,12 +91,32 @@ struct LookFields {
 };
 constexpr BallsViewParams kSeed;
 constexpr std::array<LookFields, 3> kLooks = {{
-    {kSeed.environment, kSeed.refractionIndex, kSeed.glass, kSeed.skyColor, kSeed.waterColor, kSeed.absorption,
-     kSeed.scattering, kSeed.background, kSeed.specular, kSeed.spray},
+    {kSeed.environment, kSeed.refractionIndex, kSeed.glass, kSeed.caustics, kSeed.skyColor, kSeed.waterColor,
+     kSeed.absorption, kSeed.scattering, kSeed.background, kSeed.specular, kSeed.spray},
     // clear: thin water nearly clear, a metre of it pale blue-green; glass's F0 0.04
-    {true, 1.33f, 0.04f, {0.30f, 0.50f, 0.85f}, {0.62f, 0.86f, 0.92f}, 4.0f, 0.25f, {0.80f, 0.85f, 0.90f}, 1.0f, 1.0f},
+    {true,
+     1.33f,
+     0.04f,
+     1.0f,
+     {0.30f, 0.50f, 0.85f},
+     {0.62f, 0.86f, 0.92f},
+     4.0f,
+     0.25f,
+     {0.80f, 0.85f, 0.90f},
+     1.0f,
+     1.0f},
     // ocean: a few decimetres already deep teal
-    {true, 1.33f, 0.04f, {0.22f, 0.40f, 0.72f}, {0.10f, 0.45f, 0.50f}, 12.0f, 0.6f, {0.70f, 0.76f, 0.82f}, 0.8f, 1.0f},
+    {true,
+     1.33f,
+     0.04f,
+     1.0f,
+     {0.22f, 0.40f, 0.72f},
+     {0.10f, 0.45f, 0.50f},
+     12.0f,
+     0.6f,
+     {0.70f, 0.76f, 0.82f},
+     0.8f,
+     1.0f},
 }};
 }  // namespace
 
@@ -103,6 +126,7 @@ void applyLook(BallsViewParams& p, WaterLook look) {
   p.environment = f.environment;
   p.refractionIndex = f.refractionIndex;
   p.glass = f.glass;
+  p.caustics = f.caustics;
   p.fresnelF0 = kSeed.fresnelF0;  // water's 0.02 in every look
   p.skyColor = f.skyColor;
   p.waterColor = f.waterColor;
@@ -153,7 +177,12 @@ glm::vec3 BallsCamera::towardsLight(glm::vec3 world) const {
 }
 
 BallsView::BallsView(gl::ShaderLibrary& shaders)
-    : m_shaders(shaders), m_gbuffer(shaders), m_blur(shaders), m_compose(shaders), m_cells(shaders) {}
+    : m_shaders(shaders),
+      m_gbuffer(shaders),
+      m_blur(shaders),
+      m_caustics(shaders),
+      m_compose(shaders),
+      m_cells(shaders) {}
 
 const gl::Texture2D& BallsView::composedSurface() const { return m_blurred ? m_blur.result() : m_gbuffer.surface(); }
 
@@ -323,9 +352,23 @@ void BallsView::render(const BallsScene& scene, const BallsCamera& camera, Rende
     m_blur.run(m_gbuffer.surface(), m_params.blurRadius * scene.water.radius * focalPx,
                m_params.depthThreshold * scene.water.radius, m_params.blurIterations, !camera.isOrthographic());
   }
+  const gl::Texture2D* caustics = nullptr;
+  if (balls && water && m_params.environment && m_params.caustics > 0.0f) {
+    const glm::mat4 boxFromWorld = glm::inverse(scene.boxModel);
+    const glm::vec3 sun = glm::length(m_params.lightDirection) > 0.0f ? glm::normalize(m_params.lightDirection)
+                                                                      : glm::vec3(0.0f, 0.0f, 1.0f);
+    const glm::vec3 sunBox = glm::normalize(glm::mat3(boxFromWorld) * sun);
+    if (sunBox.z > 0.05f) {  // a sun at the horizon lights the floor by its ambient share only
+      auto scope = profiler.scope("balls.caustics");
+      m_caustics.run(scene.water, boxFromWorld,
+                     {scene.boxMin, scene.boxMax, sunBox, m_params.refractionIndex, m_params.caustics});
+      caustics = &m_caustics.light();
+    }
+  }
   auto scope = profiler.scope("balls.compose");
   const bool raw = m_params.debug != BallsDebug::Final && m_params.debugUnblurred;
-  const ComposeScene composed{opaque, m_params.showBox, scene.boxMin, scene.boxMax, scene.boxModel, sceneDepth.rect};
+  const ComposeScene composed{opaque,         m_params.showBox, scene.boxMin, scene.boxMax,
+                              scene.boxModel, sceneDepth.rect,  caustics};
   const gl::Texture2D* surface = nullptr;  // no balls: the compose reads no G-buffer
   if (balls) surface = raw ? &m_gbuffer.surface() : &composedSurface();
   m_compose.draw(surface, m_gbuffer, m_params, camera, scene.water.radius, composed, target);

@@ -28,6 +28,7 @@
 #include "render/orbit_camera.h"
 #include "render/target.h"
 #include "render/water_blur.h"
+#include "render/water_caustics.h"
 #include "sim/water/particle_water.h"
 
 namespace tidepool {
@@ -65,6 +66,7 @@ class BallsView {
   OrbitCamera m_camera;
   BallsGBuffer m_gbuffer;
   WaterBlur m_blur;
+  WaterCaustics m_caustics;
   ObstacleMeshes m_meshes;
   BallsCompose m_compose;
   BallsGridCells m_cells;

@@ -53,6 +53,7 @@ struct BallsViewParams {
   glm::vec3 skyColor{0.55f, 0.68f, 0.85f};          // linear RGB at the zenith (the horizon: background)
   float floorTiles = 5.0f;                          // tiles across the domain box's shorter side
   float glass = 0.0f;                               // the box's side walls' reflectance at normal incidence
+  float caustics = 0.0f;                            // the sunlight the water focuses on the floor (0: none, 1: all)
   glm::vec3 waterColor{0.18f, 0.45f, 0.91f};        // linear RGB: balls' albedo, water's tint (water-webgpu)
   float absorption = 20.0f;                         // 1/m: thickness 1/absorption transmits waterColor
   float scattering = 1.0f;                          // water: how much of the absorbed light it sends back, tinted

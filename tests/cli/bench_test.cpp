@@ -35,7 +35,7 @@ TEST(Bench, RenderPrintsMsPerPassInBothModes) {
                         "--warmup", "1", "--csv", (dir / "render.csv").string()});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   for (const char* column : {"scene ms", "gbuffer ms", "thickness ms", "splat ms", "id ms", "resolve ms", "blur ms",
-                             "compose ms", "frame ms"})
+                             "caustics ms", "compose ms", "frame ms"})
     EXPECT_NE(r.out.find(column), std::string::npos) << column << "\n" << r.out;
   const std::string csv = io::readTextFile(dir / "render.csv");
   for (const char* row :

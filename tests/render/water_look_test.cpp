@@ -354,3 +354,40 @@ TEST_F(WaterLookTest, ObstaclesFacingTheSkyTakeItsColourInTheirAmbientLight) {
     EXPECT_NEAR(sky[k], white[k] + look.obstacleColor[k] * 0.2 * (skyLight[k] - 1.0), 1.5 / 255.0) << "channel " << k;
   EXPECT_LT(sky.r, white.r - 0.04) << "bluer in the sky's light";
 }
+
+TEST_F(WaterLookTest, TheFloorTakesTheSunlightTheCausticsSendIt) {
+  // The floor seen from straight above, the sun overhead: 0.4 of ambient plus 0.6 of sun times
+  // the caustics' light. A light of 0.5 on the box's left half and 1 on its right: the left half
+  // shows 0.7 of the right's colour, and the floor outside the box its dry colour.
+  constexpr int kSize = 32;
+  BallsViewParams look = opticsOnly(1.0f);
+  look.lightDirection = {0.0f, 0.0f, 1.0f};
+  const BallsCamera camera = BallsCamera::orthographic(
+      glm::lookAt(glm::vec3(0.5f, 0.5f, 2.0f), glm::vec3(0.5f, 0.5f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f)), 0.75f, kSize,
+      kSize, 0.1f, 10.0f);
+  std::vector<float> texels(16 * 16);
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 16; ++x) texels[std::size_t(y * 16 + x)] = x < 8 ? 0.5f : 1.0f;
+  gl::Texture2D light(16, 16, GL_R16F);
+  light.upload(GL_RED, GL_FLOAT, texels.data());
+  BallsGBuffer gbuffer(shaders());
+  BallsCompose compose(shaders());
+  const auto render = [&](const gl::Texture2D* caustics) {
+    RenderTarget target(kSize, kSize);
+    const ComposeScene scene{.boxMin = glm::vec3(0.0f), .boxMax = glm::vec3(1.0f), .caustics = caustics};
+    compose.draw(nullptr, gbuffer, look, camera, 0.01f, scene, target);
+    return target.readRgba8();
+  };
+  const std::vector<std::uint8_t> lit = render(&light), dry = render(nullptr);
+  const auto at = [&](const std::vector<std::uint8_t>& rgba, int x, int y) {
+    const std::uint8_t* p = &rgba[std::size_t((y * kSize + x) * 4)];
+    return glm::vec3(p[0], p[1], p[2]) / 255.0f;
+  };
+  // The box spans pixels 5.3 to 26.7 in x and y (0.75 m of half height over 16 px).
+  for (int y : {10, 16, 21})
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_NEAR(at(lit, 10, y)[k], 0.7 * at(dry, 10, y)[k], 1.5 / 255.0) << "left half, row " << y;
+      EXPECT_NEAR(at(lit, 22, y)[k], at(dry, 22, y)[k], 1.0 / 255.0) << "right half";
+      EXPECT_NEAR(at(lit, 2, y)[k], at(dry, 2, y)[k], 1.0 / 255.0) << "outside the box";
+    }
+}

@@ -19,3 +19,8 @@
 #define BALLS_VIEW_SPLAT_SURFACE 0   // compute raster resolve: image unit of the G-buffer surface
 #define BALLS_VIEW_SPLAT_FOAM 1      // compute raster resolve: image unit of the foam (R16F)
 #define BALLS_VIEW_SPLAT_DEPTH 2     // compute raster resolve: image unit of the window depth (R32F)
+#define BALLS_VIEW_CAUSTICS_TOPS 3           // SSBO, caustics: uint per floor cell, the water's top (float bits, 0 dry)
+#define BALLS_VIEW_CAUSTICS_HEIGHT 0         // caustics light pass: sampler unit of the smoothed height (R32F)
+#define BALLS_VIEW_CAUSTICS_HEIGHT_IMAGE 0   // caustics smooth pass: image unit of the smoothed height
+#define BALLS_VIEW_CAUSTICS_LIGHT_IMAGE 1    // caustics light pass: image unit of the light (R16F)
+#define BALLS_VIEW_CAUSTICS 4                // compose: sampler unit of the caustics' light on the floor

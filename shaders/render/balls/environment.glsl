@@ -4,7 +4,8 @@
 // and fading into the horizon far away. Analytic, per ray: nothing is drawn or stored, so the
 // water can look at it along any ray (the eye's, refracted through the surface, reflected).
 // Without uEnvironment the surroundings are the flat background and the seed's sky. The box's
-// four side walls are glass (throughTank), open at the top, on the floor.
+// four side walls are glass (throughTank), open at the top, on the floor. With uCaustics the floor
+// inside the box takes the sunlight the water above it focuses and spreads (WaterCaustics).
 #ifndef RENDER_BALLS_ENVIRONMENT_GLSL
 #define RENDER_BALLS_ENVIRONMENT_GLSL
 
@@ -19,6 +20,8 @@ uniform vec3 uFloorMax;        // the opposite corner, m
 uniform float uTileSize;       // floor tiles' edge, m
 uniform float uPixelSpread;    // perspective: rad per pixel; orthographic: m per pixel
 uniform float uGlass;          // the tank's walls' reflectance at normal incidence (0: no glass)
+uniform int uCaustics;         // 1: the floor in the box takes the sunlight of uCausticsLight
+layout(binding = BALLS_VIEW_CAUSTICS) uniform sampler2D uCausticsLight;  // over the box's floor, 1 = dry floor
 
 const vec3 kSunColor = vec3(1.0, 0.94, 0.84);
 const vec3 kTile = vec3(0.78, 0.80, 0.79), kGrout = vec3(0.30, 0.32, 0.33);
@@ -54,7 +57,12 @@ vec3 environment(vec3 origin, vec3 d, float travelled, float blur) {
   const vec2 hit = o.xy + t * b.xy;
   const float spread = (uPixelSpread * (uOrtho != 0 ? 1.0 : travelled + t) + blur * t) / max(-b.z, 0.05);
   const vec3 up = transpose(mat3(uBoxFromWorld)) * vec3(0.0, 0.0, 1.0);
-  const vec3 lit = tiles(hit, spread) * (0.4 + 0.6 * max(dot(up, uSunWorld), 0.0));
+  // The sun's share, focused and spread by the water above (render/balls/caustics_light.comp).
+  float sun = 0.6 * max(dot(up, uSunWorld), 0.0);
+  const vec2 onFloor = (hit - uFloorMin.xy) / (uFloorMax.xy - uFloorMin.xy);
+  if (uCaustics != 0 && all(greaterThanEqual(onFloor, vec2(0.0))) && all(lessThanEqual(onFloor, vec2(1.0))))
+    sun *= texture(uCausticsLight, onFloor).r;
+  const vec3 lit = tiles(hit, spread) * (0.4 + sun);
   // Past a few box sizes the floor fades into the horizon.
   const vec2 centre = 0.5 * (uFloorMin.xy + uFloorMax.xy);
   const float size = length(uFloorMax.xy - uFloorMin.xy);
