@@ -89,22 +89,25 @@ struct LookFields {
   glm::vec3 background;
   float specular, spray;
 };
-constexpr BallsViewParams kSeed;
+constexpr BallsViewParams kDefault;  // the clear look
 constexpr std::array<LookFields, 3> kLooks = {{
-    {kSeed.environment, kSeed.refractionIndex, kSeed.glass, kSeed.caustics, kSeed.skyColor, kSeed.waterColor,
-     kSeed.absorption, kSeed.scattering, kSeed.background, kSeed.specular, kSeed.spray},
-    // clear: thin water nearly clear, a metre of it pale blue-green; glass's F0 0.04
-    {true,
-     1.33f,
-     0.04f,
+    // seed: the look tidepool started from, flat blue water (water-webgpu's colour) over a dark
+    // background, no environment
+    {false,
      1.0f,
-     {0.30f, 0.50f, 0.85f},
-     {0.62f, 0.86f, 0.92f},
-     4.0f,
-     0.25f,
-     {0.80f, 0.85f, 0.90f},
+     0.0f,
+     0.0f,
+     {0.55f, 0.68f, 0.85f},
+     {0.18f, 0.45f, 0.91f},
+     20.0f,
      1.0f,
-     1.0f},
+     {0.09f, 0.10f, 0.12f},
+     0.6f,
+     0.0f},
+    // clear (the default): a few centimetres of water nearly clear, a metre of it blue-green; glass's F0 0.04
+    {kDefault.environment, kDefault.refractionIndex, kDefault.glass, kDefault.caustics, kDefault.skyColor,
+     kDefault.waterColor, kDefault.absorption, kDefault.scattering, kDefault.background, kDefault.specular,
+     kDefault.spray},
     // ocean: a few decimetres already deep teal
     {true,
      1.33f,
@@ -127,7 +130,7 @@ void applyLook(BallsViewParams& p, WaterLook look) {
   p.refractionIndex = f.refractionIndex;
   p.glass = f.glass;
   p.caustics = f.caustics;
-  p.fresnelF0 = kSeed.fresnelF0;  // water's 0.02 in every look
+  p.fresnelF0 = kDefault.fresnelF0;  // water's 0.02 in every look
   p.skyColor = f.skyColor;
   p.waterColor = f.waterColor;
   p.absorption = f.absorption;

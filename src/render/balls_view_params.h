@@ -47,26 +47,27 @@ struct BallsViewParams {
   bool debugUnblurred = false;                      // water: the debug views show the G-buffer before the blur
   GridCellsMode gridCells = GridCellsMode::Hidden;  // the neighbour grid's non-empty cells as wire cubes
   float gridCellsFull = 3.0f;                       // balls per cell at the population ramp's red end
-  WaterLook look = WaterLook::Seed;                 // the preset the fields below started from
-  bool environment = false;                         // a sky, the sun and a tiled floor (off: the background)
-  float refractionIndex = 1.0f;                     // water's, bending what is seen through it (1: straight)
-  glm::vec3 skyColor{0.55f, 0.68f, 0.85f};          // linear RGB at the zenith (the horizon: background)
-  float floorTiles = 5.0f;                          // tiles across the domain box's shorter side
-  float glass = 0.0f;                               // the box's side walls' reflectance at normal incidence
-  float caustics = 0.0f;                            // the sunlight the water focuses on the floor (0: none, 1: all)
-  glm::vec3 waterColor{0.18f, 0.45f, 0.91f};        // linear RGB: balls' albedo, water's tint (water-webgpu)
-  float absorption = 20.0f;                         // 1/m: thickness 1/absorption transmits waterColor
-  float scattering = 1.0f;                          // water: how much of the absorbed light it sends back, tinted
-  float spray = 0.0f;                               // water: how white a lone ball (a droplet) is drawn
-  float blurRadius = 4.0f;                          // blur kernel radius, in on-screen ball radii
-  int blurIterations = 2;                           // times the blur's row and column passes run
-  float depthThreshold = 12.0f;                     // ball radii: no blur across larger depth steps between pixels
-  bool foam = true;                                 // white water from the per-ball foam
-  float fresnelF0 = 0.02f;                          // reflectance at normal incidence (water)
-  float specular = 0.6f;                            // key-light highlight strength
-  glm::vec3 lightDirection{0.5f, 0.3f, 1.0f};       // world (z up), towards the key light; any length
+  // The fields a look sets start as the clear look's (render/balls_view.cpp, kLooks).
+  WaterLook look = WaterLook::Clear;           // the preset the fields below started from
+  bool environment = true;                     // a sky, the sun and a tiled floor (off: the background)
+  float refractionIndex = 1.33f;               // water's, bending what is seen through it (1: straight)
+  glm::vec3 skyColor{0.30f, 0.50f, 0.85f};     // linear RGB at the zenith (the horizon: background)
+  float floorTiles = 5.0f;                     // tiles across the domain box's shorter side
+  float glass = 0.04f;                         // the box's side walls' reflectance at normal incidence
+  float caustics = 1.0f;                       // the sunlight the water focuses on the floor (0: none, 1: all)
+  glm::vec3 waterColor{0.45f, 0.78f, 0.88f};   // linear RGB: balls' albedo, water's tint
+  float absorption = 6.0f;                     // 1/m: thickness 1/absorption transmits waterColor
+  float scattering = 0.35f;                    // water: how much of the absorbed light it sends back, tinted
+  float spray = 1.0f;                          // water: how white a lone ball (a droplet) is drawn
+  float blurRadius = 4.0f;                     // blur kernel radius, in on-screen ball radii
+  int blurIterations = 2;                      // times the blur's row and column passes run
+  float depthThreshold = 12.0f;                // ball radii: no blur across larger depth steps between pixels
+  bool foam = true;                            // white water from the per-ball foam
+  float fresnelF0 = 0.02f;                     // reflectance at normal incidence (water)
+  float specular = 1.0f;                       // key-light highlight strength
+  glm::vec3 lightDirection{0.5f, 0.3f, 1.0f};  // world (z up), towards the key light; any length
   glm::vec3 obstacleColor{0.55f, 0.55f, 0.58f};
-  glm::vec3 background{0.09f, 0.10f, 0.12f};
+  glm::vec3 background{0.80f, 0.85f, 0.90f};  // linear RGB (with the environment: the sky's horizon)
   bool showBox = true;
   bool showObstacle = true;
   bool obstacleBalls = false;  // the obstacle's fixed balls too (they stick out of its mesh by up to r)

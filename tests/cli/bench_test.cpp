@@ -39,7 +39,7 @@ TEST(Bench, RenderPrintsMsPerPassInBothModes) {
     EXPECT_NE(r.out.find(column), std::string::npos) << column << "\n" << r.out;
   const std::string csv = io::readTextFile(dir / "render.csv");
   for (const char* row :
-       {",balls,seed,compute,", ",water,seed,compute,", ",balls,seed,fragment,", ",water,seed,fragment,"})
+       {",balls,clear,compute,", ",water,clear,compute,", ",balls,clear,fragment,", ",water,clear,fragment,"})
     EXPECT_NE(csv.find(row), std::string::npos) << row << "\n" << csv;
   expectOneLineError({"bench", "render", "--size", "1920"}, "--size '1920' is not WIDTHxHEIGHT");
   expectOneLineError({"bench", "render", "--raster", "rops"}, "--raster 'rops' is not compute, fragment or both");

@@ -109,6 +109,7 @@ class BallsGoldenCompose : public test::GlTest, public ::testing::WithParamInter
   static std::vector<std::uint8_t> render(const Reference& r) {
     const Pool pool;
     BallsView view(shaders());
+    applyLook(view.params(), WaterLook::Seed);  // the references are the seed's look
     view.params().mode = r.mode;
     view.params().raster = r.raster;
     view.params().showBox = r.box;
@@ -197,6 +198,7 @@ std::vector<std::uint8_t> renderLayout(gl::ShaderLibrary& shaders, const Layout&
     scene.obstacleMeshes.push_back(
         {&mesh, l.sphere.size(), glm::translate(glm::mat4(1.0f), {0.15f, 0, -2.5f}), l.bounds.first, l.bounds.second});
   BallsView view(shaders);
+  applyLook(view.params(), WaterLook::Seed);  // water that tints what it covers, over a flat background
   view.params().mode = mode;
   view.params().showBox = false;
   view.params().blurRadius = 0.0f;  // a flat sheet: its balls' own normals

@@ -19,6 +19,7 @@ using BallsViewTest = test::GlTest;
 struct Drawn {
   Drawn(gl::ShaderLibrary& shaders, const std::vector<ObstacleParams>& obstacles)
       : model(shaders, params(obstacles)), view(shaders) {
+    applyLook(view.params(), WaterLook::Seed);  // a flat background, which covered() tells apart
     view.params().showBox = false;
   }
 

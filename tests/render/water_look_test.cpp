@@ -162,13 +162,21 @@ TEST_F(WaterLookTest, ASlabOfKnownThicknessTransmitsTheFloorByBeerLambert) {
 }
 
 TEST_F(WaterLookTest, PresetsSetTheirFieldsAndKeysAfterThemOverrideThem) {
+  const BallsViewParams defaults;
+  BallsViewParams clear = defaults;
+  applyLook(clear, WaterLook::Seed);
+  applyLook(clear, WaterLook::Clear);
+  EXPECT_EQ(defaults.look, WaterLook::Clear) << "the default look";
+  EXPECT_EQ(clear.environment, defaults.environment);
+  EXPECT_EQ(clear.waterColor, defaults.waterColor);
+  EXPECT_EQ(clear.absorption, defaults.absorption);
+  EXPECT_EQ(clear.background, defaults.background);
+  EXPECT_EQ(clear.caustics, defaults.caustics);
   BallsViewParams seed;
   applyLook(seed, WaterLook::Seed);
-  const BallsViewParams defaults;
-  EXPECT_EQ(seed.environment, defaults.environment);
-  EXPECT_EQ(seed.waterColor, defaults.waterColor);
-  EXPECT_EQ(seed.absorption, defaults.absorption);
-  EXPECT_EQ(seed.background, defaults.background);
+  EXPECT_FALSE(seed.environment);
+  EXPECT_EQ(seed.caustics, 0.0f);
+  EXPECT_EQ(seed.waterColor, glm::vec3(0.18f, 0.45f, 0.91f)) << "water-webgpu's blue";
   EXPECT_EQ(seed.refractionIndex, 1.0f) << "the seed's water does not bend";
 
   const Scene ocean = loadScene(resolveScenePath("dam-break"), {{"view", {{"look", "ocean"}, {"absorption", 3.0}}}});
