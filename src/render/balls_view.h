@@ -10,6 +10,8 @@
 //                 as compute kernels with atomics (src/render/balls_splat.h), same G-buffer
 //   4. blur:      water mode only, depth-aware separable Gaussian (row and column compute
 //                 passes, two rounds by default)
+//      caustics:  water mode under the environment only: the sunlight the water's surface
+//                 sends onto the floor (src/render/water_caustics.h), which the compose reads
 //   5. compose:   a compute pass: the scene (or the background when step 1 was skipped) and the
 //                 domain box's lines, and over them, where the balls are nearer, their shading
 //                 (balls or water) or a debug view, into the target's colour. The target's depth

@@ -36,7 +36,7 @@ enum class GridCellsMode { Hidden, Population, NonEmpty };
 inline constexpr std::array<const char*, 3> kGridCellsModeNames = {"hidden", "population", "non_empty"};
 
 // Presets of the look (applyLook): the seed's flat blue water over a dark background, clear
-// water over a tiled floor under a sky, and deeper, greener ocean water there.
+// water over a tiled floor under a sky (the default), and deeper, greener ocean water there.
 enum class WaterLook { Seed, Clear, Ocean };
 inline constexpr std::array<const char*, 3> kWaterLookNames = {"seed", "clear", "ocean"};
 
@@ -73,8 +73,8 @@ struct BallsViewParams {
   bool obstacleBalls = false;  // the obstacle's fixed balls too (they stick out of its mesh by up to r)
 };
 void visit(ParamVisitor& v, BallsViewParams& p);
-// Sets the fields a look decides (the surroundings, the water's colour, absorption, refraction,
-// Fresnel and highlight, the background); the others stay.
+// Sets the fields a look decides (the surroundings, the caustics, the water's colour, absorption,
+// refraction, Fresnel and highlight, the background); the others stay.
 void applyLook(BallsViewParams& p, WaterLook look);
 
 // One frame's camera: view and projection matrices (glm::perspective or glm::ortho, symmetric),
