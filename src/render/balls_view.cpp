@@ -206,8 +206,8 @@ BallsScene BallsView::sceneOf(const water::ParticleWater& model) {
       if (m_meshes.count(k) > 0)
         s.obstacleMeshes.push_back({&m_meshes.vertices(k), m_meshes.count(k), world * obstacles.pose(k).matrix(),
                                     m_meshes.boundsMin(k), m_meshes.boundsMax(k)});
-    if (m_params.obstacleBalls)
-      s.obstacle = {&obstacles.placed(), nullptr, obstacles.particles(), model.radius(), world};
+    s.cover = {&obstacles.placed(), nullptr, obstacles.particles(), model.radius(), world};
+    if (m_params.obstacleBalls) s.obstacle = s.cover;
   }
   s.boxMin = model.wallMin();
   s.boxMax = model.wallMax();
@@ -363,7 +363,7 @@ void BallsView::render(const BallsScene& scene, const BallsCamera& camera, Rende
     const glm::vec3 sunBox = glm::normalize(glm::mat3(boxFromWorld) * sun);
     if (sunBox.z > 0.05f) {  // a sun at the horizon lights the floor by its ambient share only
       auto scope = profiler.scope("balls.caustics");
-      m_caustics.run(scene.water, boxFromWorld,
+      m_caustics.run(scene.water, scene.cover, boxFromWorld,
                      {scene.boxMin, scene.boxMax, sunBox, m_params.refractionIndex, m_params.caustics});
       caustics = &m_caustics.light();
     }

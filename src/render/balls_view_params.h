@@ -126,7 +126,8 @@ struct SceneDepth {
 // Everything in a frame: the water balls, the obstacles (as balls and/or meshes) and the domain box.
 struct BallsScene {
   SphereBatch water;
-  SphereBatch obstacle;                   // all obstacles' fixed balls; count 0: none
+  SphereBatch obstacle;                   // all obstacles' fixed balls, drawn; count 0: none
+  SphereBatch cover;                      // all obstacles' balls, drawn or not: the caustics' floor under them
   std::vector<MeshBatch> obstacleMeshes;  // one per obstacle, placed by its model matrix
   glm::vec3 boxMin{0.0f}, boxMax{1.0f};
   glm::mat4 boxModel{1.0f};

@@ -61,22 +61,28 @@ void WaterCaustics::resize(glm::ivec2 cells) {
   m_tops.fillZero();  // the light pass clears it from then on
 }
 
-void WaterCaustics::run(const SphereBatch& water, const glm::mat4& boxFromBalls, const CausticsFloor& floor) {
+void WaterCaustics::run(const SphereBatch& water, const SphereBatch& cover, const glm::mat4& boxFromWorld,
+                        const CausticsFloor& floor) {
   const glm::vec2 extent = glm::vec2(floor.max - floor.min);
   const float cell = std::max(kCellPerRadius * water.radius, std::max(extent.x, extent.y) / float(kMaxCells));
   resize(glm::clamp(glm::ivec2(glm::ceil(extent / cell)), glm::ivec2(1), glm::ivec2(kMaxCells)));
   const glm::vec2 cellSize = extent / glm::vec2(m_cells);
-  const gl::Kernel<HeightUniforms> height(m_shaders, "render/balls/caustics_height.comp",
-                                          {BALLS_VIEW_POSITIONS, BALLS_VIEW_CAUSTICS_TOPS});
-  water.positions->bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VIEW_POSITIONS);
   m_tops.bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VIEW_CAUSTICS_TOPS);
-  height.dispatchThreads(water.count, {.count = GLuint(water.count),
-                                       .boxFromBalls = boxFromBalls * water.model,
-                                       .floorMin = floor.min,
-                                       .cellSize = cellSize,
-                                       .cells = m_cells,
-                                       .radius = water.radius});
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  for (const SphereBatch* batch : {&water, &cover}) {
+    if (batch->count == 0) continue;
+    const bool covering = batch == &cover;
+    const gl::Kernel<HeightUniforms> height(m_shaders, "render/balls/caustics_height.comp",
+                                            {BALLS_VIEW_POSITIONS, BALLS_VIEW_CAUSTICS_TOPS},
+                                            {{"COVER", covering ? "1" : "0"}});
+    batch->positions->bindBase(GL_SHADER_STORAGE_BUFFER, BALLS_VIEW_POSITIONS);
+    height.dispatchThreads(batch->count, {.count = GLuint(batch->count),
+                                          .boxFromBalls = boxFromWorld * batch->model,
+                                          .floorMin = floor.min,
+                                          .cellSize = cellSize,
+                                          .cells = m_cells,
+                                          .radius = batch->radius});
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  }
   const gl::Kernel<SmoothUniforms> smooth(m_shaders, "render/balls/caustics_smooth.comp", {BALLS_VIEW_CAUSTICS_TOPS});
   m_height.bindImage(BALLS_VIEW_CAUSTICS_HEIGHT_IMAGE, GL_WRITE_ONLY, GL_R32F);
   smooth.dispatch(tiles(m_cells), {.cells = m_cells});

@@ -27,8 +27,11 @@ class WaterCaustics {
   static constexpr float kCellPerRadius = 4.0f;  // a cell's edge in ball radii (at most kMaxCells)
 
   explicit WaterCaustics(gl::ShaderLibrary& shaders) : m_shaders(shaders) {}
-  // The floor's light under the balls of `water`; boxFromBalls maps their frame to the box's.
-  void run(const SphereBatch& water, const glm::mat4& boxFromBalls, const CausticsFloor& floor);
+  // The floor's light under the balls of `water`; boxFromBalls maps the world to the box's frame.
+  // The floor under the balls of `cover` (the obstacles'; count 0: none) takes no light through
+  // the water: it is lit as dry floor, and the water's top stops at its edge.
+  void run(const SphereBatch& water, const SphereBatch& cover, const glm::mat4& boxFromWorld,
+           const CausticsFloor& floor);
   // The light pass alone, under a given height (R32F, m above the floor, 0 dry) whose texels
   // cover the floor.
   void light(const gl::Texture2D& height, const CausticsFloor& floor);

@@ -27,7 +27,26 @@ const float kMaxLight = 6.0;
 const int kIterations = 4;
 
 vec2 extent() { return vec2(uCells) * uCellSize; }
-float heightAt(vec2 s) { return texture(uHeight, s / extent()).r; }  // s: m from the floor's corner
+
+// The water's height over s (m from the floor's corner): linear between the cell centres about
+// it that hold water, 0 where the cell s is in is dry or covered, so the water's edge stays an
+// edge instead of a slope down to the floor.
+float heightAt(vec2 s) {
+  const ivec2 last = uCells - 1;
+  if (texelFetch(uHeight, clamp(ivec2(floor(s / uCellSize)), ivec2(0), last), 0).r <= 0.0) return 0.0;
+  const vec2 t = s / uCellSize - 0.5;
+  const ivec2 i = ivec2(floor(t));
+  const vec2 f = t - vec2(i);
+  float sum = 0.0, weight = 0.0;
+  for (int k = 0; k < 4; ++k) {
+    const ivec2 corner = ivec2(k & 1, k >> 1);
+    const float h = texelFetch(uHeight, clamp(i + corner, ivec2(0), last), 0).r;
+    const vec2 along = mix(1.0 - f, f, vec2(corner));
+    const float w = along.x * along.y;
+    if (h > 0.0) sum += w * h, weight += w;
+  }
+  return weight > 0.0 ? sum / weight : 0.0;
+}
 
 // The slope of the water's top along `axis` at s from the heights a cell to either side, leaving
 // out a dry side (the water's edge is not a slope the light refracts on): one-sided next to it,
