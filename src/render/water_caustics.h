@@ -1,7 +1,8 @@
 // Caustics for the water mode's floor: the sunlight the water's surface focuses and spreads on
 // the tiled floor of the environment (shaders/render/balls/environment.glsl), as light per floor
 // texel (R16F, 1 = dry floor). Three compute passes over a grid of cells on the domain box's
-// floor: the water's top per cell from the balls (caustics_height.comp), that top smoothed
+// floor: the water's top per cell from the balls, and the cells the obstacles' balls cover
+// (caustics_height.comp, a dispatch for each), that top smoothed
 // (caustics_smooth.comp), and the light each floor texel gets through the refracting surface
 // above it (caustics_light.comp).
 #pragma once
