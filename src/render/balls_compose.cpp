@@ -164,8 +164,7 @@ void BallsCompose::draw(const gl::Texture2D* surface, const BallsGBuffer& gbuffe
                     .radius = radius,
                     .environment = look.environment ? 1 : 0,
                     .skyColor = look.skyColor,
-                    .sunWorld = glm::length(look.lightDirection) > 0.0f ? glm::normalize(look.lightDirection)
-                                                                        : glm::vec3(0.0f, 0.0f, 1.0f),
+                    .sunWorld = look.sunWorld(),
                     .boxFromWorld = glm::inverse(scene.boxModel),
                     .floorMin = scene.boxMin,
                     .floorMax = scene.boxMax,

@@ -90,37 +90,19 @@ struct LookFields {
   float specular, spray;
 };
 constexpr BallsViewParams kDefault;  // the clear look
+// clang-format off
 constexpr std::array<LookFields, 3> kLooks = {{
     // seed: the look tidepool started from, flat blue water (water-webgpu's colour) over a dark
     // background, no environment
-    {false,
-     1.0f,
-     0.0f,
-     0.0f,
-     {0.55f, 0.68f, 0.85f},
-     {0.18f, 0.45f, 0.91f},
-     20.0f,
-     1.0f,
-     {0.09f, 0.10f, 0.12f},
-     0.6f,
-     0.0f},
+    {false, 1.0f, 0.0f, 0.0f, {0.55f, 0.68f, 0.85f}, {0.18f, 0.45f, 0.91f}, 20.0f, 1.0f, {0.09f, 0.10f, 0.12f}, 0.6f, 0.0f},
     // clear (the default): a few centimetres of water nearly clear, a metre of it blue-green; glass's F0 0.04
     {kDefault.environment, kDefault.refractionIndex, kDefault.glass, kDefault.caustics, kDefault.skyColor,
      kDefault.waterColor, kDefault.absorption, kDefault.scattering, kDefault.background, kDefault.specular,
      kDefault.spray},
     // ocean: a few decimetres already deep teal
-    {true,
-     1.33f,
-     0.04f,
-     1.0f,
-     {0.22f, 0.40f, 0.72f},
-     {0.10f, 0.45f, 0.50f},
-     12.0f,
-     0.6f,
-     {0.70f, 0.76f, 0.82f},
-     0.8f,
-     1.0f},
+    {true, 1.33f, 0.04f, 1.0f, {0.22f, 0.40f, 0.72f}, {0.10f, 0.45f, 0.50f}, 12.0f, 0.6f, {0.70f, 0.76f, 0.82f}, 0.8f, 1.0f},
 }};
+// clang-format on
 }  // namespace
 
 void applyLook(BallsViewParams& p, WaterLook look) {
@@ -295,8 +277,7 @@ WindowRect BallsView::drawScene(const BallsScene& scene, const BallsCamera& came
     // mean albedo, lit as environment.glsl lights it) as ambient light.
     const glm::vec3 sky =
         m_params.skyColor / std::max({m_params.skyColor.r, m_params.skyColor.g, m_params.skyColor.b, 1e-3f});
-    const glm::vec3 sun = glm::length(m_params.lightDirection) > 0.0f ? glm::normalize(m_params.lightDirection)
-                                                                      : glm::vec3(0.0f, 0.0f, 1.0f);
+    const glm::vec3 sun = m_params.sunWorld();
     const glm::vec3 up = glm::normalize(glm::mat3(camera.view * scene.boxModel) * glm::vec3(0.0f, 0.0f, 1.0f));
     program.set("uSkyLit", m_params.environment ? 1 : 0);
     program.set("uSkyLight", sky);
@@ -358,8 +339,7 @@ void BallsView::render(const BallsScene& scene, const BallsCamera& camera, Rende
   const gl::Texture2D* caustics = nullptr;
   if (balls && water && m_params.environment && m_params.caustics > 0.0f) {
     const glm::mat4 boxFromWorld = glm::inverse(scene.boxModel);
-    const glm::vec3 sun = glm::length(m_params.lightDirection) > 0.0f ? glm::normalize(m_params.lightDirection)
-                                                                      : glm::vec3(0.0f, 0.0f, 1.0f);
+    const glm::vec3 sun = m_params.sunWorld();
     const glm::vec3 sunBox = glm::normalize(glm::mat3(boxFromWorld) * sun);
     if (sunBox.z > 0.05f) {  // a sun at the horizon lights the floor by its ambient share only
       auto scope = profiler.scope("balls.caustics");

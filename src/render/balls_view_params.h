@@ -71,6 +71,11 @@ struct BallsViewParams {
   bool showBox = true;
   bool showObstacle = true;
   bool obstacleBalls = false;  // the obstacle's fixed balls too (they stick out of its mesh by up to r)
+
+  // Towards the sun (the key light), world, unit; straight up when lightDirection is zero.
+  glm::vec3 sunWorld() const {
+    return glm::length(lightDirection) > 0.0f ? glm::normalize(lightDirection) : glm::vec3(0.0f, 0.0f, 1.0f);
+  }
 };
 void visit(ParamVisitor& v, BallsViewParams& p);
 // Sets the fields a look decides (the surroundings, the caustics, the water's colour, absorption,
