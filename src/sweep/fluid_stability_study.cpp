@@ -5,7 +5,7 @@
 // theory says. A run is also sampled every 20 ms (the same three checks, blocking), so a speed
 // spike between two of the watch's checks is not missed.
 //
-// Theory (docs/ACCURACY.md, "Water: balls and fluid on one metric"):
+// Theory (docs/WATER.md, "Water: balls and fluid on one metric"):
 //  - Similarity. With no damping, a PBF step in positions is x' = 2x − x_prev + g·dt² then the
 //    iterations (positions only; XSPH blends a fixed fraction per step), and the watch asks
 //    |x' − x| < h: dt enters only through g·dt² (and the steps a run of 0.5 s takes). So for a

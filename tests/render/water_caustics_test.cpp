@@ -79,7 +79,7 @@ TEST_F(WaterCausticsTest, AWaveFocusesTheSunlightWhereRefractionSendsIt) {
     }
     EXPECT_LT(lowest, 0.9);
     EXPECT_GT(highest, 1.1);
-    // Documented (docs/ACCURACY.md, "Caustics"): 0.0017 with the sun overhead, 0.0035 at 40°.
+    // Documented (docs/WATER.md, "Caustics"): 0.0017 with the sun overhead, 0.0035 at 40°.
     EXPECT_LT(worst, 0.005) << "light, of 1 on dry floor";
   }
 }
@@ -186,6 +186,6 @@ TEST_F(WaterCausticsTest, TheFloorUnderAnObstacleIsLitAsDryFloor) {
                glm::mat4(1.0f), kPoolFloor);
   const Spread covered = spread(caustics);
   EXPECT_GT(open.worst, 0.3) << "uncovered, the dip under the block focuses the sun";
-  EXPECT_LT(covered.worst, 0.04) << "measured 0.032 (docs/ACCURACY.md, \"Caustics\")";
+  EXPECT_LT(covered.worst, 0.04) << "measured 0.032 (docs/WATER.md, \"Caustics\")";
   EXPECT_NEAR(covered.mean, 1.0, 0.005);
 }

@@ -2,7 +2,7 @@
 // water, a sheet with a standing wave on it) are rendered in the water mode, and the normal of each
 // pixel, taken from the filtered depth as the compose pass takes it (one-sided differences, the
 // smaller depth step), is compared with the shape's own normal at that point. The figures are
-// those in docs/RENDERING.md ("Surface filter"), with their margin.
+// those in docs/WATER.md ("The water's rendered surface"), with their margin.
 #include <gtest/gtest.h>
 
 #include <algorithm>

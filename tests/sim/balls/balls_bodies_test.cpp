@@ -1,6 +1,6 @@
 // Dynamic obstacles on the balls (sim/water/body_coupling.h): a box dropped onto the balls comes to
 // rest carried by their contacts, and how far it sinks in is what the cheap water model gets
-// against the fluid's theory (docs/ACCURACY.md, "Floating bodies").
+// against the fluid's theory (docs/WATER.md, "Floating bodies").
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -63,7 +63,7 @@ Settled settle(Balls& balls) {
 // A box of 500 kg/m³ dropped onto the balls comes to rest on them, carried by their contacts: the
 // mean force they put on it is its weight within 1% (measured +0.01%: the coupling's momentum
 // balance). It floats high, 4% of its height under the level where water would hold half: a pile
-// of balls at rest is a granular solid that carries a box as sand would (docs/ACCURACY.md,
+// of balls at rest is a granular solid that carries a box as sand would (docs/WATER.md,
 // "Floating bodies").
 TEST_F(BallsBodies, ABoxDroppedOnTheBallsComesToRestCarriedByTheirContacts) {
   Balls balls(shaders(), tankWithABox(500.0f));

@@ -196,7 +196,7 @@ Params settlingTank(float radius, float fill) {
 // 228 balls of r = 1 cm settle into five layers: the floor carries their weight within 0.1%
 // (measured −0.002% to +0.004%: at rest the contacts balance gravity). The side walls are pushed outwards,
 // but by no hydrostatic law: a pile of balls at rest is a crystal that carries sideways 0.36 to
-// 1.39 times ρ g H² w / 2 depending on its size and lattice (docs/ACCURACY.md, "Probes").
+// 1.39 times ρ g H² w / 2 depending on its size and lattice (docs/WATER.md, "Probes").
 TEST_F(BallsLoads, ARestingPilesFloorCarriesItsWeight) {
   const Settled s = settle(shaders(), settlingTank(0.01f, 0.1f));
   const double floor = -s.mean.walls[4].force.z;
@@ -214,7 +214,7 @@ TEST_F(BallsLoads, ARestingPilesFloorCarriesItsWeight) {
 
 // A box of half extent 2.5 cm held 3.6 cm under 12.7 cm of resting balls (r = 5 mm) is pressed
 // down, by 2.46 to 2.69 N over runs (the packing differs from run to run), where water would lift
-// it by ρ g V = 1.23 N: the balls above rest on it as sand would (docs/ACCURACY.md, "Probes").
+// it by ρ g V = 1.23 N: the balls above rest on it as sand would (docs/WATER.md, "Probes").
 // The floor and the box carry all the balls' weight between them, within 0.2%.
 TEST_F(BallsLoads, AHeldBoxUnderRestingBallsIsPressedDownNotLifted) {
   Params p = settlingTank(0.005f, 0.15f);

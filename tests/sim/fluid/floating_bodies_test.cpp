@@ -1,4 +1,4 @@
-// Dynamic obstacles in the fluid against theory (docs/ACCURACY.md, "Floating bodies"): a flat box
+// Dynamic obstacles in the fluid against theory (docs/WATER.md, "Floating bodies"): a flat box
 // dropped into a tank floats with ρ_b/ρ of its height under water, and one denser than water
 // sinks and rests on the floor. The draft is the water level less the box's bottom, the level
 // being the water's volume and the volume the box displaces (m / ρ) over the tank's floor.

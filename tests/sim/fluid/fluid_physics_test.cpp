@@ -1,7 +1,7 @@
 // The fluid behaves like water, to the figures the README gives: a resting tank keeps its density
 // error near 0.071% with four iterations (0.027% with eight), its surface and every particle; the
 // dam break runs 2 s stable with every particle kept and a front that only advances, and follows
-// Martin & Moyce's measured front to the RMS docs/ACCURACY.md gives.
+// Martin & Moyce's measured front to the RMS docs/WATER.md gives.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -112,7 +112,7 @@ TEST_F(FluidTest, DamBreakRunsTwoSecondsStableWithEveryParticleAndAnAdvancingFro
 
 // The scene's front (d = 0.02 m, dt = 1 ms, 4 iterations) against Martin & Moyce's measured
 // front over their four points to t = 0.3 s, sampled and compared as the water-front study does:
-// docs/ACCURACY.md gives RMS 0.22 a at this spacing; held to it within 0.03 a (about 12%) both
+// docs/WATER.md gives RMS 0.22 a at this spacing; held to it within 0.03 a (about 12%) both
 // ways, since a front that slows (more viscosity) first comes closer to theirs.
 TEST_F(FluidTest, DamBreakFrontFollowsMartinAndMoyce) {
   const Params p = sceneParams("dam-break-fluid");

@@ -57,7 +57,7 @@ fluid::Params tankWithAFloatingBox(float spacing) {
 // The box is held down by an extra 30% of its weight until the water has settled around it, then
 // let go: it swings up and back down. The time it takes to come back to its lowest point, one
 // heave period, is the potential-flow reference's within 10% (measured +1.9% on llvmpipe, +4.9%
-// on the H200; docs/ACCURACY.md, "Floating bodies", has the other spacings). The reference starts from
+// on the H200; docs/WATER.md, "Floating bodies", has the other spacings). The reference starts from
 // the same state: the box pushed down, the water level raised evenly by what it displaces.
 TEST_F(HeaveTest, AFloatingBoxLetGoComesBackAfterThePeriodOfPotentialFlow) {
   const float spacing = 0.01f;

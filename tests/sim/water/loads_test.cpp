@@ -1,4 +1,4 @@
-// Force probes against theory (docs/ACCURACY.md, "Probes"): in a resting fluid tank the floor
+// Force probes against theory (docs/WATER.md, "Probes"): in a resting fluid tank the floor
 // carries the water's weight and each side wall about ρ g H² w / 2; a box held under water is
 // pushed up by about ρ g V. Averages over every step of the second second, after a second of
 // settling. The probe's columns, its checks and the balls' refusal are tested here too.
@@ -155,7 +155,7 @@ TEST_F(LoadsTest, TheBallsRefuseAPressureProbeInOneLineOrMeasureTheRest) {
 // The fluid-tank scene, 0.4 × 0.2 m filled 0.2 m deep on the cubic lattice: the floor's mean force
 // is the water's weight within 0.1% (measured 0.002%: at rest the step's corrections balance
 // gravity); each side wall's is ρ g H² w / 2 within 6%, measured 4.4–4.8% low: the resting
-// lattice carries less sideways than downwards (docs/ACCURACY.md, "Probes", says how it varies).
+// lattice carries less sideways than downwards (docs/WATER.md, "Probes", says how it varies).
 TEST_F(LoadsTest, ARestingTanksFloorCarriesItsWeightAndItsWallsTheHydrostaticThrust) {
   fluid::Params p = tank({0.4f, 0.2f, 0.4f}, 0.2f, 0.02f);
   using water::ProbeWall;
@@ -182,7 +182,7 @@ TEST_F(LoadsTest, ARestingTanksFloorCarriesItsWeightAndItsWallsTheHydrostaticThr
 // A box of half extent 0.04 m held 0.07 m under water in a tank filled 0.3 m deep: the water
 // pushes it up by ρ g V, V = 0.08³ m³ the box asked for (and kept free of water by the fill),
 // within 8%: measured 5.3% more, the water settling into the hollows between the box's surface
-// particles (docs/ACCURACY.md, "Probes"); the floor carries the water's weight and that lift;
+// particles (docs/WATER.md, "Probes"); the floor carries the water's weight and that lift;
 // no sideways force or torque to speak of (under 2% of the lift, in N and N·m per m).
 TEST_F(LoadsTest, ABoxHeldUnderWaterIsPushedUpByTheWeightOfTheWaterItDisplaces) {
   fluid::Params p = tank({0.4f, 0.3f, 0.4f}, 0.3f, 0.02f);

@@ -1,7 +1,7 @@
 // Probes (water::Probes, shaders/water/gauge.comp): the gauge's sums against plain double loops
 // over the particles read back (inside, beside a wall, in a corner; one window and many), the
 // clipped footprint's kernel mass against geometry, the body probe against the obstacle's pose,
-// and the gauge's accuracy: a resting tank reads its fill height (docs/ACCURACY.md, "Probes").
+// and the gauge's accuracy: a resting tank reads its fill height (docs/WATER.md, "Probes").
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -174,7 +174,7 @@ TEST_F(ProbesTest, AGaugeReadsTheBallsLatticesLayers) {
 // A tank of fluid filled 0.2 m deep, left to rest: gauges in the middle and off-centre read the
 // fill height, each sample from t = 1 s to 2 s within 1.5% and their means within 1%; a gauge
 // near a corner, its footprint cut by two walls, reads high, the fluid packing closer along the
-// walls: its mean within 2% (docs/ACCURACY.md, "Probes": measured 0.54% and 1.2%). The pressure
+// walls: its mean within 2% (docs/WATER.md, "Probes": measured 0.54% and 1.2%). The pressure
 // 0.15 m and 0.1 m deep is ρ g d, the means within 3% (measured 0.24% and 1.6%).
 TEST_F(ProbesTest, ARestingFluidTanksGaugesReadItsFillHeightAndItsPressureIsHydrostatic) {
   fluid::Params p = tank(0.02f, 0.2f);
